@@ -1,0 +1,73 @@
+#pragma once
+// One interface for every time-stepping method. A method advances one accepted step at a time,
+// never past a stop time the driver gives it (an output time is NOT a stop: outputs come from the
+// continuous extension), and can evaluate the state anywhere inside its last step. The driver
+// (driver.hpp) builds outputs, event location, breakpoints and jumps on these three calls.
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "tumble/integrators/ode_system.hpp"
+
+namespace tumble {
+
+struct StepControl {
+  double rtol = 1e-3;          // relative tolerance (ode45's default)
+  double atol = 1e-6;          // absolute tolerance (ode45's default)
+  double initial_step = 0.0;   // s; 0: chosen as ode45 does
+  double max_step = 0.0;       // s; 0: a tenth of the span, as ode45
+  double fixed_step = 0.0;     // s; the step of fixed-step methods (required for them)
+};
+
+struct IntegratorStats {
+  long accepted_steps = 0;
+  long rejected_steps = 0;
+  long rhs_evaluations = 0;
+};
+
+enum class StepOutcome { Ok, StepSizeUnderflow, NonFiniteState };
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+
+  virtual std::string_view name() const = 0;
+  virtual int order() const = 0;
+  virtual bool adaptive() const = 0;
+
+  // Sizes the workspace for `system` (the only place that allocates) and starts at (t0, y0),
+  // heading for t_end (which sets the direction and ode45's default bounds on the step).
+  virtual void start(OdeSystem& system, double t0, const VecX& y0, double t_end) = 0;
+
+  // Restarts from a new state at time t (after an event jump or a breakpoint), keeping the
+  // workspace, the statistics and, for adaptive methods, the current step size as a first guess.
+  virtual void restart(double t, const VecX& y) = 0;
+
+  // One accepted step that ends at or before t_stop (and lands on it exactly if it would pass).
+  virtual StepOutcome step(double t_stop) = 0;
+
+  // The state at t in [t_previous(), t()] from the method's continuous extension.
+  virtual void dense_output(double t, VecX& y_out) const = 0;
+
+  double t() const { return t_; }
+  double t_previous() const { return t_previous_; }
+  const VecX& y() const { return y_; }
+  const VecX& y_previous() const { return y_previous_; }
+  // The step size the method would try next (for reports and restarts).
+  double step_size() const { return h_; }
+  const IntegratorStats& stats() const { return stats_; }
+
+ protected:
+  double t_ = 0.0;
+  double t_previous_ = 0.0;
+  double h_ = 0.0;
+  VecX y_;
+  VecX y_previous_;
+  IntegratorStats stats_;
+};
+
+// The methods by their scenario names: dopri5, dop853, rk4, rkmk4. Throws std::invalid_argument
+// for an unknown name or a control that does not fit the method (e.g. rk4 without a step).
+std::unique_ptr<Integrator> make_integrator(std::string_view name, const StepControl& control);
+
+}  // namespace tumble

@@ -1,0 +1,64 @@
+#pragma once
+// The interface between a mechanical system and the integrators: y' = f(t, y) on a state that may
+// hold unit quaternions, with a projection back onto the manifold and the constraints after each
+// step, located events (zero crossings of g_k(t, y)) that may make the state jump, and known
+// breakpoints where the right-hand side is discontinuous. Free bodies use the first two; joints
+// use project(), contact uses events and jumps, schedules and impulses use breakpoints.
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <string>
+
+#include "tumble/math/types.hpp"
+
+namespace tumble {
+
+enum class EventDirection { Both, Rising, Falling };  // which sign changes of g count
+
+// What the system asks for after it has seen a located event.
+enum class EventAction {
+  Record,  // nothing changes: the event is only reported (e.g. the prism's flip)
+  Jump,    // on_event changed the state (an impact, a mode change): the method restarts there
+  Stop,    // integration ends at the event
+};
+
+struct EventSpec {
+  std::string name;
+  EventDirection direction = EventDirection::Both;
+};
+
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+
+  virtual Eigen::Index dimension() const = 0;
+
+  // y' = f(t, y). Called at every stage of every step: it must not allocate.
+  virtual void derivative(double t, const VecX& y, VecX& dydt) const = 0;
+
+  // Offsets in y of unit quaternions (w, x, y, z) whose derivative f gives as
+  // q' = q (x) (0, omega_B) / 2. Vector-space methods integrate them as plain components and
+  // rely on project(); Lie-group methods read omega_B back from q' and rotate exactly.
+  virtual std::span<const Eigen::Index> unit_quaternion_offsets() const { return {}; }
+
+  // Put y back onto the manifold and the constraints after every accepted step and after every
+  // jump. The default normalises the unit quaternions.
+  virtual void project(double t, VecX& y) const;
+
+  // Located events. event_functions fills g (size events().size()).
+  virtual std::span<const EventSpec> events() const { return {}; }
+  virtual void event_functions(double t, const VecX& y, VecX& g) const;
+  // Called at a located event with y at the event time; may change y.
+  virtual EventAction on_event(std::size_t event_index, double t, VecX& y);
+
+  // The first time strictly after t at which f is discontinuous (a force switching on, an
+  // impulse, a lock), or +infinity. The driver lands a step exactly on it, calls at_breakpoint
+  // (which may change y, e.g. apply an impulse), and restarts the method.
+  virtual double next_breakpoint(double t) const;
+  virtual void at_breakpoint(double t, VecX& y);
+};
+
+// Normalises each unit quaternion of y in place.
+void normalize_unit_quaternions(std::span<const Eigen::Index> offsets, VecX& y);
+
+}  // namespace tumble

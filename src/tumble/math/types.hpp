@@ -1,0 +1,13 @@
+#pragma once
+// Fixed-size linear algebra types used throughout tumble. Every 3-vector carries its frame in
+// its name (see docs/notation.md): r_G (COM, world), omega_B (angular velocity, body axes), ...
+#include <Eigen/Dense>
+
+namespace tumble {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;  // (w, x, y, z); unit quaternions stand for rotations
+using VecX = Eigen::VectorXd;
+
+}  // namespace tumble

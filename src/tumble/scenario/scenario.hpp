@@ -1,0 +1,116 @@
+#pragma once
+// A scenario as read from its YAML file (docs/scenario.md; the contract is scenario-v1): plain
+// structs whose fields map one to one onto the keys, with every default here, in one place.
+// Numbers are already evaluated (expressions, parameters, --set) and checked.
+#include <limits>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tumble/inertia/mass_properties.hpp"
+#include "tumble/inertia/shapes.hpp"
+#include "tumble/math/types.hpp"
+
+namespace tumble {
+
+// Where a key or value sits in its file; line and column count from 1.
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+// Invalid input. what() is "FILE:LINE:COL: KEY: why", the format the command line prints.
+class ScenarioError : public std::runtime_error {
+ public:
+  ScenarioError(SourceLocation where, std::string key, std::string why);
+  const SourceLocation& where() const { return where_; }
+  const std::string& key() const { return key_; }
+  const std::string& why() const { return why_; }
+
+ private:
+  SourceLocation where_;
+  std::string key_;
+  std::string why_;
+};
+
+// One part of a composite body, in the body's frame.
+struct PartSpec {
+  std::string name;                // "parts[2]" when not named
+  Shape shape;
+  MassProperties mass_properties;  // resolved, in the body's frame
+};
+
+struct BodySpec {
+  std::string name;
+  Shape shape;                       // kind Point when the body is a composite of parts
+  std::vector<PartSpec> parts;
+  // Resolved mass properties in the body frame: for a single shape, com = 0 (the frame sits at
+  // the COM); for a composite, the COM of the parts in the body's frame.
+  MassProperties mass_properties;
+  bool inertia_overridden = false;   // `inertia:` was given
+  Vec3 position_W = Vec3::Zero();    // origin of the body frame at t = 0, world, m
+  Mat3 R_WB = Mat3::Identity();      // orientation at t = 0
+  Vec3 velocity_W = Vec3::Zero();    // COM velocity at t = 0, world, m/s
+  Vec3 angular_velocity_W = Vec3::Zero();  // at t = 0, world, rad/s
+  SourceLocation where;
+};
+
+// A constant force or a pure torque on one body, optionally switched on a from/to schedule.
+struct LoadSpec {
+  enum class Kind { Force, Torque } kind = Kind::Force;
+  std::string name;                  // `name:`, or "force1", "torque2" by type and list position
+  std::string body;
+  Vec3 value = Vec3::Zero();         // N or N m; world frame unless body_frame
+  bool body_frame = false;           // `frame: body`: value turns with the body
+  Vec3 at_W = Vec3::Zero();          // force: point of application, world at t = 0, m
+  bool has_point = false;            // force: `at:` given (else at the COM)
+  double from = -std::numeric_limits<double>::infinity();  // s
+  double to = std::numeric_limits<double>::infinity();     // s
+  SourceLocation where;
+};
+
+struct SimulateSpec {
+  double duration = 0.0;               // s, > 0, required
+  std::string integrator = "dopri5";   // dopri5 | dop853 | rk4 | rkmk4 | exact
+  std::string formulation = "body";    // body (production) | textbook (the chapter's [R; omega])
+  double rtol = 1e-3;                  // > 0
+  double atol = 1e-6;                  // > 0
+  bool rtol_given = false;
+  bool atol_given = false;             // when only rtol is given, atol = rtol * 1e-3 (see docs)
+  double step = 0.0;                   // s: fixed step (rk4, rkmk4); > 0 when required
+  double max_step = 0.0;               // s: 0 = a tenth of the duration, as ode45
+  double initial_step = 0.0;           // s: 0 = chosen automatically
+  double output_every = 0.0;           // s: 0 = one row per accepted step
+  long max_steps = 10'000'000;         // guard against a run that would never end
+  SourceLocation where;
+};
+
+struct OutputSpec {
+  std::string trajectory;              // relative path; default "<scenario file stem>.csv"
+};
+
+struct Scenario {
+  std::string file;                    // as given on the command line
+  std::string name;
+  std::map<std::string, double> parameters;  // after --set
+  Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);    // m/s^2
+  std::vector<BodySpec> bodies;              // file order
+  std::vector<LoadSpec> loads;               // `forces:` entries of type force and torque
+  SimulateSpec simulate;
+  OutputSpec output;
+};
+
+// A --set NAME=VALUE override; VALUE is an expression.
+struct ParameterOverride {
+  std::string name;
+  std::string value;
+};
+
+// Reads, evaluates and checks a scenario. Throws ScenarioError (with file, line, column and key)
+// for anything the contract rejects, including a missing or unreadable file (line 0).
+Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides);
+
+}  // namespace tumble

@@ -12,9 +12,9 @@
 namespace tumble {
 
 struct MassProperties {
-  double mass = 0.0;                          // kg, > 0 for a body
-  Vec3 com = Vec3::Zero();                    // centre of mass G in frame F, m
-  Mat3 inertia_about_com = Mat3::Zero();      // I_G in the axes of F, kg m^2
+  double mass = 0.0;                      // kg, > 0 for a body
+  Vec3 com = Vec3::Zero();                // centre of mass G in frame F, m
+  Mat3 inertia_about_com = Mat3::Zero();  // I_G in the axes of F, kg m^2
 };
 
 // A physically impossible inertia or mass: the message says what is wrong and by how much.
@@ -47,6 +47,9 @@ PrincipalAxes principal_axes(const Mat3& inertia);
 // inequality of principal moments (each <= the sum of the other two), within relative_tolerance
 // of the largest moment. The message names the failed condition and the amount, e.g.
 // "principal moments 1, 1, 3 break the triangle inequality: 3 > 1 + 1 by 1".
+// Laminae (plate, disk, ring) lie exactly on the triangle-inequality boundary and pass. A slender
+// rod (zero moment about its axis) or a point (zero tensor) is rejected: such parts are valid
+// inside a composite, so check the combined body's inertia, not the part's.
 void validate_inertia(const Mat3& inertia, double relative_tolerance = 1e-9);
 
 }  // namespace tumble

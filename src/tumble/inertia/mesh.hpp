@@ -37,7 +37,8 @@ double mesh_volume(const TriangleMesh& mesh);
 
 // A closed tessellation of a solid shape (cylinder, tube, sphere, box, cone) with about
 // `resolution` segments around, in the shape's frame: for checking the closed forms against the
-// mesh integrator.
+// mesh integrator. Every vertex lies on the true surface (inscribed); a box is exact and ignores
+// `resolution`. Throws MeshError for other kinds or resolution < 3.
 TriangleMesh tessellate(const Shape& shape, int resolution);
 
 }  // namespace tumble

@@ -10,7 +10,20 @@
 
 namespace tumble {
 
-enum class ShapeKind { Point, Rod, Ring, Disk, Cylinder, Tube, Sphere, Shell, Box, Cone, Plate, Mesh };
+enum class ShapeKind {
+  Point,
+  Rod,
+  Ring,
+  Disk,
+  Cylinder,
+  Tube,
+  Sphere,
+  Shell,
+  Box,
+  Cone,
+  Plate,
+  Mesh
+};
 
 struct Shape {
   ShapeKind kind = ShapeKind::Point;
@@ -33,7 +46,8 @@ double shape_measure(const Shape& shape);
 
 // Mass properties of a uniform shape of the given mass, in the shape's frame: com = 0 and the
 // closed-form inertia about it. A mesh is loaded, checked (closed, consistently oriented) and
-// integrated exactly; its frame is the file's axes moved to its COM. Throws InertiaError (or
+// integrated exactly; its frame is the file's axes moved to its COM (where that COM lies in the
+// file's frame: mesh_mass_properties(load_mesh(file), density).com). Throws InertiaError (or
 // MeshError) for an impossible shape, naming the dimension and its value.
 MassProperties shape_mass_properties(const Shape& shape, double mass);
 

@@ -1,1 +1,56 @@
-int main() { return 0; }
+// tumble: rigid-body dynamics from a scenario file. `tumble run` integrates and writes the
+// trajectory and a summary; `tumble inertia` prints mass properties.
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "commands.hpp"
+#include "exit_status.hpp"
+
+int main(int argc, char** argv) {
+  using namespace tumble::cli;
+  const std::string version = fmt::format("tumble {}", TUMBLE_VERSION);
+
+  CLI::App app{"tumble: rigid-body dynamics you can check. Scenario format: docs/scenario.md",
+               "tumble"};
+  app.set_version_flag("--version", version);
+  app.require_subcommand(1);
+
+  RunArguments run_args;
+  CLI::App* run = app.add_subcommand(
+      "run",
+      "Integrate a scenario; write its trajectory CSV and print a summary (steps, evaluations, "
+      "wall time, drift of E and |L|, largest |R^T R - I|).\nExit status: 0 done, 2 bad command "
+      "line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed (the rows so far "
+      "stay a valid CSV), 5 output not writable.");
+  run->set_version_flag("--version", version);
+  run->add_option("scenario", run_args.scenario, "Scenario file (YAML)")->required();
+  run->add_option("--out", run_args.out_dir,
+                  "Directory for the output files (created if missing)")
+      ->capture_default_str();
+  run->add_option("--set", run_args.sets,
+                  "Override a parameter: NAME=VALUE (VALUE may be an expression); repeatable");
+
+  InertiaArguments inertia_args;
+  CLI::App* inertia = app.add_subcommand(
+      "inertia",
+      "Print each body's mass, COM, inertia about the COM, principal moments and axes.\nExit "
+      "status: 0 done, 2 bad command line (or no such body), 3 invalid scenario.");
+  inertia->set_version_flag("--version", version);
+  inertia->add_option("scenario", inertia_args.scenario, "Scenario file (YAML)")->required();
+  inertia->add_option("body", inertia_args.body, "Only this body");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kBadCommandLine;
+  }
+  if (run->parsed()) return run_command(run_args);
+  return inertia_command(inertia_args);
+}

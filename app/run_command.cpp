@@ -1,0 +1,113 @@
+#include <filesystem>
+#include <fmt/core.h>
+#include <optional>
+#include <stdexcept>
+
+#include "commands.hpp"
+#include "exit_status.hpp"
+#include "tumble/output/trajectory_csv.hpp"
+#include "tumble/simulation/simulation.hpp"
+
+namespace tumble::cli {
+
+std::vector<ParameterOverride> parse_overrides(const std::vector<std::string>& sets) {
+  std::vector<ParameterOverride> overrides;
+  for (const std::string& set : sets) {
+    const auto eq = set.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == set.size()) {
+      throw std::invalid_argument("--set " + set + ": expected NAME=VALUE");
+    }
+    overrides.push_back({set.substr(0, eq), set.substr(eq + 1)});
+  }
+  return overrides;
+}
+
+namespace {
+
+void print_summary(const Scenario& scenario, const PreparedSimulation& simulation,
+                   const SimulationResult& result, const std::filesystem::path& trajectory) {
+  const SimulateSpec& sim = scenario.simulate;
+  const IntegratorStats& stats = result.report.stats;
+  fmt::print("{} ({})\n", scenario.name, scenario.file);
+  fmt::print("  integrator     {} (formulation: {})", simulation.integrator->name(),
+             simulation.formulation->name());
+  if (simulation.integrator->adaptive()) {
+    fmt::print(", rtol {:g}, atol {:g}", sim.rtol, sim.atol);
+    if (sim.rtol_given && !sim.atol_given) fmt::print(" (atol = rtol x 1e-3: set simulate.atol)");
+  } else if (sim.step > 0.0) {
+    fmt::print(", step {:g} s", sim.step);
+  }
+  fmt::print("\n  steps          {} accepted, {} rejected\n", stats.accepted_steps,
+             stats.rejected_steps);
+  fmt::print("  evaluations    {} of the right-hand side\n", stats.rhs_evaluations);
+  fmt::print("  wall time      {:.3f} ms (integration and output)\n", 1e3 * result.wall_seconds);
+  const bool forces_act = !scenario.loads.empty();
+  const bool gravity_acts = scenario.gravity_W.squaredNorm() > 0.0;
+  fmt::print("  energy E       max relative drift {:.3e}{}\n",
+             result.conservation.max_relative_energy_drift,
+             forces_act ? " (applied forces do work: E is not conserved)" : "");
+  fmt::print("  |L| (origin)   max relative drift {:.3e}{}\n",
+             result.conservation.max_relative_angular_momentum_drift,
+             forces_act || gravity_acts ? " (external moments act: |L| is not conserved)" : "");
+  fmt::print("  |R^T R - I|    max {:.3e}\n", result.conservation.max_orthonormality_error);
+  fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,
+             result.report.t_reached);
+}
+
+}  // namespace
+
+int run_command(const RunArguments& args) {
+  Scenario scenario;
+  try {
+    scenario = load_scenario(args.scenario, parse_overrides(args.sets));
+  } catch (const ScenarioError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return kInvalidScenario;
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "tumble run: {}\n", e.what());
+    return kBadCommandLine;
+  }
+
+  std::optional<PreparedSimulation> simulation;
+  try {
+    simulation = prepare_simulation(scenario);
+  } catch (const std::invalid_argument& e) {
+    const SourceLocation& at = scenario.simulate.where;
+    fmt::print(stderr, "{}\n", ScenarioError(at, "simulate.integrator", e.what()).what());
+    return kInvalidScenario;
+  }
+
+  const std::filesystem::path out_dir(args.out_dir);
+  const std::filesystem::path trajectory = out_dir / scenario.output.trajectory;
+  std::optional<TrajectoryCsvWriter> writer;
+  try {
+    std::filesystem::create_directories(trajectory.parent_path());
+    writer.emplace(trajectory, [&] {
+      std::vector<std::string> names;
+      for (const BodySpec& b : scenario.bodies) names.push_back(b.name);
+      return names;
+    }());
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "tumble run: {}\n", e.what());
+    return kOutputError;
+  }
+
+  const SimulationResult result = run_simulation(
+      *simulation, [&](double t, std::span<const BodyState> states, const SystemQuantities& q) {
+        writer->write_row(t, states, q);
+      });
+  try {
+    writer->finish();
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "tumble run: {}\n", e.what());
+    return kOutputError;
+  }
+  print_summary(scenario, *simulation, result, trajectory);
+  if (!result.report.completed) {
+    fmt::print(stderr, "tumble run: integration failed: {}\n", result.report.failure);
+    return kIntegrationFailed;
+  }
+  return kDone;
+}
+
+}  // namespace tumble::cli

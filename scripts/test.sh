@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs every test: formatting, the Release suite, the same suite under
+# AddressSanitizer + UndefinedBehaviorSanitizer, and the main example end to end.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+
+echo "== clang-format"
+mapfile -t sources < <(git ls-files '*.cpp' '*.hpp' 2>/dev/null || find src app tests bench -name '*.[ch]pp')
+clang-format --dry-run --Werror "${sources[@]}"
+
+echo "== Release build and tests"
+bash scripts/build.sh release
+ctest --test-dir build/release --output-on-failure -j "$(nproc)"
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+bash scripts/build.sh sanitize
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build/sanitize --output-on-failure -j "$(nproc)"
+
+echo "== The main example"
+out=$(mktemp -d)
+build/release/tumble run examples/tumbling_prism.yaml --out "$out"
+test -s "$out/tumbling_prism.csv"

@@ -1,0 +1,41 @@
+#pragma once
+// A formulation turns a Model into an OdeSystem: it chooses the state vector y and writes the
+// Newton-Euler equations on it. Two exist:
+//  - BodyFrameFormulation (production): per body [r_G, q_WB, v_G, omega_B], Euler's equations in
+//    body axes, a unit quaternion for the orientation (kept unit by projection or by the Lie
+//    method), so R_WB is orthonormal to round-off over any run.
+//  - TextbookFormulation: the chapter's own [R; omega] with I = R I0 R^T in the world frame, kept
+//    for teaching and comparison; R drifts from orthonormality at the integrator's accuracy.
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "tumble/dynamics/model.hpp"
+#include "tumble/integrators/ode_system.hpp"
+
+namespace tumble {
+
+class Formulation : public OdeSystem {
+ public:
+  explicit Formulation(Model model) : model_(std::move(model)) {}
+
+  const Model& model() const { return model_; }
+  std::size_t body_count() const { return model_.bodies.size(); }
+
+  virtual std::string_view name() const = 0;
+  // Writes the bodies' states into y (sized by the caller to dimension()).
+  virtual void pack(std::span<const BodyState> states, VecX& y) const = 0;
+  // Reads one body's state from y; unit quaternions are normalised on the way out.
+  virtual BodyState unpack(const VecX& y, std::size_t body) const = 0;
+
+  double next_breakpoint(double t) const override { return model_.next_load_switch(t); }
+
+ protected:
+  Model model_;
+};
+
+// "body" or "textbook"; throws std::invalid_argument otherwise.
+std::unique_ptr<Formulation> make_formulation(std::string_view name, Model model);
+
+}  // namespace tumble

@@ -1,0 +1,40 @@
+#pragma once
+// The constant description of a mechanical system (what MuJoCo calls the model): bodies, uniform
+// gravity and the applied loads. The state lives elsewhere (in the integrator's vector y).
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "tumble/body/rigid_body.hpp"
+
+namespace tumble {
+
+// A constant force at a body point, or a pure torque, active for from <= t < to.
+struct AppliedLoad {
+  enum class Kind { Force, Torque } kind = Kind::Force;
+  std::string name;
+  std::size_t body = 0;
+  Vec3 value = Vec3::Zero();     // N or N m: world axes, or body axes when body_frame
+  bool body_frame = false;
+  Vec3 p_GP_B = Vec3::Zero();    // force: point of application from the COM, body axes, m
+  double from = -std::numeric_limits<double>::infinity();  // s
+  double to = std::numeric_limits<double>::infinity();     // s
+
+  bool active_at(double t) const { return from <= t && t < to; }
+};
+
+struct Model {
+  std::vector<RigidBody> bodies;
+  Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);  // m/s^2
+  std::vector<AppliedLoad> loads;
+
+  // The first schedule edge (a load's from or to) strictly after t, or +infinity.
+  double next_load_switch(double t) const;
+};
+
+// Resultant of the applied loads on one body at time t (gravity excluded): the force (world)
+// and the moment about the COM (world), for orientation R_WB. Does not allocate.
+void calc_applied_loads(const Model& model, std::size_t body, double t, const Mat3& R_WB,
+                        Vec3& F_W, Vec3& M_G_W);
+
+}  // namespace tumble

@@ -1,0 +1,194 @@
+#include "tumble/integrators/driver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace tumble {
+
+namespace {
+
+bool crosses(double g_before, double g_after, EventDirection direction) {
+  const bool rising = g_before < 0.0 && g_after >= 0.0;
+  const bool falling = g_before > 0.0 && g_after <= 0.0;
+  switch (direction) {
+    case EventDirection::Rising: return rising;
+    case EventDirection::Falling: return falling;
+    case EventDirection::Both: return rising || falling;
+  }
+  return false;
+}
+
+// The output schedule: row k at t0 + k * every (computed, never accumulated, so no drift), and
+// always a last row at t_end.
+class OutputClock {
+ public:
+  OutputClock(double t0, double t_end, double every) : t0_(t0), t_end_(t_end), every_(every) {}
+  bool every_step() const { return every_ <= 0.0; }
+  double next() const {
+    const double t = t0_ + static_cast<double>(k_) * every_;
+    // A row within round-off of the end is the end row.
+    return t > t_end_ - 1e-12 * std::max(1.0, std::abs(t_end_)) ? t_end_ : t;
+  }
+  void advance() { ++k_; }
+
+ private:
+  double t0_, t_end_, every_;
+  long k_ = 1;
+};
+
+}  // namespace
+
+IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
+                            double t_end, const DriverOptions& options, const Observer& observe) {
+  IntegrationReport report;
+  const std::size_t event_count = system.events().size();
+  const auto event_specs = system.events();
+  VecX y_row(y0.size()), y_event(y0.size());
+  VecX g_before(static_cast<Eigen::Index>(event_count));
+  VecX g_after(g_before.size()), g_probe(g_before.size());
+
+  integrator.start(system, t0, y0, t_end);
+  observe(t0, integrator.y());
+  if (event_count > 0) system.event_functions(t0, integrator.y(), g_before);
+  OutputClock clock(t0, t_end, options.output_every);
+
+  // Rows in (t_previous, t_upto] from the continuous extension of the last step.
+  auto emit_rows_until = [&](double t_upto) {
+    if (clock.every_step()) return;
+    for (double t = clock.next(); t <= t_upto; t = clock.next()) {
+      if (t == integrator.t()) {
+        observe(t, integrator.y());
+      } else {
+        integrator.dense_output(t, y_row);
+        observe(t, y_row);
+      }
+      clock.advance();
+      if (t >= t_end) break;
+    }
+  };
+
+  // The root of g_k inside the last step by the Illinois method (regula falsi that halves the
+  // value kept at an end that survives twice running) on the dense output.
+  auto locate = [&](std::size_t k) {
+    const auto ki = static_cast<Eigen::Index>(k);
+    double a = integrator.t_previous(), b = integrator.t();
+    double ga = g_before(ki), gb = g_after(ki);
+    int last_side = 0;  // +1: the last probe replaced b; -1: it replaced a
+    for (int iteration = 0; iteration < 200; ++iteration) {
+      const double width_floor = 4.0 * std::numeric_limits<double>::epsilon() *
+                                 std::max({1.0, std::abs(a), std::abs(b)});
+      if (b - a <= width_floor) break;
+      double c = b - gb * (b - a) / (gb - ga);
+      if (!(c > a && c < b)) c = 0.5 * (a + b);  // keep strictly inside the bracket
+      integrator.dense_output(c, y_event);
+      system.event_functions(c, y_event, g_probe);
+      const double gc = g_probe(ki);
+      if (gc == 0.0) return c;
+      if ((gc > 0.0) == (gb > 0.0)) {
+        b = c;
+        gb = gc;
+        if (last_side == +1) ga *= 0.5;
+        last_side = +1;
+      } else {
+        a = c;
+        ga = gc;
+        if (last_side == -1) gb *= 0.5;
+        last_side = -1;
+      }
+    }
+    return b;  // the end of the bracket on the far side of the crossing
+  };
+
+  long steps = 0;
+  bool stopped_by_event = false;
+  while (integrator.t() < t_end) {
+    const double t_stop = std::min(t_end, system.next_breakpoint(integrator.t()));
+    const StepOutcome outcome = integrator.step(t_stop);
+    if (outcome != StepOutcome::Ok) {
+      report.failure =
+          outcome == StepOutcome::StepSizeUnderflow
+              ? fmt::format("step size underflow at t = {:.17g} s: the solution is too stiff or "
+                            "singular there for rtol/atol",
+                            integrator.t())
+              : fmt::format("the state became non-finite (NaN or infinity) after t = {:.17g} s",
+                            integrator.t());
+      break;
+    }
+    if (++steps > options.max_steps) {
+      report.failure = fmt::format(
+          "stopped at t = {:.17g} s after simulate.max_steps = {} steps; raise it or loosen rtol",
+          integrator.t(), options.max_steps);
+      break;
+    }
+
+    bool restarted = false, stopped = false;
+    if (event_count > 0) {
+      system.event_functions(integrator.t(), integrator.y(), g_after);
+      // Handle the crossings of this step in time order, until one changes the state.
+      std::size_t handled = 0;
+      double t_last_event = integrator.t_previous();
+      while (handled < event_count) {
+        double t_first = std::numeric_limits<double>::infinity();
+        std::size_t k_first = event_count;
+        for (std::size_t k = 0; k < event_count; ++k) {
+          const auto ki = static_cast<Eigen::Index>(k);
+          if (!crosses(g_before(ki), g_after(ki), event_specs[k].direction)) continue;
+          const double t_k = locate(k);
+          if (t_k > t_last_event && t_k < t_first) {
+            t_first = t_k;
+            k_first = k;
+          }
+        }
+        if (k_first == event_count) break;
+        emit_rows_until(t_first);
+        if (t_first == integrator.t()) {
+          y_event = integrator.y();
+        } else {
+          integrator.dense_output(t_first, y_event);
+        }
+        const EventAction action = system.on_event(k_first, t_first, y_event);
+        report.events.push_back({t_first, k_first, action});
+        t_last_event = t_first;
+        ++handled;
+        if (action == EventAction::Record) continue;
+        if (action == EventAction::Stop) {
+          observe(t_first, y_event);
+          report.t_reached = t_first;
+          stopped = true;
+          stopped_by_event = true;
+        } else {
+          system.project(t_first, y_event);
+          integrator.restart(t_first, y_event);
+          system.event_functions(t_first, integrator.y(), g_before);
+          restarted = true;
+        }
+        break;
+      }
+    }
+    if (stopped) break;
+    if (restarted) continue;
+
+    emit_rows_until(integrator.t());
+    if (clock.every_step()) observe(integrator.t(), integrator.y());
+    if (event_count > 0) g_before = g_after;
+
+    if (integrator.t() == t_stop && t_stop < t_end) {
+      // A breakpoint: the system may change the state (an impulse), then the method restarts so
+      // that no step straddles the discontinuity.
+      VecX& y_break = y_event;
+      y_break = integrator.y();
+      system.at_breakpoint(t_stop, y_break);
+      system.project(t_stop, y_break);
+      integrator.restart(t_stop, y_break);
+      if (event_count > 0) system.event_functions(t_stop, integrator.y(), g_before);
+    }
+  }
+  report.stats = integrator.stats();
+  report.completed = report.failure.empty();
+  if (!stopped_by_event) report.t_reached = integrator.t();
+  return report;
+}
+
+}  // namespace tumble

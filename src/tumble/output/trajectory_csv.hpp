@@ -1,0 +1,46 @@
+#pragma once
+// The trajectory CSV of the scenario contract: one header row, then one row per output time:
+//   t, per body B: B.x B.y B.z (COM, world), B.vx B.vy B.vz, B.wx B.wy B.wz (world),
+//   B.R11 ... B.R33 (row-major, body axes -> world), then KE PE E px py pz Lx Ly Lz (about the
+//   world origin). Numbers carry 17 significant digits, enough to round-trip a double.
+// The file is written under a temporary name beside its destination and renamed into place by
+// finish(), so a reader never sees half a file; a run that fails part way still finishes the
+// rows it has, which form a valid CSV.
+#include <cstdio>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "tumble/body/rigid_body.hpp"
+
+namespace tumble {
+
+std::vector<std::string> trajectory_columns(std::span<const std::string> body_names);
+
+class TrajectoryCsvWriter {
+ public:
+  // Throws std::runtime_error naming the path if the temporary file cannot be created.
+  TrajectoryCsvWriter(std::filesystem::path path, std::span<const std::string> body_names);
+  ~TrajectoryCsvWriter();  // removes the temporary file if finish() was never called
+  TrajectoryCsvWriter(const TrajectoryCsvWriter&) = delete;
+  TrajectoryCsvWriter& operator=(const TrajectoryCsvWriter&) = delete;
+
+  void write_row(double t, std::span<const BodyState> states, const SystemQuantities& q);
+  // Flushes, closes and renames the file to its destination. Throws on an I/O error.
+  void finish();
+
+  const std::filesystem::path& path() const { return path_; }
+  std::size_t rows() const { return rows_; }
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path temporary_path_;
+  std::FILE* file_ = nullptr;
+  fmt::memory_buffer line_;
+  std::size_t rows_ = 0;
+};
+
+}  // namespace tumble

@@ -1,0 +1,33 @@
+#pragma once
+// `integrator: exact` for bodies on which no load acts: each body's rotation is the
+// Euler-Poinsot solution (TorqueFreeMotion) and its COM follows the parabola of uniform
+// gravity. It takes one "step" to each stop time and evaluates the closed form wherever the
+// driver asks, so outputs, events and reports work as for the numerical methods.
+#include <vector>
+
+#include "tumble/dynamics/formulation.hpp"
+#include "tumble/exact/torque_free.hpp"
+#include "tumble/integrators/integrator.hpp"
+
+namespace tumble {
+
+class ExactIntegrator final : public Integrator {
+ public:
+  std::string_view name() const override { return "exact"; }
+  int order() const override { return 0; }
+  bool adaptive() const override { return false; }
+  // The system must be a Formulation whose model has no applied loads (std::invalid_argument).
+  void start(OdeSystem& system, double t0, const VecX& y0, double t_end) override;
+  void restart(double t, const VecX& y) override;
+  StepOutcome step(double t_stop) override;
+  void dense_output(double t, VecX& y_out) const override;
+
+ private:
+  const Formulation* formulation_ = nullptr;
+  double t_start_ = 0.0;                        // time of the initial (or restart) state
+  std::vector<BodyState> start_states_;
+  std::vector<TorqueFreeMotion> rotations_;
+  mutable std::vector<BodyState> scratch_states_;  // sized once: dense_output does not allocate
+};
+
+}  // namespace tumble

@@ -1,0 +1,51 @@
+#pragma once
+// One simulation from a scenario: the formulation, the integrator and the initial state it
+// asks for, run by the driver, with each output row handed over as the bodies' states and the
+// system's momenta and energies. The command line, the tests and the benchmarks all go through
+// here, so they run the same thing.
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "tumble/body/rigid_body.hpp"
+#include "tumble/dynamics/formulation.hpp"
+#include "tumble/integrators/driver.hpp"
+#include "tumble/scenario/scenario.hpp"
+
+namespace tumble {
+
+struct PreparedSimulation {
+  std::unique_ptr<Formulation> formulation;
+  std::unique_ptr<Integrator> integrator;
+  StepControl control;
+  DriverOptions options;
+  VecX y0;
+  double t0 = 0.0;
+  double t_end = 0.0;
+};
+
+// Throws std::invalid_argument for a combination the engine cannot run (e.g. rkmk4 on the
+// textbook formulation, which has no quaternions to move on the group).
+PreparedSimulation prepare_simulation(const Scenario& scenario);
+
+// Largest departures from what a free system conserves, over all output rows.
+struct ConservationReport {
+  double max_relative_energy_drift = 0.0;            // max |E - E0| / |E0|
+  double max_relative_angular_momentum_drift = 0.0;  // max | |L| - |L0| | / |L0|, L about origin
+  double max_orthonormality_error = 0.0;             // max |R^T R - I| over bodies and rows
+};
+
+using RowObserver = std::function<void(double t, std::span<const BodyState> states,
+                                       const SystemQuantities& quantities)>;
+
+struct SimulationResult {
+  IntegrationReport report;
+  ConservationReport conservation;
+  std::size_t rows = 0;
+  double wall_seconds = 0.0;  // integration and output, not reading the scenario
+};
+
+SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserver& observe);
+
+}  // namespace tumble

@@ -1,0 +1,217 @@
+// The command line as the contract states it: columns, rows, summary, exit statuses, error
+// messages, atomic output and determinism, by running the real executable.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "prism_reference.hpp"
+
+namespace tumble {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status = -1;
+  std::string out;  // stdout and stderr together
+};
+
+CommandResult run_tumble(const std::string& arguments) {
+  const std::string command = std::string(TUMBLE_EXE) + " " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer;
+  while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) {
+    result.out += buffer.data();
+  }
+  const int raw = pclose(pipe);
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return result;
+}
+
+std::string example(const std::string& name) {
+  return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + name;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("tumble_cli_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path write_file(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(p);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> fields;
+    std::stringstream ss(line);
+    for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Cli, VersionAndHelpOnEveryCommand) {
+  for (const std::string cmd : {"--version", "run --version", "inertia --version"}) {
+    const CommandResult r = run_tumble(cmd);
+    EXPECT_EQ(r.status, 0) << cmd;
+    EXPECT_NE(r.out.find("tumble 0."), std::string::npos) << cmd << ": " << r.out;
+  }
+  const CommandResult help = run_tumble("run --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--set"), std::string::npos);
+  EXPECT_NE(help.out.find("4 integration failed"), std::string::npos);
+  EXPECT_EQ(run_tumble("inertia --help").status, 0);
+}
+
+TEST(Cli, BadCommandLinesExitWithStatusTwo) {
+  EXPECT_EQ(run_tumble("").status, 2);
+  EXPECT_EQ(run_tumble("fly").status, 2);
+  EXPECT_EQ(run_tumble("run").status, 2);
+  EXPECT_EQ(run_tumble("run " + example("tumbling_prism.yaml") + " --bogus").status, 2);
+  const CommandResult bad_set = run_tumble("run " + example("tumbling_prism.yaml") + " --set a");
+  EXPECT_EQ(bad_set.status, 2);
+  EXPECT_NE(bad_set.out.find("--set a: expected NAME=VALUE"), std::string::npos) << bad_set.out;
+  const CommandResult unknown_set =
+      run_tumble("run " + example("tumbling_prism.yaml") + " --set zz=3");
+  EXPECT_EQ(unknown_set.status, 2);
+  EXPECT_NE(unknown_set.out.find("zz"), std::string::npos) << unknown_set.out;
+}
+
+// The chapter's prism end to end: the contract's columns, one row per output_every, the state
+// at t = 20 within the tolerance the free-body tests establish (30 rtol), and a summary with
+// every figure the contract lists.
+TEST(Cli, RunsTheTumblingPrismAndWritesTheContractCsv) {
+  const fs::path dir = fresh_dir("prism");
+  const CommandResult r =
+      run_tumble("run " + example("tumbling_prism.yaml") + " --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* figure :
+       {"accepted", "rejected", "evaluations", "wall time", "energy E", "|L|", "|R^T R - I|"}) {
+    EXPECT_NE(r.out.find(figure), std::string::npos) << figure << " missing from\n" << r.out;
+  }
+  const auto rows = read_csv(dir / "tumbling_prism.csv");
+  ASSERT_EQ(rows.size(), 1u + 401u);  // header, t = 0, 0.05, ..., 20
+  const std::vector<std::string> expected_header = {
+      "t",         "prism.x",   "prism.y",   "prism.z",   "prism.vx",  "prism.vy",  "prism.vz",
+      "prism.wx",  "prism.wy",  "prism.wz",  "prism.R11", "prism.R12", "prism.R13", "prism.R21",
+      "prism.R22", "prism.R23", "prism.R31", "prism.R32", "prism.R33", "KE",        "PE",
+      "E",         "px",        "py",        "pz",        "Lx",        "Ly",        "Lz"};
+  EXPECT_EQ(rows[0], expected_header);
+  for (std::size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(rows[i].size(), expected_header.size());
+  EXPECT_DOUBLE_EQ(std::stod(rows[200][0]), 9.95);
+  EXPECT_EQ(std::stod(rows.back()[0]), 20.0);
+  const auto& ref = testing::prism_case("unstable").states[0];
+  Mat3 R;
+  Vec3 w;
+  for (int k = 0; k < 9; ++k) R(k / 3, k % 3) = std::stod(rows.back()[10 + k]);
+  for (int k = 0; k < 3; ++k) w(k) = std::stod(rows.back()[7 + k]);
+  EXPECT_LT(testing::state_error(R, w, ref), 30 * 1e-8);
+  EXPECT_NEAR(std::stod(rows.back()[21]), 8.501, 1e-7);  // E
+  // Nothing but the finished file is left behind.
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    ++files;
+    EXPECT_EQ(entry.path().filename(), "tumbling_prism.csv");
+  }
+  EXPECT_EQ(files, 1);
+}
+
+TEST(Cli, SameScenarioGivesBitIdenticalOutput) {
+  const fs::path a = fresh_dir("det_a"), b = fresh_dir("det_b");
+  ASSERT_EQ(
+      run_tumble("run " + example("spinning_projectile.yaml") + " --out " + a.string()).status, 0);
+  ASSERT_EQ(
+      run_tumble("run " + example("spinning_projectile.yaml") + " --out " + b.string()).status, 0);
+  const std::string csv_a = slurp(a / "spinning_projectile.csv");
+  EXPECT_GT(csv_a.size(), 1000u);
+  EXPECT_EQ(csv_a, slurp(b / "spinning_projectile.csv"));
+}
+
+TEST(Cli, InvalidScenarioExitsWithStatusThreeAndFileLineColumnKey) {
+  const fs::path dir = fresh_dir("invalid");
+  const fs::path p = write_file(dir, "bad.yaml",
+                                "tumble: 1\n"
+                                "bodies:\n"
+                                "  b:\n"
+                                "    shape: sphere\n"
+                                "    radius: 0.1\n"
+                                "    mass: -2\n"
+                                "simulate: {duration: 1}\n");
+  const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.out.find(p.string() + ":6:11: bodies.b.mass:"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "bad.csv"));
+}
+
+// A run that fails part way (here: a step budget far too small) exits 4, says when and why, and
+// leaves a valid CSV of the rows it reached.
+TEST(Cli, FailedIntegrationLeavesAValidPartialCsvAndExitsFour) {
+  const fs::path dir = fresh_dir("failed");
+  const fs::path p = write_file(dir, "short.yaml",
+                                "tumble: 1\n"
+                                "gravity: [0, 0, 0]\n"
+                                "bodies:\n"
+                                "  b: {shape: box, size: [4, 1, 2], mass: 12,"
+                                " angular_velocity: [0, 0.01, 1]}\n"
+                                "simulate: {duration: 20, rtol: 1e-10, max_steps: 25}\n");
+  const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
+  EXPECT_EQ(r.status, 4) << r.out;
+  EXPECT_NE(r.out.find("integration failed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("max_steps"), std::string::npos) << r.out;
+  const auto rows = read_csv(dir / "short.csv");
+  ASSERT_GE(rows.size(), 2u);
+  for (const auto& row : rows) EXPECT_EQ(row.size(), rows[0].size());
+  EXPECT_LT(std::stod(rows.back()[0]), 20.0);
+}
+
+TEST(Cli, UnwritableOutputDirectoryExitsFive) {
+  const CommandResult r =
+      run_tumble("run " + example("tumbling_prism.yaml") + " --out /proc/no_such_dir");
+  EXPECT_EQ(r.status, 5) << r.out;
+}
+
+TEST(Cli, SetOverridesAParameter) {
+  const fs::path dir = fresh_dir("set");
+  // c = 1 makes the prism [4, 1, 1]: I0 = diag(2, 17, 17): the inertia command shows it.
+  const CommandResult r = run_tumble("inertia " + example("tumbling_prism.yaml"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("principal moments"), std::string::npos);
+  EXPECT_NE(r.out.find("12 kg"), std::string::npos) << r.out;
+  const CommandResult run = run_tumble("run " + example("tumbling_prism.yaml") +
+                                       " --set c=1 --set 'a=2*2' --out " + dir.string());
+  EXPECT_EQ(run.status, 0) << run.out;
+  const auto rows = read_csv(dir / "tumbling_prism.csv");
+  // KE at t = 0 with I0 = diag(2, 17, 17) and omega0 = (0, 0.01, 1): (17e-4 + 17) / 2.
+  EXPECT_NEAR(std::stod(rows[1][19]), 0.5 * (17 * 1e-4 + 17), 1e-12);
+}
+
+TEST(Cli, InertiaOfOneBodyAndOfAnUnknownBody) {
+  EXPECT_EQ(run_tumble("inertia " + example("tumbling_prism.yaml") + " prism").status, 0);
+  const CommandResult r = run_tumble("inertia " + example("tumbling_prism.yaml") + " wheel");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("no body 'wheel'"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace tumble

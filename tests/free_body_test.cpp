@@ -1,0 +1,220 @@
+// The torque-free prism of the chapter (and its two stable variants) with both formulations and
+// every integrator, against the exact Euler-Poinsot solution: accuracy at the requested
+// tolerance, convergence order of the fixed-step methods, conservation of E and |L|, the
+// intermediate-axis flip located as an event, and orthonormality of R.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "prism_reference.hpp"
+#include "tumble/dynamics/body_frame_formulation.hpp"
+#include "tumble/dynamics/textbook_formulation.hpp"
+#include "tumble/exact/torque_free.hpp"
+#include "tumble/integrators/driver.hpp"
+#include "tumble/math/rotation.hpp"
+#include "tumble/simulation/exact_integrator.hpp"
+
+namespace tumble {
+namespace {
+
+using testing::prism_case;
+using testing::prism_cases;
+using testing::PrismCase;
+
+struct FinalState {
+  BodyState state;
+  IntegrationReport report;
+  double max_energy_drift = 0.0;    // relative, over every accepted step
+  double max_L_drift = 0.0;         // relative |L| about the COM (= origin here)
+  double max_orthonormality = 0.0;  // max |R^T R - I| over every accepted step
+};
+
+FinalState simulate_prism(const PrismCase& c, const std::string& formulation,
+                          const std::string& method, const StepControl& control, double t_end) {
+  std::unique_ptr<Formulation> system = make_formulation(formulation, testing::prism_model(c));
+  std::unique_ptr<Integrator> integrator;
+  if (method == "exact") {
+    integrator = std::make_unique<ExactIntegrator>();
+  } else {
+    integrator = make_integrator(method, control);
+  }
+  VecX y0(system->dimension());
+  const BodyState s0 = testing::prism_initial_state(c);
+  system->pack(std::span<const BodyState>(&s0, 1), y0);
+  const RigidBody& body = system->model().bodies[0];
+  FinalState out;
+  const double E0 = calc_kinetic_energy(body, s0);
+  const double L0 = calc_angular_momentum_about_com_W(body, s0).norm();
+  out.report =
+      integrate(*integrator, *system, 0.0, y0, t_end, DriverOptions{}, [&](double, const VecX& y) {
+        out.state = system->unpack(y, 0);
+        const double E = calc_kinetic_energy(body, out.state);
+        const double L = calc_angular_momentum_about_com_W(body, out.state).norm();
+        out.max_energy_drift = std::max(out.max_energy_drift, std::abs(E - E0) / E0);
+        out.max_L_drift = std::max(out.max_L_drift, std::abs(L - L0) / L0);
+        out.max_orthonormality =
+            std::max(out.max_orthonormality, orthonormality_error(out.state.R_WB));
+      });
+  EXPECT_TRUE(out.report.completed) << out.report.failure;
+  return out;
+}
+
+StepControl tolerances(double rtol) {
+  StepControl control;
+  control.rtol = rtol;
+  control.atol = rtol * 1e-3;  // tumble's rule when only rtol is given
+  return control;
+}
+
+// Adaptive methods: the global error at t = 20 against the 40-digit reference stays within a
+// small multiple of rtol. The multiple allows for the accumulation of local errors over ~20 time
+// units and, in the unstable case, their amplification along the tumbling orbit; it is the same
+// for all three tolerances, so the error really follows the tolerance asked for.
+TEST(FreePrism, AdaptiveMethodsMeetTheRequestedTolerance) {
+  constexpr double kMultiple = 30.0;
+  for (const PrismCase& c : prism_cases()) {
+    for (const std::string formulation : {"body", "textbook"}) {
+      for (const std::string method : {"dopri5", "dop853"}) {
+        for (const double rtol : {1e-6, 1e-8, 1e-10}) {
+          const FinalState f = simulate_prism(c, formulation, method, tolerances(rtol), 20.0);
+          const double error = testing::state_error(f.state.R_WB, f.state.omega_W, c.states[0]);
+          EXPECT_LT(error, kMultiple * rtol) << c.id << " " << formulation << " " << method
+                                             << " rtol " << rtol << " error " << error;
+          // And the tolerance is not wildly over-delivered at the cost of speed either: an
+          // error far below rtol would mean the control ignores it.
+          EXPECT_GT(error, 1e-4 * rtol) << c.id << " " << formulation << " " << method;
+        }
+      }
+    }
+  }
+}
+
+// Fixed-step methods: halving the step divides the error at t = 20 by 2^4 = 16 for these
+// fourth-order methods. Steps 0.04 ... 0.01 are in the asymptotic range (omega ~ 1 rad/s).
+TEST(FreePrism, FixedStepMethodsConvergeAtOrderFour) {
+  for (const PrismCase& c : prism_cases()) {
+    for (const std::string formulation : {"body", "textbook"}) {
+      for (const std::string method : {"rk4", "rkmk4"}) {
+        if (method == "rkmk4" && formulation == "textbook") continue;  // needs quaternions
+        double previous = 0.0;
+        for (const double h : {0.04, 0.02, 0.01}) {
+          StepControl control;
+          control.fixed_step = h;
+          const FinalState f = simulate_prism(c, formulation, method, control, 20.0);
+          const double error = testing::state_error(f.state.R_WB, f.state.omega_W, c.states[0]);
+          if (previous > 0.0) {
+            const double ratio = previous / error;
+            EXPECT_GT(ratio, 12.0) << c.id << " " << formulation << " " << method << " h " << h;
+            EXPECT_LT(ratio, 20.0) << c.id << " " << formulation << " " << method << " h " << h;
+          }
+          previous = error;
+        }
+      }
+    }
+  }
+}
+
+// E and |L| are first integrals: their drift over the run is of the order of the requested
+// tolerance (the local error control bounds each step's contribution by rtol relative).
+TEST(FreePrism, EnergyAndAngularMomentumAreConserved) {
+  for (const PrismCase& c : prism_cases()) {
+    for (const std::string formulation : {"body", "textbook"}) {
+      const FinalState f = simulate_prism(c, formulation, "dopri5", tolerances(1e-10), 200.0);
+      EXPECT_LT(f.max_energy_drift, 100 * 1e-10) << c.id << " " << formulation;
+      EXPECT_LT(f.max_L_drift, 100 * 1e-10) << c.id << " " << formulation;
+      // Initial E and |L| are the reference's.
+      EXPECT_NEAR(0.5 * c.omega0_W.dot(c.I0_diag.asDiagonal() * c.omega0_W), c.energy, 1e-15);
+    }
+  }
+}
+
+// The production formulation keeps R orthonormal to round-off over any run, at any tolerance;
+// the textbook formulation drifts at about the requested tolerance, as the chapter's script does.
+TEST(FreePrism, ProductionFormulationKeepsRotationOrthonormal) {
+  const PrismCase& c = prism_case("unstable");
+  for (const std::string method : {"dopri5", "dop853", "rk4", "rkmk4"}) {
+    StepControl control = tolerances(1e-4);
+    control.fixed_step = 0.05;
+    const FinalState f = simulate_prism(c, "body", method, control, 2000.0);
+    EXPECT_LT(f.max_orthonormality, 1e-12) << method;
+  }
+  const FinalState textbook = simulate_prism(c, "textbook", "dopri5", tolerances(1e-4), 200.0);
+  EXPECT_GT(textbook.max_orthonormality, 1e-9)
+      << "the textbook form has nothing to keep R on SO(3)";
+}
+
+// The chapter's instability: with k the intermediate axis, the body-frame spin omega_B.z
+// reverses at t = 9.664 s. Located as an event on the dense output, the flip time agrees with
+// the exact solution's root to within the integration tolerance (relative to the ~10 s scale,
+// the phase error of rtol 1e-10 over 10 s is ~1e-9 s).
+class FlipWatch final : public OdeSystem {
+ public:
+  explicit FlipWatch(Formulation& inner) : inner_(inner) {}
+  Eigen::Index dimension() const override { return inner_.dimension(); }
+  void derivative(double t, const VecX& y, VecX& dydt) const override {
+    inner_.derivative(t, y, dydt);
+  }
+  std::span<const Eigen::Index> unit_quaternion_offsets() const override {
+    return inner_.unit_quaternion_offsets();
+  }
+  void project(double t, VecX& y) const override { inner_.project(t, y); }
+  std::span<const EventSpec> events() const override { return specs_; }
+  void event_functions(double, const VecX& y, VecX& g) const override {
+    const BodyState s = inner_.unpack(y, 0);
+    g(0) = (s.R_WB.transpose() * s.omega_W).z();
+  }
+
+ private:
+  Formulation& inner_;
+  EventSpec specs_[1] = {{"flip", EventDirection::Both}};
+};
+
+double exact_flip_time(const PrismCase& c) {
+  const TorqueFreeMotion exact(c.I0_diag.asDiagonal(), Mat3::Identity(), c.omega0_W);
+  double a = 9.0, b = 10.5;  // bracket around the chapter's 9.664 s
+  EXPECT_GT(exact.omega_B(a).z(), 0.0);
+  EXPECT_LT(exact.omega_B(b).z(), 0.0);
+  for (int i = 0; i < 200 && b - a > 1e-15; ++i) {
+    const double m = 0.5 * (a + b);
+    (exact.omega_B(m).z() > 0.0 ? a : b) = m;
+  }
+  return 0.5 * (a + b);
+}
+
+TEST(FreePrism, IntermediateAxisFlipsAtTheExactTime) {
+  const PrismCase& c = prism_case("unstable");
+  const double t_flip = exact_flip_time(c);
+  EXPECT_NEAR(t_flip, 9.664, 5e-4);  // the chapter's figure
+  for (const std::string formulation : {"body", "textbook"}) {
+    for (const std::string method : {"dopri5", "dop853"}) {
+      std::unique_ptr<Formulation> system = make_formulation(formulation, testing::prism_model(c));
+      FlipWatch watch(*system);
+      std::unique_ptr<Integrator> integrator = make_integrator(method, tolerances(1e-10));
+      VecX y0(system->dimension());
+      const BodyState s0 = testing::prism_initial_state(c);
+      system->pack(std::span<const BodyState>(&s0, 1), y0);
+      const IntegrationReport r =
+          integrate(*integrator, watch, 0.0, y0, 12.0, DriverOptions{}, [](double, const VecX&) {});
+      ASSERT_TRUE(r.completed) << r.failure;
+      ASSERT_EQ(r.events.size(), 1u) << formulation << " " << method;
+      EXPECT_NEAR(r.events[0].t, t_flip, 1e-7) << formulation << " " << method;
+    }
+  }
+}
+
+// The exact integrator, run through the same driver, reproduces the 40-digit reference at
+// t = 20, 200 and 2000 (the closed form's own accuracy: phase error ~ t * eps * frequency).
+TEST(FreePrism, ExactIntegratorMatchesTheReference) {
+  for (const PrismCase& c : prism_cases()) {
+    for (const testing::ReferenceState& ref : c.states) {
+      const FinalState f = simulate_prism(c, "body", "exact", StepControl{}, ref.t);
+      const double error = testing::state_error(f.state.R_WB, f.state.omega_W, ref);
+      EXPECT_LT(error, 1e-15 * ref.t * 100 + 1e-13) << c.id << " t " << ref.t;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tumble

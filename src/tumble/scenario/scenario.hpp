@@ -38,22 +38,22 @@ class ScenarioError : public std::runtime_error {
 
 // One part of a composite body, in the body's frame.
 struct PartSpec {
-  std::string name;                // "parts[2]" when not named
+  std::string name;  // "parts[2]" when not named
   Shape shape;
   MassProperties mass_properties;  // resolved, in the body's frame
 };
 
 struct BodySpec {
   std::string name;
-  Shape shape;                       // kind Point when the body is a composite of parts
+  Shape shape;  // kind Point when the body is a composite of parts
   std::vector<PartSpec> parts;
   // Resolved mass properties in the body frame: for a single shape, com = 0 (the frame sits at
   // the COM); for a composite, the COM of the parts in the body's frame.
   MassProperties mass_properties;
-  bool inertia_overridden = false;   // `inertia:` was given
-  Vec3 position_W = Vec3::Zero();    // origin of the body frame at t = 0, world, m
-  Mat3 R_WB = Mat3::Identity();      // orientation at t = 0
-  Vec3 velocity_W = Vec3::Zero();    // COM velocity at t = 0, world, m/s
+  bool inertia_overridden = false;         // `inertia:` was given
+  Vec3 position_W = Vec3::Zero();          // origin of the body frame at t = 0, world, m
+  Mat3 R_WB = Mat3::Identity();            // orientation at t = 0
+  Vec3 velocity_W = Vec3::Zero();          // COM velocity at t = 0, world, m/s
   Vec3 angular_velocity_W = Vec3::Zero();  // at t = 0, world, rad/s
   SourceLocation where;
 };
@@ -61,39 +61,39 @@ struct BodySpec {
 // A constant force or a pure torque on one body, optionally switched on a from/to schedule.
 struct LoadSpec {
   enum class Kind { Force, Torque } kind = Kind::Force;
-  std::string name;                  // `name:`, or "force1", "torque2" by type and list position
+  std::string name;  // `name:`, or "force1", "torque2" by type and list position
   std::string body;
-  Vec3 value = Vec3::Zero();         // N or N m; world frame unless body_frame
-  bool body_frame = false;           // `frame: body`: value turns with the body
-  Vec3 at_W = Vec3::Zero();          // force: point of application, world at t = 0, m
-  bool has_point = false;            // force: `at:` given (else at the COM)
+  Vec3 value = Vec3::Zero();  // N or N m; world frame unless body_frame
+  bool body_frame = false;    // `frame: body`: value turns with the body
+  Vec3 at_W = Vec3::Zero();   // force: point of application, world at t = 0, m
+  bool has_point = false;     // force: `at:` given (else at the COM)
   double from = -std::numeric_limits<double>::infinity();  // s
   double to = std::numeric_limits<double>::infinity();     // s
   SourceLocation where;
 };
 
 struct SimulateSpec {
-  double duration = 0.0;               // s, > 0, required
-  std::string integrator = "dopri5";   // dopri5 | dop853 | rk4 | rkmk4 | exact
-  std::string formulation = "body";    // body (production) | textbook (the chapter's [R; omega])
-  double rtol = 1e-3;                  // > 0
-  double atol = 1e-6;                  // > 0
+  double duration = 0.0;              // s, > 0, required
+  std::string integrator = "dopri5";  // dopri5 | dop853 | rk4 | rkmk4 | exact
+  std::string formulation = "body";   // body (production) | textbook (the chapter's [R; omega])
+  double rtol = 1e-3;                 // > 0
+  double atol = 1e-6;                 // > 0
   bool rtol_given = false;
-  bool atol_given = false;             // when only rtol is given, atol = rtol * 1e-3 (see docs)
-  double step = 0.0;                   // s: fixed step (rk4, rkmk4); > 0 when required
-  double max_step = 0.0;               // s: 0 = a tenth of the duration, as ode45
-  double initial_step = 0.0;           // s: 0 = chosen automatically
-  double output_every = 0.0;           // s: 0 = one row per accepted step
-  long max_steps = 10'000'000;         // guard against a run that would never end
+  bool atol_given = false;      // when only rtol is given, atol = rtol * 1e-3 (see docs)
+  double step = 0.0;            // s: fixed step (rk4, rkmk4); > 0 when required
+  double max_step = 0.0;        // s: 0 = a tenth of the duration, as ode45
+  double initial_step = 0.0;    // s: 0 = chosen automatically
+  double output_every = 0.0;    // s: 0 = one row per accepted step
+  long max_steps = 10'000'000;  // guard against a run that would never end
   SourceLocation where;
 };
 
 struct OutputSpec {
-  std::string trajectory;              // relative path; default "<scenario file stem>.csv"
+  std::string trajectory;  // relative path; default "<scenario file stem>.csv"
 };
 
 struct Scenario {
-  std::string file;                    // as given on the command line
+  std::string file;  // as given on the command line
   std::string name;
   std::map<std::string, double> parameters;  // after --set
   Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);    // m/s^2

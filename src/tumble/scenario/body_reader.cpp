@@ -1,0 +1,185 @@
+// `bodies:`: each body is one shape (its frame at the COM) or a composite of `parts:` (its frame
+// where the parts' positions are measured from), with its initial position, orientation and
+// velocities. Mass properties come from the inertia module: shape_mass_properties for one shape;
+// express_in_parent and combine (the parallel axis theorem) for parts.
+#include <fmt/format.h>
+
+#include "tumble/inertia/mesh.hpp"
+#include "tumble/scenario/readers.hpp"
+
+namespace tumble::scenario_reading {
+namespace {
+
+const std::vector<std::string> kMotionKeys = {"position", "orientation", "velocity",
+                                              "angular_velocity"};
+
+std::vector<std::string> with(std::vector<std::string> keys, const std::vector<std::string>& more) {
+  keys.insert(keys.end(), more.begin(), more.end());
+  return keys;
+}
+
+// Mass properties of one shape of the given mass in its own frame; a mesh that cannot be read
+// or is not closed is reported at `shape:` or `file:`.
+MassProperties shape_properties(const Reader& reader, const MapReader& map, const ShapeRead& read) {
+  try {
+    return shape_mass_properties(read.shape, read.mass);
+  } catch (const std::runtime_error& error) {  // InertiaError, MeshError
+    const std::optional<Field> file = map.find("file");
+    reader.fail_at_value(file ? *file : read.shape_field, error.what());
+  }
+}
+
+PartSpec read_part(const Reader& reader, const Field& field, const std::filesystem::path& directory,
+                   std::size_t index) {
+  const MapReader map(reader, field, "a part {shape: ..., mass: ..., position: [x, y, z]}");
+  const std::vector<std::string> keys = {"name",    "shape",    "mass",       "density",
+                                         "inertia", "position", "orientation"};
+  PartSpec part;
+  part.name = "parts[" + std::to_string(index) + "]";
+  if (const auto name = map.find("name")) part.name = reader.text(*name);
+  const ShapeRead read = read_shape_and_mass(reader, map, directory, true, keys, "a part");
+  part.shape = read.shape;
+  MassProperties own = shape_properties(reader, map, read);
+  if (const auto inertia = map.find("inertia"))
+    own.inertia_about_com = read_inertia(reader, *inertia);
+  Vec3 position = Vec3::Zero();
+  Mat3 R_BP = Mat3::Identity();
+  if (const auto f = map.find("position")) position = reader.vec3(*f);
+  if (const auto f = map.find("orientation")) R_BP = read_orientation(reader, *f);
+  part.mass_properties = express_in_parent(own, R_BP, position);
+  return part;
+}
+
+// A single shape: the body's frame is the shape's, at the COM.
+void read_single_shape(const Reader& reader, const MapReader& map,
+                       const std::filesystem::path& directory, BodySpec& body) {
+  const std::vector<std::string> keys =
+      with({"shape", "mass", "density", "inertia", "parts"}, kMotionKeys);
+  const ShapeRead read = read_shape_and_mass(reader, map, directory, false, keys, "a body");
+  body.shape = read.shape;
+  body.mass_properties = shape_properties(reader, map, read);
+  if (const auto inertia = map.find("inertia")) {
+    body.mass_properties.inertia_about_com = read_inertia(reader, *inertia);
+    body.inertia_overridden = true;
+    return;
+  }
+  try {
+    validate_inertia(body.mass_properties.inertia_about_com);
+  } catch (const InertiaError& error) {
+    const std::string fix =
+        read.shape.kind == ShapeKind::Rod
+            ? "a lone rod has no inertia about its own axis, so it cannot be a body: give "
+              "`inertia:` (three principal moments, all > 0) or make it a thin cylinder"
+            : "give `inertia:` or choose another shape";
+    reader.fail_at_value(read.shape_field,
+                         fmt::format("the {}'s inertia is not valid: {}; {}",
+                                     shape_name(read.shape.kind), error.what(), fix));
+  }
+}
+
+// A composite: the parts' mass properties, each expressed in the body's frame, summed.
+void read_composite(const Reader& reader, const MapReader& map,
+                    const std::filesystem::path& directory, BodySpec& body) {
+  map.allow_only(with({"parts", "inertia"}, kMotionKeys), "a composite body (with parts)",
+                 [](const std::string& key) -> std::string {
+                   if (key == "mass" || key == "density") {
+                     return "a composite body's mass is the sum of its parts'; give mass or "
+                            "density on each part";
+                   }
+                   if (key == "shape") {
+                     return "a body is one shape or a composite of parts, not both; move the "
+                            "shape into `parts:`";
+                   }
+                   const auto& dims = all_dimension_keys();
+                   if (std::find(dims.begin(), dims.end(), key) != dims.end()) {
+                     return "'" + key + "' belongs to a shape: give it on the part";
+                   }
+                   return "";
+                 });
+  const Field parts_field = *map.find("parts");
+  const std::vector<Field> items =
+      reader.items(parts_field, "of parts, each {shape: ..., mass: ..., position: [x, y, z]}");
+  if (items.empty()) {
+    reader.fail_at_value(parts_field, "a composite body needs at least one part");
+  }
+  std::vector<MassProperties> in_body;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    PartSpec part = read_part(reader, items[i], directory, i);
+    if (std::find(names.begin(), names.end(), part.name) != names.end()) {
+      reader.fail_at_value(*MapReader(reader, items[i], "a part").find("name"),
+                           "part name '" + part.name + "' is used twice in this body");
+    }
+    names.push_back(part.name);
+    in_body.push_back(part.mass_properties);
+    body.parts.push_back(std::move(part));
+  }
+  body.shape = Shape{};  // kind Point marks a composite
+  body.mass_properties = combine(in_body);
+  if (const auto inertia = map.find("inertia")) {
+    body.mass_properties.inertia_about_com = read_inertia(reader, *inertia);
+    body.inertia_overridden = true;
+    return;
+  }
+  try {
+    validate_inertia(body.mass_properties.inertia_about_com);
+  } catch (const InertiaError& error) {
+    reader.fail_at_key(parts_field,
+                       fmt::format("the parts together have no valid inertia: {}; add a part "
+                                   "off their common line (points on one line cannot turn it "
+                                   "about that line) or give `inertia:`",
+                                   error.what()));
+  }
+}
+
+BodySpec read_body(const Reader& reader, const Field& field,
+                   const std::filesystem::path& directory) {
+  BodySpec body;
+  body.name = field.key();
+  body.where = reader.location(field.key_mark);
+  if (body.name == "ground") {
+    reader.fail_at_key(field,
+                       "'ground' is the reserved name of the fixed world; give the body "
+                       "another name");
+  }
+  check_name(reader, field, body.name, "body");
+  const MapReader map(reader, field, "a body {shape: ..., mass: ..., ...} or {parts: [...]}");
+  if (map.has("parts")) {
+    read_composite(reader, map, directory, body);
+  } else {
+    read_single_shape(reader, map, directory, body);
+  }
+  if (const auto f = map.find("position")) body.position_W = reader.vec3(*f);
+  if (const auto f = map.find("orientation")) body.R_WB = read_orientation(reader, *f);
+  if (const auto f = map.find("velocity")) body.velocity_W = reader.vec3(*f);
+  if (const auto f = map.find("angular_velocity")) body.angular_velocity_W = reader.vec3(*f);
+  return body;
+}
+
+}  // namespace
+
+std::vector<BodySpec> read_bodies(const Reader& reader, const Field& field,
+                                  const std::filesystem::path& directory) {
+  const MapReader map(reader, field, "a mapping of bodies by name, {prism: {shape: box, ...}}");
+  if (map.fields().empty()) {
+    reader.fail_at_key(field,
+                       "no bodies; give at least one, e.g. prism: {shape: box, size: "
+                       "[4, 1, 2], mass: 12}");
+  }
+  std::vector<BodySpec> bodies;
+  for (const Field& body : map.fields()) bodies.push_back(read_body(reader, body, directory));
+  return bodies;
+}
+
+void check_name(const Reader& reader, const Field& where, const std::string& name,
+                std::string_view what) {
+  const bool bad = name.empty() || name.find_first_of(".,\"' \t\r\n") != std::string::npos;
+  if (bad) {
+    reader.fail_at_key(where, fmt::format("{} name '{}' cannot be used: it prefixes CSV columns "
+                                          "('{}.x'), so it may not be empty or hold '.', ',', "
+                                          "quotes or spaces",
+                                          what, name, name));
+  }
+}
+
+}  // namespace tumble::scenario_reading

@@ -1,0 +1,118 @@
+#include "tumble/scenario/expression.hpp"
+
+#include <muParser.h>
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string_view>
+
+namespace tumble {
+namespace {
+
+double degrees_to_radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
+
+// A plain decimal number, read exactly; nullopt for anything else (left to muParser).
+std::optional<double> plain_number(std::string_view text) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end) return std::nullopt;
+  return value;
+}
+
+bool is_identifier(std::string_view name) {
+  if (name.empty()) return false;
+  const auto letter = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+  };
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (!letter(name.front())) return false;
+  return std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || digit(c); });
+}
+
+std::string names_hint(const std::vector<std::string>& names) {
+  if (names.empty()) return "no parameters are defined here; add them under `parameters:`";
+  return "the parameters defined here are " + fmt::format("{}", fmt::join(names, ", ")) +
+         " (a parameter may use only those above it)";
+}
+
+}  // namespace
+
+struct ExpressionEvaluator::Impl {
+  mu::Parser parser;
+};
+
+ExpressionEvaluator::ExpressionEvaluator() : impl_(std::make_unique<Impl>()) {
+  impl_->parser.DefineConst("pi", std::numbers::pi);
+  impl_->parser.DefineConst("e", std::numbers::e);
+  impl_->parser.DefinePostfixOprt("deg", degrees_to_radians);
+}
+
+ExpressionEvaluator::~ExpressionEvaluator() = default;
+
+void ExpressionEvaluator::define(const std::string& name, double value) {
+  if (!is_identifier(name)) {
+    throw ExpressionError("'" + name +
+                              "' is not a valid parameter name; use letters, digits and '_', "
+                              "starting with a letter",
+                          "");
+  }
+  if (name == "pi" || name == "e" || name == "deg") {
+    throw ExpressionError("'" + name + "' is reserved (the constants pi and e, the unit deg); " +
+                              "rename the parameter",
+                          "");
+  }
+  const mu::funmap_type& functions = impl_->parser.GetFunDef();
+  if (functions.find(name) != functions.end()) {
+    throw ExpressionError(
+        "'" + name + "' is a function of the expression language; rename the " + "parameter", "");
+  }
+  if (std::find(names_.begin(), names_.end(), name) != names_.end()) {
+    throw ExpressionError("parameter '" + name + "' is defined twice", "");
+  }
+  try {
+    impl_->parser.DefineConst(name, value);
+  } catch (const mu::Parser::exception_type& error) {
+    throw ExpressionError("parameter '" + name + "': " + error.GetMsg(), "");
+  }
+  names_.push_back(name);
+}
+
+double ExpressionEvaluator::evaluate(const std::string& expression) const {
+  const std::string_view text = trim(expression);
+  if (text.empty()) throw ExpressionError("expected a number or an expression, got nothing", "");
+  std::optional<double> value = plain_number(text);
+  if (!value) {
+    try {
+      impl_->parser.SetExpr(std::string(text));
+      value = impl_->parser.Eval();
+    } catch (const mu::Parser::exception_type& error) {
+      const bool unknown = error.GetCode() == mu::ecUNASSIGNABLE_TOKEN;
+      std::string what = "expression '" + expression + "': " + error.GetMsg();
+      if (unknown) what += "; " + names_hint(names_);
+      throw ExpressionError(what, unknown ? error.GetToken() : "");
+    }
+  }
+  if (!std::isfinite(*value)) {
+    const std::string shown = std::isnan(*value) ? "nan" : fmt::format("{}", *value);
+    throw ExpressionError(
+        "expression '" + expression + "' evaluates to " + shown + "; a finite number is needed",
+        "");
+  }
+  return *value;
+}
+
+}  // namespace tumble

@@ -1,0 +1,51 @@
+#pragma once
+// The numbers of a scenario are expressions, evaluated by muParser (not by hand-written code):
+// the usual operators and functions (sqrt, sin, cos, atan2, ...), the constants pi and e, the
+// parameters defined so far, and the postfix unit deg ("30 deg" = 30 pi / 180 rad).
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tumble {
+
+// An expression that cannot be evaluated. what() reads "expression 'L*q': <muParser's message>"
+// with a hint of the names that are defined; unknown_name() is the name muParser did not know, if
+// that was the trouble.
+class ExpressionError : public std::runtime_error {
+ public:
+  ExpressionError(const std::string& what, std::string unknown_name)
+      : std::runtime_error(what), unknown_name_(std::move(unknown_name)) {}
+  const std::string& unknown_name() const { return unknown_name_; }
+
+ private:
+  std::string unknown_name_;
+};
+
+class ExpressionEvaluator {
+ public:
+  ExpressionEvaluator();
+  ~ExpressionEvaluator();
+  ExpressionEvaluator(const ExpressionEvaluator&) = delete;
+  ExpressionEvaluator& operator=(const ExpressionEvaluator&) = delete;
+
+  // Makes `name` usable in later expressions with this value. Throws ExpressionError for a name
+  // that is not an identifier, or that is taken (pi, e, deg, a function such as sqrt, or a name
+  // already defined).
+  void define(const std::string& name, double value);
+
+  // The value of the expression; a plain number ("1e-8") is read exactly as strtod would. Throws
+  // ExpressionError for a syntax error, an unknown name, or a result that is not finite.
+  double evaluate(const std::string& expression) const;
+
+  // The names given to define(), in order.
+  const std::vector<std::string>& names() const { return names_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::vector<std::string> names_;
+};
+
+}  // namespace tumble

@@ -1,0 +1,58 @@
+#pragma once
+// The readers of the scenario's sections, one file each; scenario.cpp calls them in order.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/scenario/yaml_reader.hpp"
+
+namespace tumble::scenario_reading {
+
+// `shape:` with its dimension keys, `mass:` or `density:`, `inertia:` and `orientation:` of a body
+// or a part (shape_reader.cpp).
+struct ShapeRead {
+  Shape shape;
+  Field shape_field;  // where `shape:` is written
+  double mass = 0.0;  // kg
+  Field mass_field;   // `mass:` or `density:`, for errors about the mass properties
+};
+
+// The dimension keys of a shape, as the contract names them.
+const std::vector<std::string>& dimension_keys(ShapeKind kind);
+// Every dimension key of every shape.
+const std::vector<std::string>& all_dimension_keys();
+// "rod, ring, disk, ..." (without point unless with_point).
+std::string shape_list(bool with_point);
+
+// Reads `shape:` and its dimensions, then `mass:` or `density:`. `directory` is where a mesh's
+// relative path starts. A point is accepted only when point_allowed (in parts). The mapping may
+// hold other_keys besides the shape's own dimensions; any other key is an error that names
+// `what` ("a body") and lists the keys.
+ShapeRead read_shape_and_mass(const Reader& reader, const MapReader& map,
+                              const std::filesystem::path& directory, bool point_allowed,
+                              const std::vector<std::string>& other_keys, const std::string& what);
+// `inertia:`: three principal moments [Ixx, Iyy, Izz] on the frame's axes or a full symmetric
+// 3x3, checked by validate_inertia.
+Mat3 read_inertia(const Reader& reader, const Field& field);
+// `orientation:`: identity | {axis, angle} | {matrix} | {quaternion: [w, x, y, z]}.
+Mat3 read_orientation(const Reader& reader, const Field& field);
+
+// `bodies:` (body_reader.cpp).
+std::vector<BodySpec> read_bodies(const Reader& reader, const Field& field,
+                                  const std::filesystem::path& directory);
+// `forces:` (loads_reader.cpp): the entries of type force and torque.
+std::vector<LoadSpec> read_forces(const Reader& reader, const Field& field,
+                                  const std::vector<BodySpec>& bodies);
+// `simulate:` and `output:` (simulate_reader.cpp).
+SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces);
+OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
+                       const std::string& file_stem);
+
+// Checks a body's or force's name: it prefixes CSV columns ("prism.x"), so no '.', ',', quotes
+// or white space.
+void check_name(const Reader& reader, const Field& where, const std::string& name,
+                std::string_view what);
+
+}  // namespace tumble::scenario_reading

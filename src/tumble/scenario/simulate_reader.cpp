@@ -1,0 +1,139 @@
+// `simulate:` (how long, by which method, to what tolerance) and `output:` (where the trajectory
+// goes). Defaults live in SimulateSpec and OutputSpec.
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+
+#include "tumble/scenario/readers.hpp"
+
+namespace tumble::scenario_reading {
+namespace {
+
+const std::vector<std::string> kIntegrators = {"dopri5", "dop853", "rk4", "rkmk4", "exact"};
+const std::vector<std::string> kFormulations = {"body", "textbook"};
+
+// When only rtol is given, atol follows it in ode45's ratio of defaults (1e-6 / 1e-3): RelTol
+// 1e-8 with the default AbsTol 1e-6 would otherwise cap the accuracy near 4e-4.
+constexpr double kAtolPerRtol = 1e-3;
+
+std::string read_choice(const Reader& reader, const Field& field,
+                        const std::vector<std::string>& choices, std::string_view what) {
+  const std::string value = reader.text(field);
+  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
+  std::string why = fmt::format("unknown {} '{}'", what, value);
+  if (const auto match = closest_match(value, choices)) why += "; did you mean '" + *match + "'?";
+  reader.fail_at_value(field, why + fmt::format(" (the {}s are {})", what, join(choices)));
+}
+
+// A number that must satisfy `ok`; `rule` is the condition as the message states it.
+double checked(const Reader& reader, const Field& field, bool (*ok)(double),
+               std::string_view rule) {
+  const double value = reader.number(field);
+  if (!ok(value)) {
+    reader.fail_at_value(
+        field, fmt::format("{} must be {}, got {}", field.key(), rule, format_number(value)));
+  }
+  return value;
+}
+
+bool positive(double x) {
+  return x > 0.0;
+}
+bool non_negative(double x) {
+  return x >= 0.0;
+}
+bool fraction(double x) {
+  return x > 0.0 && x < 1.0;
+}
+
+}  // namespace
+
+SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces) {
+  SimulateSpec sim;
+  const MapReader map(reader, field, "the run's settings {duration: s, integrator: ..., ...}");
+  map.allow_only({"duration", "integrator", "formulation", "rtol", "atol", "step", "max_step",
+                  "initial_step", "output_every", "max_steps"},
+                 "simulate");
+  sim.where = reader.location(field.key_mark);
+  sim.duration =
+      checked(reader, map.require("duration", "the time to simulate, s, > 0"), positive, "> 0 (s)");
+  std::optional<Field> integrator = map.find("integrator");
+  if (integrator) {
+    sim.integrator = read_choice(reader, *integrator, kIntegrators, "integrator");
+    sim.where = reader.location(integrator->value_mark());
+  }
+  if (const auto f = map.find("formulation")) {
+    sim.formulation = read_choice(reader, *f, kFormulations, "formulation");
+  }
+  if (const auto f = map.find("rtol")) {
+    sim.rtol = checked(reader, *f, fraction, "between 0 and 1 (e.g. 1e-8)");
+    sim.rtol_given = true;
+  }
+  if (const auto f = map.find("atol")) {
+    sim.atol = checked(reader, *f, positive, "> 0 (in the state's units, e.g. 1e-10)");
+    sim.atol_given = true;
+  } else if (sim.rtol_given) {
+    sim.atol = sim.rtol * kAtolPerRtol;
+  }
+  const std::optional<Field> step = map.find("step");
+  if (step) sim.step = checked(reader, *step, positive, "> 0 (s)");
+  if (const auto f = map.find("max_step")) {
+    sim.max_step = checked(reader, *f, non_negative, ">= 0 (s; 0 = a tenth of the duration)");
+  }
+  if (const auto f = map.find("initial_step")) {
+    sim.initial_step = checked(reader, *f, non_negative, ">= 0 (s; 0 = chosen automatically)");
+  }
+  if (const auto f = map.find("output_every")) {
+    sim.output_every = checked(reader, *f, non_negative, ">= 0 (s; 0 = every accepted step)");
+  }
+  if (const auto f = map.find("max_steps")) {
+    const double n = reader.number(*f);
+    if (!(n >= 1.0) || n != std::floor(n) || n > 1e15) {
+      reader.fail_at_value(*f, "max_steps must be a whole number > 0, got " + format_number(n));
+    }
+    sim.max_steps = static_cast<long>(n);
+  }
+
+  const bool fixed_step = sim.integrator == "rk4" || sim.integrator == "rkmk4";
+  if (fixed_step && !step) {
+    reader.fail(integrator->value_mark(), integrator->path,
+                sim.integrator +
+                    " takes a fixed step: give simulate.step (s, > 0), e.g. "
+                    "step: 0.001, or choose dopri5 to adapt the step");
+  }
+  if (sim.integrator == "exact" && has_forces) {
+    reader.fail_at_value(*integrator,
+                         "exact is for torque-free bodies; remove forces or choose dopri5");
+  }
+  return sim;
+}
+
+OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
+                       const std::string& file_stem) {
+  OutputSpec output;
+  output.trajectory = file_stem + ".csv";
+  if (!field) return output;
+  const MapReader map(reader, *field, "the output's settings {trajectory: file.csv}");
+  map.allow_only({"trajectory"}, "output");
+  if (const auto f = map.find("trajectory")) {
+    const std::string text = reader.text(*f);
+    const std::filesystem::path path(text);
+    if (text.empty()) reader.fail_at_value(*f, "empty path; give a file name such as run.csv");
+    if (path.has_root_path()) {
+      reader.fail_at_value(*f, "'" + text +
+                                   "' is an absolute path; give a path relative to the "
+                                   "output directory (choose that with --out)");
+    }
+    for (const auto& part : path) {
+      if (part == "..") {
+        reader.fail_at_value(*f, "'" + text +
+                                     "' leaves the output directory through '..'; give "
+                                     "a path inside it (choose the directory with --out)");
+      }
+    }
+    output.trajectory = text;
+  }
+  return output;
+}
+
+}  // namespace tumble::scenario_reading

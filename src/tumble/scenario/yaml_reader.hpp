@@ -1,0 +1,99 @@
+#pragma once
+// Typed reading of a scenario's YAML with the place of every value: numbers (as expressions),
+// 3-vectors, 3x3 matrices, text, lists and mappings whose keys are checked against the keys they
+// may hold. Every failure is a ScenarioError at FILE:LINE:COL with the dotted key path.
+#include <yaml-cpp/yaml.h>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tumble/math/types.hpp"
+#include "tumble/scenario/expression.hpp"
+#include "tumble/scenario/scenario.hpp"
+
+namespace tumble::scenario_reading {
+
+// A value of the file: its node, its dotted key path ("bodies.prism.mass", "forces[2].value"; ""
+// for the whole file) and where its key starts (for a list item: where the item starts).
+struct Field {
+  YAML::Node node;
+  std::string path;
+  YAML::Mark key_mark;
+
+  // Where the value starts; the key's place when the value is empty.
+  YAML::Mark value_mark() const;
+  // The last component of the path: "mass" for "bodies.prism.mass".
+  std::string key() const;
+};
+
+// A number for messages: the shortest text that reads back as the same double ("-2", "0.1").
+std::string format_number(double value);
+// "a, b, c"
+std::string join(const std::vector<std::string>& words, std::string_view separator = ", ");
+// The candidate closest to `word` by edit distance, if it is close enough to be a likely typo.
+std::optional<std::string> closest_match(std::string_view word,
+                                         const std::vector<std::string>& candidates);
+
+class Reader {
+ public:
+  Reader(std::string file, const ExpressionEvaluator& expressions)
+      : file_(std::move(file)), expressions_(&expressions) {}
+
+  const std::string& file() const { return file_; }
+  SourceLocation location(const YAML::Mark& mark) const;
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& key,
+                         const std::string& why) const;
+  [[noreturn]] void fail_at_value(const Field& field, const std::string& why) const {
+    fail(field.value_mark(), field.path, why);
+  }
+  [[noreturn]] void fail_at_key(const Field& field, const std::string& why) const {
+    fail(field.key_mark, field.path, why);
+  }
+
+  // A number or an expression over the parameters.
+  double number(const Field& field) const;
+  // A list of exactly `count` numbers; `form` names the expected form in messages ("[x, y, z]").
+  std::vector<double> numbers(const Field& field, std::size_t count, std::string_view form) const;
+  Vec3 vec3(const Field& field) const;
+  // [[r11, r12, r13], [r21, r22, r23], [r31, r32, r33]]
+  Mat3 mat3(const Field& field) const;
+  // A scalar, as written.
+  std::string text(const Field& field) const;
+  // The items of a list, each with its path "key[i]".
+  std::vector<Field> items(const Field& field, std::string_view form) const;
+
+ private:
+  std::string file_;
+  const ExpressionEvaluator* expressions_;
+};
+
+// A mapping of the file. Construction fails unless the value is a mapping with distinct scalar
+// keys; `form` describes the expected mapping for that message ("a body {shape: ..., mass: ...}").
+class MapReader {
+ public:
+  MapReader(const Reader& reader, Field self, std::string_view form);
+
+  const Field& self() const { return self_; }
+  const std::vector<Field>& fields() const { return fields_; }  // file order
+  std::optional<Field> find(std::string_view key) const;
+  bool has(std::string_view key) const { return find(key).has_value(); }
+  // Fails at this mapping's key when `key` is absent; `purpose` says what the key gives.
+  Field require(std::string_view key, std::string_view purpose) const;
+
+  // Fails at the first key that is not in `allowed`. `explain` may give the reason a known key is
+  // out of place ("a box takes size, not radius"); otherwise the message suggests the closest
+  // allowed key and lists them all, as "what takes: ...".
+  void allow_only(const std::vector<std::string>& allowed, std::string_view what,
+                  const std::function<std::string(const std::string&)>& explain = {}) const;
+
+ private:
+  const Reader* reader_;
+  Field self_;
+  std::vector<Field> fields_;
+};
+
+}  // namespace tumble::scenario_reading

@@ -69,45 +69,63 @@ StepControl tolerances(double rtol) {
 }
 
 // Adaptive methods: the global error at t = 20 against the 40-digit reference stays within a
-// small multiple of rtol. The multiple allows for the accumulation of local errors over ~20 time
-// units and, in the unstable case, their amplification along the tumbling orbit; it is the same
-// for all three tolerances, so the error really follows the tolerance asked for.
+// small multiple of rtol, the same multiple for all three tolerances, so the error follows the
+// tolerance asked for. Measured: at most 1.6 rtol for the body formulation in every case and for
+// the textbook formulation in the stable cases, hence the bound 5 rtol.
+// The textbook formulation on the UNSTABLE case is the exception, measured at 47 ... 135 rtol:
+// there R is integrated as nine numbers and leaves SO(3) by |R^T R - I| ~ 0.3 rtol, which changes
+// the effective inertia R I0 R^T, hence the energy level of an orbit that passes close to the
+// separatrix, hence the phase of the tumbling. The bound for it is 200 rtol, and the test also
+// checks that the production formulation really is the more accurate one there.
 TEST(FreePrism, AdaptiveMethodsMeetTheRequestedTolerance) {
-  constexpr double kMultiple = 30.0;
   for (const PrismCase& c : prism_cases()) {
-    for (const std::string formulation : {"body", "textbook"}) {
-      for (const std::string method : {"dopri5", "dop853"}) {
-        for (const double rtol : {1e-6, 1e-8, 1e-10}) {
+    for (const std::string method : {"dopri5", "dop853"}) {
+      for (const double rtol : {1e-6, 1e-8, 1e-10}) {
+        double error_of[2] = {0.0, 0.0};
+        int k = 0;
+        for (const std::string formulation : {"body", "textbook"}) {
           const FinalState f = simulate_prism(c, formulation, method, tolerances(rtol), 20.0);
           const double error = testing::state_error(f.state.R_WB, f.state.omega_W, c.states[0]);
-          EXPECT_LT(error, kMultiple * rtol) << c.id << " " << formulation << " " << method
-                                             << " rtol " << rtol << " error " << error;
-          // And the tolerance is not wildly over-delivered at the cost of speed either: an
-          // error far below rtol would mean the control ignores it.
+          const bool amplified = formulation == "textbook" && c.id == "unstable";
+          const double multiple = amplified ? 200.0 : 5.0;
+          EXPECT_LT(error, multiple * rtol) << c.id << " " << formulation << " " << method
+                                            << " rtol " << rtol << " error " << error;
+          // The tolerance is not ignored either: an error far below rtol would mean the
+          // control does not follow it (measured >= 0.004 rtol).
           EXPECT_GT(error, 1e-4 * rtol) << c.id << " " << formulation << " " << method;
+          error_of[k++] = error;
+        }
+        if (c.id == "unstable") {
+          EXPECT_LT(10 * error_of[0], error_of[1]) << method << " " << rtol;
         }
       }
     }
   }
 }
 
-// Fixed-step methods: halving the step divides the error at t = 20 by 2^4 = 16 for these
-// fourth-order methods. Steps 0.04 ... 0.01 are in the asymptotic range (omega ~ 1 rad/s).
+// Fixed-step methods: the error at t = 20 shrinks at least at order 4 when the step is halved
+// (observed order p = log2(e(h) / e(h/2)) >= 3.6), and at exactly order 4 (p within 4 +- 0.4)
+// for the body formulation. The textbook formulation on the unstable case converges faster than
+// h^4 over this range (measured p = 5.1 ... 5.5): its error is dominated by the phase shift that
+// R's drift off SO(3) causes (see above), a term that shrinks faster than the on-orbit error.
 TEST(FreePrism, FixedStepMethodsConvergeAtOrderFour) {
   for (const PrismCase& c : prism_cases()) {
     for (const std::string formulation : {"body", "textbook"}) {
       for (const std::string method : {"rk4", "rkmk4"}) {
         if (method == "rkmk4" && formulation == "textbook") continue;  // needs quaternions
         double previous = 0.0;
-        for (const double h : {0.04, 0.02, 0.01}) {
+        for (const double h : {0.02, 0.01, 0.005}) {
           StepControl control;
           control.fixed_step = h;
           const FinalState f = simulate_prism(c, formulation, method, control, 20.0);
           const double error = testing::state_error(f.state.R_WB, f.state.omega_W, c.states[0]);
           if (previous > 0.0) {
-            const double ratio = previous / error;
-            EXPECT_GT(ratio, 12.0) << c.id << " " << formulation << " " << method << " h " << h;
-            EXPECT_LT(ratio, 20.0) << c.id << " " << formulation << " " << method << " h " << h;
+            const double order = std::log2(previous / error);
+            const std::string where = c.id + " " + formulation + " " + method;
+            EXPECT_GT(order, 3.6) << where << " h " << h;
+            if (formulation == "body") {
+              EXPECT_LT(order, 4.4) << where << " h " << h;
+            }
           }
           previous = error;
         }

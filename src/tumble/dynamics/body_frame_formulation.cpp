@@ -12,7 +12,7 @@ Eigen::Index BodyFrameFormulation::dimension() const {
   return static_cast<Eigen::Index>(body_count()) * kPerBody;
 }
 
-void BodyFrameFormulation::derivative(double t, const VecX& y, VecX& dydt) const {
+void BodyFrameFormulation::derivative(double /*t*/, const VecX& y, VecX& dydt) const {
   const bool has_loads = !model_.loads.empty();
   for (std::size_t i = 0; i < body_count(); ++i) {
     const RigidBody& body = model_.bodies[i];
@@ -34,7 +34,7 @@ void BodyFrameFormulation::derivative(double t, const VecX& y, VecX& dydt) const
       // projections.
       const Mat3 R_WB = Quat(q(0), q(1), q(2), q(3)).normalized().toRotationMatrix();
       Vec3 F_applied_W, M_applied_G_W;
-      calc_applied_loads(model_, i, t, R_WB, F_applied_W, M_applied_G_W);
+      calc_applied_loads(model_, i, schedule_time_, R_WB, F_applied_W, M_applied_G_W);
       F_W += F_applied_W;
       M_G_B += R_WB.transpose() * M_applied_G_W;
     }

@@ -29,10 +29,14 @@ class Formulation : public OdeSystem {
   // Reads one body's state from y; unit quaternions are normalised on the way out.
   virtual BodyState unpack(const VecX& y, std::size_t body) const = 0;
 
+  // Load schedules: the active set is fixed between switching times and changes only here.
+  void begin(double t0, const VecX& /*y*/) override { schedule_time_ = t0; }
   double next_breakpoint(double t) const override { return model_.next_load_switch(t); }
+  void at_breakpoint(double t, VecX& /*y*/) override { schedule_time_ = t; }
 
  protected:
   Model model_;
+  double schedule_time_ = 0.0;  // the last schedule edge reached: decides which loads act
 };
 
 // "body" or "textbook"; throws std::invalid_argument otherwise.

@@ -13,12 +13,12 @@ double Model::next_load_switch(double t) const {
   return next;
 }
 
-void calc_applied_loads(const Model& model, std::size_t body, double t, const Mat3& R_WB,
-                        Vec3& F_W, Vec3& M_G_W) {
+void calc_applied_loads(const Model& model, std::size_t body, double schedule_time,
+                        const Mat3& R_WB, Vec3& F_W, Vec3& M_G_W) {
   F_W.setZero();
   M_G_W.setZero();
   for (const AppliedLoad& load : model.loads) {
-    if (load.body != body || !load.active_at(t)) continue;
+    if (load.body != body || !load.active_at(schedule_time)) continue;
     const Vec3 value_W = load.body_frame ? Vec3(R_WB * load.value) : load.value;
     if (load.kind == AppliedLoad::Kind::Torque) {
       M_G_W += value_W;

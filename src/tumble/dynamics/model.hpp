@@ -32,9 +32,11 @@ struct Model {
   double next_load_switch(double t) const;
 };
 
-// Resultant of the applied loads on one body at time t (gravity excluded): the force (world)
-// and the moment about the COM (world), for orientation R_WB. Does not allocate.
-void calc_applied_loads(const Model& model, std::size_t body, double t, const Mat3& R_WB,
-                        Vec3& F_W, Vec3& M_G_W);
+// Resultant of the applied loads on one body (gravity excluded): the force (world) and the
+// moment about the COM (world), for orientation R_WB. The loads that act are those active at
+// `schedule_time`, the last schedule edge reached (not the current time: the last stage of a step
+// that ends on an edge belongs to the interval before it). Does not allocate.
+void calc_applied_loads(const Model& model, std::size_t body, double schedule_time,
+                        const Mat3& R_WB, Vec3& F_W, Vec3& M_G_W);
 
 }  // namespace tumble

@@ -49,6 +49,7 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
   VecX g_before(static_cast<Eigen::Index>(event_count));
   VecX g_after(g_before.size()), g_probe(g_before.size());
 
+  system.begin(t0, y0);
   integrator.start(system, t0, y0, t_end);
   observe(t0, integrator.y());
   if (event_count > 0) system.event_functions(t0, integrator.y(), g_before);

@@ -6,6 +6,8 @@ void normalize_unit_quaternions(std::span<const Eigen::Index> offsets, VecX& y) 
   for (const Eigen::Index k : offsets) y.segment<4>(k).normalize();
 }
 
+void OdeSystem::begin(double /*t0*/, const VecX& /*y*/) {}
+
 void OdeSystem::project(double /*t*/, VecX& y) const {
   normalize_unit_quaternions(unit_quaternion_offsets(), y);
 }

@@ -33,6 +33,10 @@ class OdeSystem {
 
   virtual Eigen::Index dimension() const = 0;
 
+  // Called by the driver once, before the first step from (t0, y). Systems whose right-hand side
+  // has modes (loads switched on a schedule, contact modes) set the mode in force at t0 here.
+  virtual void begin(double t0, const VecX& y);
+
   // y' = f(t, y). Called at every stage of every step: it must not allocate.
   virtual void derivative(double t, const VecX& y, VecX& dydt) const = 0;
 
@@ -53,7 +57,9 @@ class OdeSystem {
 
   // The first time strictly after t at which f is discontinuous (a force switching on, an
   // impulse, a lock), or +infinity. The driver lands a step exactly on it, calls at_breakpoint
-  // (which may change y, e.g. apply an impulse), and restarts the method.
+  // (which may change y, e.g. apply an impulse, and switches the mode of f), and restarts the
+  // method. Between breakpoints f must not switch by itself: a step that ends on a breakpoint
+  // evaluates its last stage AT the breakpoint and must see the mode of the interval before it.
   virtual double next_breakpoint(double t) const;
   virtual void at_breakpoint(double t, VecX& y);
 };

@@ -14,8 +14,8 @@ namespace tumble {
 struct StepControl {
   double rtol = 1e-3;          // relative tolerance (ode45's default)
   double atol = 1e-6;          // absolute tolerance (ode45's default)
-  double initial_step = 0.0;   // s; 0: chosen as ode45 does
-  double max_step = 0.0;       // s; 0: a tenth of the span, as ode45
+  double initial_step = 0.0;   // s; 0: chosen as ode45 does (dop853: as Hairer's code)
+  double max_step = 0.0;       // s; 0: a tenth of the span as ode45 (dop853: the span, as Hairer)
   double fixed_step = 0.0;     // s; the step of fixed-step methods (required for them)
 };
 
@@ -63,7 +63,9 @@ class Integrator {
   double h_ = 0.0;
   VecX y_;
   VecX y_previous_;
-  IntegratorStats stats_;
+  // mutable: a lazy continuous extension (dop853) evaluates f inside the const dense_output()
+  // and counts those evaluations honestly.
+  mutable IntegratorStats stats_;
 };
 
 // The methods by their scenario names: dopri5, dop853, rk4, rkmk4. Throws std::invalid_argument

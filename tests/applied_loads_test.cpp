@@ -158,6 +158,39 @@ TEST(AppliedLoads, SpinningProjectileFollowsTheParabolaAndTheFreeRotation) {
   }
 }
 
+// OdeSystem's quaternion contract, which lets dopri5 renormalise without evaluating f again:
+// scaling q scales its four derivatives by the same factor and leaves every other component of
+// f unchanged, here with loads that use the rotation (a body-frame force at an offset point).
+TEST(BodyFrameFormulation, RescalingTheQuaternionRescalesOnlyItsDerivative) {
+  Model m = one_body(1.5, Vec3(0.4, 0.9, 1.2), Vec3(0.0, 0.0, -9.81));
+  AppliedLoad force;
+  force.value = Vec3(0.3, -1.0, 0.2);
+  force.body_frame = true;
+  force.p_GP_B = Vec3(0.1, 0.2, -0.3);
+  m.loads.push_back(force);
+  BodyFrameFormulation system(m);
+  system.begin(0.0, VecX());
+  BodyState s;
+  s.R_WB = rotation_from_axis_angle(Vec3(1.0, -2.0, 0.5), 0.9);
+  s.omega_W = Vec3(0.7, 1.1, -0.4);
+  s.v_G = Vec3(1.0, 2.0, 3.0);
+  VecX y(13), y_scaled(13), f(13), f_scaled(13);
+  system.pack(std::span<const BodyState>(&s, 1), y);
+  y_scaled = y;
+  y_scaled.segment<4>(BodyFrameFormulation::kQuaternion) *= 1.0 + 3e-7;  // drifted norm
+  system.derivative(0.0, y_scaled, f_scaled);
+  system.derivative(0.0, y, f);
+  VecX f_rescaled = f_scaled;
+  ASSERT_TRUE(rescale_quaternion_derivatives(system.unit_quaternion_offsets(), y_scaled, y,
+                                             f_rescaled));
+  EXPECT_LT((f_rescaled - f).cwiseAbs().maxCoeff(), 1e-15);
+  // Any change outside the quaternion is refused: f must then be evaluated again.
+  VecX y_moved = y;
+  y_moved(0) += 1e-9;
+  EXPECT_FALSE(rescale_quaternion_derivatives(system.unit_quaternion_offsets(), y, y_moved,
+                                              f_rescaled));
+}
+
 // The chapter's momentum and energy formulas (6.6, table "3D") on one hand-computed state.
 TEST(BodyQuantities, MomentaAndEnergyMatchTheChapterFormulas) {
   const RigidBody body = RigidBody::make("b", 2.0, Vec3(1.0, 2.0, 3.0).asDiagonal());

@@ -147,7 +147,10 @@ StepOutcome Dopri5::step(double t_stop) {
     y_.swap(y_new_);
     y_new_ = y_;  // the unprojected end point, to see whether project() moves it
     system_->project(t_new, y_);
-    if (y_ != y_new_) {
+    // FSAL: k7 = f(t_new, y) is the next step's k1. A projection that only renormalised the
+    // quaternions rescales it exactly (OdeSystem's contract); any other change needs f again.
+    if (y_ != y_new_ &&
+        !rescale_quaternion_derivatives(system_->unit_quaternion_offsets(), y_new_, y_, k[6])) {
       system_->derivative(t_new, y_, k[6]);
       ++stats_.rhs_evaluations;
     }

@@ -22,12 +22,13 @@
 //   y(s) = y_n + s^2 (3 - 2 s) Delta + h [s s1^2 k_1 - s^2 s1 k_7 + s^2 s1^2 D],
 // no extra evaluations of f.
 //
-// Projection: after each accepted step system.project() puts y_new back on the manifold. If it
-// changed y at all, f is evaluated again at the projected state so that FSAL's k_1 and the
-// continuous extension (which ends exactly on the projected state) belong to the state the next
-// step starts from; a system without unit quaternions or constraints pays nothing. So
-//   rhs_evaluations = 1 (start) + 6 (accepted + rejected) + (steps whose projection moved y)
-//                     + 1 per restart.
+// Projection: after each accepted step system.project() puts y_new back on the manifold. FSAL's
+// k_1 and the continuous extension (which ends exactly on the projected state) must belong to the
+// state the next step starts from: when the projection only renormalised unit quaternions, k_7
+// is rescaled to f at the projected state exactly (OdeSystem's contract on quaternions, no
+// evaluation); any other change (constraints) costs one evaluation of f. So
+//   rhs_evaluations = 1 (start) + 6 (accepted + rejected)
+//                     + (steps whose projection moved y beyond renormalising) + 1 per restart.
 #include <array>
 
 #include "tumble/integrators/integrator.hpp"

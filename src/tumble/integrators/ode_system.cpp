@@ -8,6 +8,27 @@ void normalize_unit_quaternions(std::span<const Eigen::Index> offsets, VecX& y) 
 
 void OdeSystem::begin(double /*t0*/, const VecX& /*y*/) {}
 
+bool rescale_quaternion_derivatives(std::span<const Eigen::Index> offsets, const VecX& y_before,
+                                    const VecX& y_after, VecX& dydt) {
+  // Everything outside the quaternion slots must be bit-identical.
+  Eigen::Index next = 0;
+  const auto same = [&](Eigen::Index from, Eigen::Index to) {
+    return (y_before.segment(from, to - from).array() == y_after.segment(from, to - from).array())
+        .all();
+  };
+  for (const Eigen::Index k : offsets) {
+    if (!same(next, k)) return false;
+    next = k + 4;
+  }
+  if (!same(next, y_before.size())) return false;
+  for (const Eigen::Index k : offsets) {
+    const double norm_before = y_before.segment<4>(k).norm();
+    if (norm_before == 0.0) return false;
+    dydt.segment<4>(k) *= y_after.segment<4>(k).norm() / norm_before;
+  }
+  return true;
+}
+
 void OdeSystem::project(double /*t*/, VecX& y) const {
   normalize_unit_quaternions(unit_quaternion_offsets(), y);
 }

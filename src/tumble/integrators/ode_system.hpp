@@ -43,6 +43,9 @@ class OdeSystem {
   // Offsets in y of unit quaternions (w, x, y, z) whose derivative f gives as
   // q' = q (x) (0, omega_B) / 2. Vector-space methods integrate them as plain components and
   // rely on project(); Lie-group methods read omega_B back from q' and rotate exactly.
+  // Contract: q' is linear in q and no other component of f depends on |q| (f uses the rotation
+  // of q / |q|). So rescaling q rescales its four derivatives by the same factor and nothing
+  // else: a method may renormalise q without evaluating f again.
   virtual std::span<const Eigen::Index> unit_quaternion_offsets() const { return {}; }
 
   // Put y back onto the manifold and the constraints after every accepted step and after every
@@ -66,5 +69,11 @@ class OdeSystem {
 
 // Normalises each unit quaternion of y in place.
 void normalize_unit_quaternions(std::span<const Eigen::Index> offsets, VecX& y);
+
+// After y_before became y_after: if they differ only by rescaled unit quaternions (as the default
+// project() leaves them), rescale those slots of dydt = f(t, y_before) to make it f(t, y_after),
+// by the contract above, and return true; otherwise return false (f must be evaluated again).
+bool rescale_quaternion_derivatives(std::span<const Eigen::Index> offsets, const VecX& y_before,
+                                    const VecX& y_after, VecX& dydt);
 
 }  // namespace tumble

@@ -1,7 +1,7 @@
 // tumble: rigid-body dynamics from a scenario file. `tumble run` integrates and writes the
 // trajectory and a summary; `tumble inertia` prints mass properties.
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 
 #include "commands.hpp"
 #include "exit_status.hpp"
@@ -24,8 +24,7 @@ int main(int argc, char** argv) {
       "stay a valid CSV), 5 output not writable.");
   run->set_version_flag("--version", version);
   run->add_option("scenario", run_args.scenario, "Scenario file (YAML)")->required();
-  run->add_option("--out", run_args.out_dir,
-                  "Directory for the output files (created if missing)")
+  run->add_option("--out", run_args.out_dir, "Directory for the output files (created if missing)")
       ->capture_default_str();
   run->add_option("--set", run_args.sets,
                   "Override a parameter: NAME=VALUE (VALUE may be an expression); repeatable");

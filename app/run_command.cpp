@@ -1,5 +1,5 @@
-#include <filesystem>
 #include <fmt/core.h>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 

@@ -91,8 +91,7 @@ void BM_Odeint(benchmark::State& state, double tolerance, MakeStepper make_stepp
   system.pack(std::span<const BodyState>(&s0, 1), y0);
   OdeintRhs rhs{&system, &y, &dydt};
   long evaluations = 0;
-  auto counting_rhs = [&](const std::array<double, 13>& x, std::array<double, 13>& dxdt,
-                          double t) {
+  auto counting_rhs = [&](const std::array<double, 13>& x, std::array<double, 13>& dxdt, double t) {
     ++evaluations;
     rhs(x, dxdt, t);
   };

@@ -181,14 +181,14 @@ TEST(BodyFrameFormulation, RescalingTheQuaternionRescalesOnlyItsDerivative) {
   system.derivative(0.0, y_scaled, f_scaled);
   system.derivative(0.0, y, f);
   VecX f_rescaled = f_scaled;
-  ASSERT_TRUE(rescale_quaternion_derivatives(system.unit_quaternion_offsets(), y_scaled, y,
-                                             f_rescaled));
+  ASSERT_TRUE(
+      rescale_quaternion_derivatives(system.unit_quaternion_offsets(), y_scaled, y, f_rescaled));
   EXPECT_LT((f_rescaled - f).cwiseAbs().maxCoeff(), 1e-15);
   // Any change outside the quaternion is refused: f must then be evaluated again.
   VecX y_moved = y;
   y_moved(0) += 1e-9;
-  EXPECT_FALSE(rescale_quaternion_derivatives(system.unit_quaternion_offsets(), y, y_moved,
-                                              f_rescaled));
+  EXPECT_FALSE(
+      rescale_quaternion_derivatives(system.unit_quaternion_offsets(), y, y_moved, f_rescaled));
 }
 
 // The chapter's momentum and energy formulas (6.6, table "3D") on one hand-computed state.

@@ -30,7 +30,8 @@ std::vector<PrismCase> load_cases() {
         rs.omega_W(k) = std::stod(s["omega_spatial_str"][k].as<std::string>());
         rs.omega_B(k) = std::stod(s["omega_body_str"][k].as<std::string>());
       }
-      for (int k = 0; k < 9; ++k) rs.R_WB(k / 3, k % 3) = std::stod(s["R_str"][k].as<std::string>());
+      for (int k = 0; k < 9; ++k)
+        rs.R_WB(k / 3, k % 3) = std::stod(s["R_str"][k].as<std::string>());
       pc.states.push_back(rs);
     }
     cases.push_back(pc);

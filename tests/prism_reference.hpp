@@ -17,11 +17,11 @@ struct ReferenceState {
 };
 
 struct PrismCase {
-  std::string id;          // unstable | stable_max | stable_min
-  Vec3 I0_diag;            // kg m^2 (the chapter's I0, without M/12)
-  Vec3 omega0_W;           // rad/s
-  double energy = 0.0;     // J
-  double L_norm = 0.0;     // kg m^2 / s
+  std::string id;                      // unstable | stable_max | stable_min
+  Vec3 I0_diag;                        // kg m^2 (the chapter's I0, without M/12)
+  Vec3 omega0_W;                       // rad/s
+  double energy = 0.0;                 // J
+  double L_norm = 0.0;                 // kg m^2 / s
   std::vector<ReferenceState> states;  // t = 20, 200, 2000
 };
 

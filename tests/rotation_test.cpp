@@ -45,8 +45,8 @@ TEST(Rotation, RodriguesMatchesTheChapterFormulaAndIsARotation) {
 
 TEST(Rotation, LogExpRoundTripsEverywhereIncludingNearZeroAndPi) {
   std::mt19937 rng(11);
-  const double angles[] = {0.0,        1e-300, 1e-12, 1e-8,         1e-4,         0.3,
-                           2.0,        3.0,    kPi - 1e-3, kPi - 1e-6, kPi - 1e-10, kPi};
+  const double angles[] = {0.0, 1e-300, 1e-12,      1e-8,       1e-4,        0.3,
+                           2.0, 3.0,    kPi - 1e-3, kPi - 1e-6, kPi - 1e-10, kPi};
   for (double theta : angles) {
     for (int i = 0; i < 50; ++i) {
       const Vec3 n = random_unit(rng);

@@ -17,7 +17,9 @@ Mat3 calc_inertia_about_com_W(const RigidBody& body, const Mat3& R_WB) {
   return R_WB * body.I_G_B * R_WB.transpose();
 }
 
-Vec3 calc_linear_momentum(const RigidBody& body, const BodyState& s) { return body.mass * s.v_G; }
+Vec3 calc_linear_momentum(const RigidBody& body, const BodyState& s) {
+  return body.mass * s.v_G;
+}
 
 Vec3 calc_angular_momentum_about_com_W(const RigidBody& body, const BodyState& s) {
   // I_G omega with I_G = R I_G_B R^T, evaluated as R (I_G_B (R^T omega)).
@@ -39,8 +41,7 @@ double calc_gravity_potential(const RigidBody& body, const BodyState& s, const V
 }
 
 SystemQuantities calc_system_quantities(std::span<const RigidBody> bodies,
-                                        std::span<const BodyState> states,
-                                        const Vec3& gravity_W) {
+                                        std::span<const BodyState> states, const Vec3& gravity_W) {
   SystemQuantities q;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     q.kinetic_energy += calc_kinetic_energy(bodies[i], states[i]);

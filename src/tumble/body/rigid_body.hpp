@@ -12,7 +12,7 @@ namespace tumble {
 
 struct RigidBody {
   std::string name;
-  double mass = 1.0;            // kg, > 0
+  double mass = 1.0;              // kg, > 0
   Mat3 I_G_B = Mat3::Identity();  // inertia about the COM, body axes, kg m^2 (SPD)
   Mat3 I_G_B_inv = Mat3::Identity();
 
@@ -20,10 +20,10 @@ struct RigidBody {
 };
 
 struct BodyState {
-  Vec3 r_G = Vec3::Zero();        // COM position, world, m
-  Mat3 R_WB = Mat3::Identity();   // rotation tensor: body axes -> world
-  Vec3 v_G = Vec3::Zero();        // COM velocity, world, m/s
-  Vec3 omega_W = Vec3::Zero();    // angular velocity, world, rad/s
+  Vec3 r_G = Vec3::Zero();       // COM position, world, m
+  Mat3 R_WB = Mat3::Identity();  // rotation tensor: body axes -> world
+  Vec3 v_G = Vec3::Zero();       // COM velocity, world, m/s
+  Vec3 omega_W = Vec3::Zero();   // angular velocity, world, rad/s
 };
 
 Mat3 calc_inertia_about_com_W(const RigidBody& body, const Mat3& R_WB);
@@ -37,14 +37,13 @@ double calc_gravity_potential(const RigidBody& body, const BodyState& s, const V
 
 // Sums over a system of bodies; L about the world origin.
 struct SystemQuantities {
-  double kinetic_energy = 0.0;    // J
-  double potential_energy = 0.0;  // J
-  double total_energy = 0.0;      // J
-  Vec3 linear_momentum = Vec3::Zero();             // kg m/s
+  double kinetic_energy = 0.0;                        // J
+  double potential_energy = 0.0;                      // J
+  double total_energy = 0.0;                          // J
+  Vec3 linear_momentum = Vec3::Zero();                // kg m/s
   Vec3 angular_momentum_about_origin = Vec3::Zero();  // kg m^2/s
 };
 SystemQuantities calc_system_quantities(std::span<const RigidBody> bodies,
-                                        std::span<const BodyState> states,
-                                        const Vec3& gravity_W);
+                                        std::span<const BodyState> states, const Vec3& gravity_W);
 
 }  // namespace tumble

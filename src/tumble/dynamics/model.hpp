@@ -14,9 +14,9 @@ struct AppliedLoad {
   enum class Kind { Force, Torque } kind = Kind::Force;
   std::string name;
   std::size_t body = 0;
-  Vec3 value = Vec3::Zero();     // N or N m: world axes, or body axes when body_frame
+  Vec3 value = Vec3::Zero();  // N or N m: world axes, or body axes when body_frame
   bool body_frame = false;
-  Vec3 p_GP_B = Vec3::Zero();    // force: point of application from the COM, body axes, m
+  Vec3 p_GP_B = Vec3::Zero();  // force: point of application from the COM, body axes, m
   double from = -std::numeric_limits<double>::infinity();  // s
   double to = std::numeric_limits<double>::infinity();     // s
 

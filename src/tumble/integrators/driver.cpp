@@ -1,8 +1,8 @@
 #include "tumble/integrators/driver.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <limits>
 
 namespace tumble {
@@ -13,9 +13,12 @@ bool crosses(double g_before, double g_after, EventDirection direction) {
   const bool rising = g_before < 0.0 && g_after >= 0.0;
   const bool falling = g_before > 0.0 && g_after <= 0.0;
   switch (direction) {
-    case EventDirection::Rising: return rising;
-    case EventDirection::Falling: return falling;
-    case EventDirection::Both: return rising || falling;
+    case EventDirection::Rising:
+      return rising;
+    case EventDirection::Falling:
+      return falling;
+    case EventDirection::Both:
+      return rising || falling;
   }
   return false;
 }
@@ -78,8 +81,8 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
     double ga = g_before(ki), gb = g_after(ki);
     int last_side = 0;  // +1: the last probe replaced b; -1: it replaced a
     for (int iteration = 0; iteration < 200; ++iteration) {
-      const double width_floor = 4.0 * std::numeric_limits<double>::epsilon() *
-                                 std::max({1.0, std::abs(a), std::abs(b)});
+      const double width_floor =
+          4.0 * std::numeric_limits<double>::epsilon() * std::max({1.0, std::abs(a), std::abs(b)});
       if (b - a <= width_floor) break;
       double c = b - gb * (b - a) / (gb - ga);
       if (!(c > a && c < b)) c = 0.5 * (a + b);  // keep strictly inside the bracket
@@ -110,9 +113,10 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
     if (outcome != StepOutcome::Ok) {
       report.failure =
           outcome == StepOutcome::StepSizeUnderflow
-              ? fmt::format("step size underflow at t = {:.17g} s: the solution is too stiff or "
-                            "singular there for rtol/atol",
-                            integrator.t())
+              ? fmt::format(
+                    "step size underflow at t = {:.17g} s: the solution is too stiff or "
+                    "singular there for rtol/atol",
+                    integrator.t())
               : fmt::format("the state became non-finite (NaN or infinity) after t = {:.17g} s",
                             integrator.t());
       break;

@@ -16,20 +16,20 @@
 namespace tumble {
 
 struct DriverOptions {
-  double output_every = 0.0;     // s; 0: one row per accepted step
-  long max_steps = 10'000'000;   // accepted steps before the run is declared failed
+  double output_every = 0.0;    // s; 0: one row per accepted step
+  long max_steps = 10'000'000;  // accepted steps before the run is declared failed
 };
 
 struct EventRecord {
   double t = 0.0;
-  std::size_t index = 0;   // into OdeSystem::events()
+  std::size_t index = 0;  // into OdeSystem::events()
   EventAction action = EventAction::Record;
 };
 
 struct IntegrationReport {
   bool completed = false;
   double t_reached = 0.0;
-  std::string failure;             // why it stopped early, with the time; empty if completed
+  std::string failure;  // why it stopped early, with the time; empty if completed
   std::vector<EventRecord> events;
   IntegratorStats stats;
 };

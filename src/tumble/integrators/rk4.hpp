@@ -11,34 +11,18 @@
 // step that would pass t_stop, or end within a tiny fraction (1e-8) of h short of it, ends on
 // t_stop exactly; the grid then restarts there. Continuous extension: the cubic Hermite
 // interpolant from (y, f) at both ends of the step (hermite.hpp).
-#include "tumble/integrators/integrator.hpp"
+#include "tumble/integrators/fixed_step_method.hpp"
 
 namespace tumble {
 
-class Rk4 final : public Integrator {
+class Rk4 final : public FixedStepMethod {
  public:
   // Throws std::invalid_argument unless control.fixed_step > 0; the tolerances are ignored.
-  explicit Rk4(const StepControl& control);
+  explicit Rk4(const StepControl& control) : FixedStepMethod("rk4", control) {}
 
   std::string_view name() const override { return "rk4"; }
   int order() const override { return 4; }
-  bool adaptive() const override { return false; }
-
-  void start(OdeSystem& system, double t0, const VecX& y0, double t_end) override;
-  void restart(double t, const VecX& y) override;
   StepOutcome step(double t_stop) override;
-  void dense_output(double t, VecX& y_out) const override;
-
- private:
-  OdeSystem* system_ = nullptr;
-  double direction_ = 1.0;  // +1 forward in time, -1 backward
-  double t_grid_ = 0.0;     // s, where the current grid of steps starts
-  long grid_steps_ = 0;     // steps taken on it
-  VecX f_previous_;         // f(t_previous, y_previous): k1 of the last step
-  VecX f_current_;          // f(t, y): the next step's k1
-  VecX k2_, k3_, k4_;
-  VecX y_stage_;
-  VecX y_new_;
 };
 
 }  // namespace tumble

@@ -3,9 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "tumble/integrators/hermite.hpp"
-#include "tumble/integrators/step_size_control.hpp"
-
 namespace tumble {
 
 namespace {
@@ -36,49 +33,22 @@ Vec4 quaternion_exp(const Vec3& theta) {
 
 }  // namespace
 
-Rkmk4::Rkmk4(const StepControl& control) {
-  step_control::validate_fixed(name(), control);
-  h_ = control.fixed_step;
-}
-
-void Rkmk4::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
-  step_control::validate_start(name(), system, t0, y0, t_end);
-  system_ = &system;
+void Rkmk4::prepare(OdeSystem& system, Eigen::Index n) {
   quaternion_offsets_ = system.unit_quaternion_offsets();
   for (const Eigen::Index offset : quaternion_offsets_) {
-    if (offset < 0 || offset + 4 > y0.size()) {
+    if (offset < 0 || offset + 4 > n) {
       throw std::invalid_argument(
           "rkmk4: a unit quaternion offset of the system lies outside the state; fix the "
           "system's unit_quaternion_offsets()");
     }
   }
-  const Eigen::Index n = y0.size();
   const auto slots = static_cast<Eigen::Index>(quaternion_offsets_.size());
-  f_previous_.setZero(n);
-  f_current_.setZero(n);
-  k2_.setZero(n);
-  k3_.setZero(n);
-  k4_.setZero(n);
-  y_stage_.setZero(n);
-  y_new_.setZero(n);
   for (Eigen::Matrix3Xd& slope : slopes_) slope.setZero(3, slots);
   theta_.setZero(3, slots);
-  direction_ = t_end > t0 ? 1.0 : -1.0;
-  stats_ = IntegratorStats{};
-  restart(t0, y0);
 }
 
-void Rkmk4::restart(double t, const VecX& y) {
-  if (system_ == nullptr) throw std::logic_error("rkmk4: restart() before start()");
-  if (y.size() != f_current_.size()) {
-    throw std::invalid_argument("rkmk4: restart() with a wrong-size y");
-  }
-  t_ = t_previous_ = t_grid_ = t;
-  grid_steps_ = 0;
-  y_ = y;
-  y_previous_ = y;
-  system_->derivative(t_, y_, f_current_);
-  ++stats_.rhs_evaluations;
+void Rkmk4::finish_dense_output(VecX& y_out) const {
+  normalize_unit_quaternions(quaternion_offsets_, y_out);
 }
 
 void Rkmk4::calc_lie_algebra_slopes(const VecX& y, const VecX& f, const Eigen::Matrix3Xd& theta,
@@ -108,10 +78,7 @@ void Rkmk4::rotate_quaternions(const Eigen::Matrix3Xd& theta, VecX& y_out) const
 }
 
 StepOutcome Rkmk4::step(double t_stop) {
-  if (system_ == nullptr) throw std::logic_error("rkmk4: step() before start()");
-  step_control::require_ahead(name(), t_, t_stop, direction_);
-  const step_control::FixedStepEnd end =
-      step_control::next_fixed_step_end(t_grid_, grid_steps_, h_, direction_, t_stop);
+  const step_control::FixedStepEnd end = begin_step(t_stop);
   const double h = end.t_new - t_;
   const double t_half = t_ + 0.5 * h;
 
@@ -142,33 +109,7 @@ StepOutcome Rkmk4::step(double t_stop) {
   theta_ = (h / 6.0) * (slopes_[0] + 2.0 * slopes_[1] + 2.0 * slopes_[2] + slopes_[3]);
   y_new_ = y_ + (h / 6.0) * (k1 + 2.0 * k2_ + 2.0 * k3_ + k4_);
   rotate_quaternions(theta_, y_new_);
-  if (!y_new_.allFinite()) return StepOutcome::NonFiniteState;
-
-  y_previous_.swap(y_);
-  y_.swap(y_new_);
-  system_->project(end.t_new, y_);
-  f_previous_.swap(f_current_);
-  system_->derivative(end.t_new, y_, f_current_);
-  ++stats_.rhs_evaluations;
-  t_previous_ = t_;
-  t_ = end.t_new;
-  if (end.lands) {
-    t_grid_ = end.t_new;
-    grid_steps_ = 0;
-  } else {
-    ++grid_steps_;
-  }
-  ++stats_.accepted_steps;
-  return StepOutcome::Ok;
-}
-
-void Rkmk4::dense_output(double t, VecX& y_out) const {
-  if (t_ == t_previous_) {  // no step since start or restart
-    y_out = y_;
-    return;
-  }
-  hermite_interpolate(t_previous_, y_previous_, f_previous_, t_, y_, f_current_, t, y_out);
-  normalize_unit_quaternions(quaternion_offsets_, y_out);
+  return accept_step(end);
 }
 
 }  // namespace tumble

@@ -30,23 +30,22 @@
 #include <array>
 #include <span>
 
-#include "tumble/integrators/integrator.hpp"
+#include "tumble/integrators/fixed_step_method.hpp"
 
 namespace tumble {
 
-class Rkmk4 final : public Integrator {
+class Rkmk4 final : public FixedStepMethod {
  public:
   // Throws std::invalid_argument unless control.fixed_step > 0; the tolerances are ignored.
-  explicit Rkmk4(const StepControl& control);
+  explicit Rkmk4(const StepControl& control) : FixedStepMethod("rkmk4", control) {}
 
   std::string_view name() const override { return "rkmk4"; }
   int order() const override { return 4; }
-  bool adaptive() const override { return false; }
-
-  void start(OdeSystem& system, double t0, const VecX& y0, double t_end) override;
-  void restart(double t, const VecX& y) override;
   StepOutcome step(double t_stop) override;
-  void dense_output(double t, VecX& y_out) const override;
+
+ protected:
+  void prepare(OdeSystem& system, Eigen::Index n) override;
+  void finish_dense_output(VecX& y_out) const override;
 
  private:
   // K_i = dexp^{-1}_{-Theta}(omega_B) for every quaternion slot, omega_B read from (y, f) there.
@@ -55,16 +54,7 @@ class Rkmk4 final : public Integrator {
   // y_out's quaternion slots = q_n (x) exp(theta) (other components untouched).
   void rotate_quaternions(const Eigen::Matrix3Xd& theta, VecX& y_out) const;
 
-  OdeSystem* system_ = nullptr;
   std::span<const Eigen::Index> quaternion_offsets_;
-  double direction_ = 1.0;  // +1 forward in time, -1 backward
-  double t_grid_ = 0.0;     // s, where the current grid of steps starts
-  long grid_steps_ = 0;     // steps taken on it
-  VecX f_previous_;         // f(t_previous, y_previous): k1 of the last step
-  VecX f_current_;          // f(t, y): the next step's k1
-  VecX k2_, k3_, k4_;
-  VecX y_stage_;
-  VecX y_new_;
   std::array<Eigen::Matrix3Xd, 4> slopes_;  // K_1..K_4, one column per quaternion slot
   Eigen::Matrix3Xd theta_;                  // Theta_i, one column per quaternion slot
 };

@@ -63,7 +63,9 @@ Vec3 log_so3(const Mat3& R) {
   return theta * n;
 }
 
-Mat3 rotation_from_quaternion(const Quat& q) { return q.normalized().toRotationMatrix(); }
+Mat3 rotation_from_quaternion(const Quat& q) {
+  return q.normalized().toRotationMatrix();
+}
 
 Quat quaternion_from_rotation(const Mat3& R) {
   Quat q(R);

@@ -36,7 +36,6 @@ double orthonormality_error(const Mat3& R);
 // Velocity of body point B from body point A: v_B = v_A + omega x r_AB (all in one frame).
 Vec3 velocity_of_point(const Vec3& v_A, const Vec3& omega, const Vec3& r_AB);
 // Acceleration of body point B from A: a_B = a_A + alpha x r_AB + omega x (omega x r_AB).
-Vec3 acceleration_of_point(const Vec3& a_A, const Vec3& omega, const Vec3& alpha,
-                           const Vec3& r_AB);
+Vec3 acceleration_of_point(const Vec3& a_A, const Vec3& omega, const Vec3& alpha, const Vec3& r_AB);
 
 }  // namespace tumble

@@ -1,8 +1,8 @@
 #include "tumble/output/trajectory_csv.hpp"
 
+#include <unistd.h>
 #include <stdexcept>
 #include <system_error>
-#include <unistd.h>
 
 namespace tumble {
 
@@ -29,8 +29,8 @@ TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path,
   temporary_path_ += fmt::format(".partial-{}", static_cast<long>(::getpid()));
   file_ = std::fopen(temporary_path_.c_str(), "wb");
   if (file_ == nullptr) {
-    throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(),
-                                         std::generic_category().message(errno)));
+    throw std::runtime_error(
+        fmt::format("cannot write {}: {}", path_.string(), std::generic_category().message(errno)));
   }
   const std::vector<std::string> columns = trajectory_columns(body_names);
   fmt::memory_buffer header;

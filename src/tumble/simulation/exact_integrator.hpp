@@ -24,7 +24,7 @@ class ExactIntegrator final : public Integrator {
 
  private:
   const Formulation* formulation_ = nullptr;
-  double t_start_ = 0.0;                        // time of the initial (or restart) state
+  double t_start_ = 0.0;  // time of the initial (or restart) state
   std::vector<BodyState> start_states_;
   std::vector<TorqueFreeMotion> rotations_;
   mutable std::vector<BodyState> scratch_states_;  // sized once: dense_output does not allocate

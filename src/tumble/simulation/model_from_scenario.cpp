@@ -27,8 +27,8 @@ Model build_model(const Scenario& scenario) {
       throw std::logic_error("load '" + spec.name + "' names no body; the reader checks this");
     }
     AppliedLoad load;
-    load.kind = spec.kind == LoadSpec::Kind::Force ? AppliedLoad::Kind::Force
-                                                   : AppliedLoad::Kind::Torque;
+    load.kind =
+        spec.kind == LoadSpec::Kind::Force ? AppliedLoad::Kind::Force : AppliedLoad::Kind::Torque;
     load.name = spec.name;
     load.body = static_cast<std::size_t>(it - scenario.bodies.begin());
     load.value = spec.value;

@@ -62,8 +62,8 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserve
           std::max(c.max_relative_angular_momentum_drift, std::abs(L - L0) / L0);
     }
     for (const BodyState& s : states) {
-      c.max_orthonormality_error = std::max(c.max_orthonormality_error,
-                                            orthonormality_error(s.R_WB));
+      c.max_orthonormality_error =
+          std::max(c.max_orthonormality_error, orthonormality_error(s.R_WB));
     }
     ++result.rows;
     observe(t, states, q);

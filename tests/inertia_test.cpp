@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "expect_throw.hpp"
 #include "tumble/inertia/mass_properties.hpp"
 #include "tumble/inertia/planar.hpp"
 #include "tumble/inertia/shapes.hpp"
@@ -68,17 +69,7 @@ double max_abs(const Mat3& A) {
   return A.cwiseAbs().maxCoeff();
 }
 
-// Runs f, expects it to throw E, and checks that the message contains `expected`.
-template <typename E>
-void expect_throw_containing(const std::function<void()>& f, const std::string& expected) {
-  try {
-    f();
-    ADD_FAILURE() << "expected an exception containing \"" << expected << "\"; nothing thrown";
-  } catch (const E& error) {
-    EXPECT_NE(std::string(error.what()).find(expected), std::string::npos)
-        << "message \"" << error.what() << "\" lacks \"" << expected << "\"";
-  }
-}
+using test::expect_throw_containing;
 
 Vec3 random_vector(std::mt19937& rng, double scale) {
   std::uniform_real_distribution<double> u(-scale, scale);

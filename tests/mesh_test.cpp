@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "expect_throw.hpp"
 #include "tumble/inertia/mass_properties.hpp"
 #include "tumble/inertia/mesh.hpp"
 #include "tumble/inertia/shapes.hpp"
@@ -32,16 +33,7 @@ std::string mesh_path(const std::string& name) {
   return std::string(TUMBLE_TEST_DATA_DIR) + "/meshes/" + name;
 }
 
-template <typename E>
-void expect_throw_containing(const std::function<void()>& f, const std::string& expected) {
-  try {
-    f();
-    ADD_FAILURE() << "expected an exception containing \"" << expected << "\"; nothing thrown";
-  } catch (const E& error) {
-    EXPECT_NE(std::string(error.what()).find(expected), std::string::npos)
-        << "message \"" << error.what() << "\" lacks \"" << expected << "\"";
-  }
-}
+using test::expect_throw_containing;
 
 Shape solid(ShapeKind kind, double radius, double length_or_height = 0.0) {
   Shape s;

@@ -1,22 +1,16 @@
+#include "tumble/inertia/message_format.hpp"
 #include "tumble/inertia/mass_properties.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 #include <Eigen/Eigenvalues>
 
 namespace tumble {
 namespace {
 
-// Six significant digits: enough to see what is wrong, short enough to read in a message.
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << std::setprecision(6) << value;
-  return out.str();
-}
+using inertia_detail::format_number;
 
 constexpr std::array<char, 3> kAxisNames = {'x', 'y', 'z'};
 

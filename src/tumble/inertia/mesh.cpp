@@ -1,10 +1,9 @@
+#include "tumble/inertia/message_format.hpp"
 #include "tumble/inertia/mesh.hpp"
 
 #include <cmath>
-#include <iomanip>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <utility>
 
 namespace tumble {
@@ -12,11 +11,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << std::setprecision(6) << value;
-  return out.str();
-}
+using inertia_detail::format_number;
 
 // "1 edge belongs" / "4 edges belong"
 std::string edges_belong(int count) {

@@ -1,10 +1,9 @@
+#include "tumble/inertia/message_format.hpp"
 #include "tumble/inertia/shapes.hpp"
 
 #include <array>
 #include <cmath>
-#include <iomanip>
 #include <numbers>
-#include <sstream>
 #include <utility>
 
 #include "tumble/inertia/mesh.hpp"
@@ -29,11 +28,7 @@ constexpr std::array<std::pair<ShapeKind, std::string_view>, 12> kShapeNames = {
     {ShapeKind::Mesh, "mesh"},
 }};
 
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << std::setprecision(6) << value;
-  return out.str();
-}
+using inertia_detail::format_number;
 
 // "cylinder radius must be > 0, got -1"
 void require_positive(const Shape& shape, std::string_view dimension, double value) {

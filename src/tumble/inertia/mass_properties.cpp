@@ -1,5 +1,5 @@
-#include "tumble/inertia/message_format.hpp"
 #include "tumble/inertia/mass_properties.hpp"
+#include "tumble/inertia/message_format.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,5 +1,5 @@
-#include "tumble/inertia/message_format.hpp"
 #include "tumble/inertia/mesh.hpp"
+#include "tumble/inertia/message_format.hpp"
 
 #include <cmath>
 #include <map>

@@ -7,6 +7,8 @@
 
 namespace tumble::inertia_detail {
 
-inline std::string format_number(double value) { return fmt::format("{:.6g}", value); }
+inline std::string format_number(double value) {
+  return fmt::format("{:.6g}", value);
+}
 
 }  // namespace tumble::inertia_detail

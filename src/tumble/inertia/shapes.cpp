@@ -1,5 +1,5 @@
-#include "tumble/inertia/message_format.hpp"
 #include "tumble/inertia/shapes.hpp"
+#include "tumble/inertia/message_format.hpp"
 
 #include <array>
 #include <cmath>

@@ -10,6 +10,7 @@ struct RunArguments {
   std::string scenario;
   std::string out_dir = ".";
   std::vector<std::string> sets;  // NAME=VALUE
+  bool animate = false;           // also write the animation page (output.animation does too)
 };
 
 struct InertiaArguments {
@@ -17,8 +18,20 @@ struct InertiaArguments {
   std::string body;  // empty: every body
 };
 
+// tumble plot: columns of a CSV against another, drawn by gnuplot (docs/plotting.md).
+struct PlotArguments {
+  std::string csv;
+  std::vector<std::string> columns;  // y columns, by header name
+  std::string x_column = "t";
+  std::string output;  // .png or .svg
+  std::string title;   // empty: none
+  int width = 800;     // pixels
+  int height = 500;    // pixels
+};
+
 int run_command(const RunArguments& args);
 int inertia_command(const InertiaArguments& args);
+int plot_command(const PlotArguments& args);
 
 // Splits each NAME=VALUE; throws std::invalid_argument for a malformed one.
 std::vector<ParameterOverride> parse_overrides(const std::vector<std::string>& sets);

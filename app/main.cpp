@@ -18,8 +18,9 @@ int main(int argc, char** argv) {
   RunArguments run_args;
   CLI::App* run = app.add_subcommand(
       "run",
-      "Integrate a scenario; write its trajectory CSV and print a summary (steps, evaluations, "
-      "wall time, drift of E and |L|, largest |R^T R - I|).\nExit status: 0 done, 2 bad command "
+      "Integrate a scenario; write its trajectory CSV (and with --animate an HTML page that "
+      "animates it) and print a summary (steps, evaluations, wall time, drift of E and |L|, "
+      "largest |R^T R - I|).\nExit status: 0 done, 2 bad command "
       "line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed (the rows so far "
       "stay a valid CSV), 5 output not writable.");
   run->set_version_flag("--version", version);
@@ -28,6 +29,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--set", run_args.sets,
                   "Override a parameter: NAME=VALUE (VALUE may be an expression); repeatable");
+  run->add_flag("--animate", run_args.animate,
+                "Also write the animation page: one self-contained HTML file (3D view of the "
+                "bodies, plots of omega, E and |L|) named like the trajectory with .html, or "
+                "output.animation");
 
   InertiaArguments inertia_args;
   CLI::App* inertia = app.add_subcommand(
@@ -37,6 +42,31 @@ int main(int argc, char** argv) {
   inertia->set_version_flag("--version", version);
   inertia->add_option("scenario", inertia_args.scenario, "Scenario file (YAML)")->required();
   inertia->add_option("body", inertia_args.body, "Only this body");
+
+  PlotArguments plot_args;
+  CLI::App* plot = app.add_subcommand(
+      "plot",
+      "Plot columns of a CSV (a trajectory) against t or another column into a PNG or SVG, with "
+      "gnuplot (docs/plotting.md). The figure appears only when complete.\nExit status: 0 done, "
+      "2 bad command line (unreadable CSV, no such column, not .png/.svg), 5 output could not be "
+      "produced (gnuplot missing or failed, output not writable).");
+  plot->set_version_flag("--version", version);
+  plot->add_option("csv", plot_args.csv, "CSV file with a header row")->required();
+  plot->add_option("--columns", plot_args.columns, "Columns to plot, by name: A,B,...")
+      ->required()
+      ->delimiter(',')
+      ->allow_extra_args(false);  // one argument each time: `--columns A,B CSV` leaves CSV
+  plot->add_option("-x,--x-column", plot_args.x_column, "Column on the x axis")
+      ->capture_default_str();
+  plot->add_option("-o,--output", plot_args.output, "Figure to write: a .png or .svg file")
+      ->required();
+  plot->add_option("--title", plot_args.title, "Title above the plot");
+  plot->add_option("--width", plot_args.width, "Width in pixels")
+      ->check(CLI::Range(16, 20000))
+      ->capture_default_str();
+  plot->add_option("--height", plot_args.height, "Height in pixels")
+      ->check(CLI::Range(16, 20000))
+      ->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -51,5 +81,6 @@ int main(int argc, char** argv) {
     return kBadCommandLine;
   }
   if (run->parsed()) return run_command(run_args);
+  if (plot->parsed()) return plot_command(plot_args);
   return inertia_command(inertia_args);
 }

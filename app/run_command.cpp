@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "tumble/output/animation_html.hpp"
 #include "tumble/output/trajectory_csv.hpp"
 #include "tumble/simulation/simulation.hpp"
 
@@ -25,7 +26,8 @@ std::vector<ParameterOverride> parse_overrides(const std::vector<std::string>& s
 namespace {
 
 void print_summary(const Scenario& scenario, const PreparedSimulation& simulation,
-                   const SimulationResult& result, const std::filesystem::path& trajectory) {
+                   const SimulationResult& result, const std::filesystem::path& trajectory,
+                   const std::optional<std::filesystem::path>& animation) {
   const SimulateSpec& sim = scenario.simulate;
   const IntegratorStats& stats = result.report.stats;
   fmt::print("{} ({})\n", scenario.name, scenario.file);
@@ -52,6 +54,21 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   fmt::print("  |R^T R - I|    max {:.3e}\n", result.conservation.max_orthonormality_error);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,
              result.report.t_reached);
+  if (animation) fmt::print("  animation      {}\n", animation->string());
+}
+
+// The page's path: output.animation under --out, else with --animate the trajectory's name
+// with .html beside it; none when neither asks for it.
+std::optional<std::filesystem::path> animation_path(const RunArguments& args,
+                                                    const Scenario& scenario,
+                                                    const std::filesystem::path& trajectory) {
+  if (!scenario.output.animation.empty()) {
+    return std::filesystem::path(args.out_dir) / scenario.output.animation;
+  }
+  if (!args.animate) return std::nullopt;
+  std::filesystem::path page = trajectory;
+  page.replace_extension(".html");
+  return page;
 }
 
 }  // namespace
@@ -92,17 +109,27 @@ int run_command(const RunArguments& args) {
     return kOutputError;
   }
 
+  // Rows are kept in memory only for the animation page.
+  const std::optional<std::filesystem::path> animation = animation_path(args, scenario, trajectory);
+  std::optional<RecordedTrajectory> recorded;
+  if (animation) recorded.emplace(scenario.bodies.size());
+
   const SimulationResult result = run_simulation(
       *simulation, [&](double t, std::span<const BodyState> states, const SystemQuantities& q) {
         writer->write_row(t, states, q);
+        if (recorded) recorded->record(t, states, q);
       });
   try {
     writer->finish();
+    if (animation && recorded->rows() > 0) {
+      std::filesystem::create_directories(animation->parent_path());
+      write_animation_html(*animation, make_animation_scene(scenario), *recorded);
+    }
   } catch (const std::exception& e) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
     return kOutputError;
   }
-  print_summary(scenario, *simulation, result, trajectory);
+  print_summary(scenario, *simulation, result, trajectory, animation);
   if (!result.report.completed) {
     fmt::print(stderr, "tumble run: integration failed: {}\n", result.report.failure);
     return kIntegrationFailed;

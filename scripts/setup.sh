@@ -6,7 +6,12 @@ packages=(
   g++ cmake ninja-build pkg-config clang-format
   libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev libmuparser-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  chromium gnuplot-nox
 )
+# Node.js and npm build the animation page. A machine may already have them from elsewhere
+# (nodesource's nodejs carries its own npm); install Debian's only where the commands are missing.
+command -v node >/dev/null 2>&1 || packages+=(nodejs)
+command -v npm >/dev/null 2>&1 || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

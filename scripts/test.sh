@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: formatting, the Release suite, the same suite under
-# AddressSanitizer + UndefinedBehaviorSanitizer, and the main example end to end.
+# AddressSanitizer + UndefinedBehaviorSanitizer, the main example end to end, and the animation
+# page in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -8,6 +9,9 @@ bash scripts/setup.sh
 echo "== clang-format"
 mapfile -t sources < <(git ls-files '*.cpp' '*.hpp' 2>/dev/null || find src app tests bench -name '*.[ch]pp')
 clang-format --dry-run --Werror "${sources[@]}"
+
+echo "== npm ci in web/ (the animation page's three.js, uPlot, esbuild; the browser test's playwright-core)"
+(cd web && npm ci --no-audit --no-fund --loglevel=error)
 
 echo "== Release build and tests"
 bash scripts/build.sh release
@@ -20,5 +24,9 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 
 echo "== The main example"
 out=$(mktemp -d)
-build/release/tumble run examples/tumbling_prism.yaml --out "$out"
+build/release/tumble run examples/tumbling_prism.yaml --out "$out" --animate
 test -s "$out/tumbling_prism.csv"
+test -s "$out/tumbling_prism.html"
+
+echo "== The animation page in headless Chromium"
+TUMBLE_EXE=build/release/tumble TUMBLE_ARTIFACTS=build/release/artifacts node --test tests/browser/

@@ -2,6 +2,8 @@
 // messages, atomic output and determinism, by running the real executable.
 #include <gtest/gtest.h>
 
+#include "run_tumble.hpp"
+
 #include <sys/wait.h>
 #include <array>
 #include <cstdio>
@@ -18,24 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
-
-CommandResult run_tumble(const std::string& arguments) {
-  const std::string command = std::string(TUMBLE_EXE) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer;
-  while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) {
-    result.out += buffer.data();
-  }
-  const int raw = pclose(pipe);
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return result;
-}
+using test::CommandResult;
+using test::run_tumble;
 
 std::string example(const std::string& name) {
   return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + name;

@@ -47,6 +47,8 @@ PartSpec read_part(const Reader& reader, const Field& field, const std::filesyst
   if (const auto f = map.find("position")) position = reader.vec3(*f);
   if (const auto f = map.find("orientation")) R_BP = read_orientation(reader, *f);
   part.mass_properties = express_in_parent(own, R_BP, position);
+  part.position_B = position;
+  part.R_BP = R_BP;
   return part;
 }
 

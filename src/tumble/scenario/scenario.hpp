@@ -41,6 +41,8 @@ struct PartSpec {
   std::string name;  // "parts[2]" when not named
   Shape shape;
   MassProperties mass_properties;  // resolved, in the body's frame
+  Vec3 position_B = Vec3::Zero();  // origin of the part's frame in the body's frame, m
+  Mat3 R_BP = Mat3::Identity();    // orientation: part axes -> body axes
 };
 
 struct BodySpec {
@@ -90,6 +92,7 @@ struct SimulateSpec {
 
 struct OutputSpec {
   std::string trajectory;  // relative path; default "<scenario file stem>.csv"
+  std::string animation;   // relative path of the animation page; empty: none (unless --animate)
 };
 
 struct Scenario {

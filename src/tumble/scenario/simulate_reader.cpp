@@ -1,5 +1,5 @@
 // `simulate:` (how long, by which method, to what tolerance) and `output:` (where the trajectory
-// goes). Defaults live in SimulateSpec and OutputSpec.
+// and the animation page go). Defaults live in SimulateSpec and OutputSpec.
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
@@ -108,30 +108,45 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
   return sim;
 }
 
+namespace {
+
+// A path relative to the output directory: not empty, not absolute, not through "..".
+std::string read_relative_path(const Reader& reader, const Field& field, std::string_view example) {
+  const std::string text = reader.text(field);
+  const std::filesystem::path path(text);
+  if (text.empty()) {
+    reader.fail_at_value(field, fmt::format("empty path; give a file name such as {}", example));
+  }
+  if (path.has_root_path()) {
+    reader.fail_at_value(field, "'" + text +
+                                    "' is an absolute path; give a path relative to the "
+                                    "output directory (choose that with --out)");
+  }
+  for (const auto& part : path) {
+    if (part == "..") {
+      reader.fail_at_value(field, "'" + text +
+                                      "' leaves the output directory through '..'; give "
+                                      "a path inside it (choose the directory with --out)");
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
 OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
                        const std::string& file_stem) {
   OutputSpec output;
   output.trajectory = file_stem + ".csv";
   if (!field) return output;
-  const MapReader map(reader, *field, "the output's settings {trajectory: file.csv}");
-  map.allow_only({"trajectory"}, "output");
+  const MapReader map(reader, *field,
+                      "the output's settings {trajectory: file.csv, animation: file.html}");
+  map.allow_only({"trajectory", "animation"}, "output");
   if (const auto f = map.find("trajectory")) {
-    const std::string text = reader.text(*f);
-    const std::filesystem::path path(text);
-    if (text.empty()) reader.fail_at_value(*f, "empty path; give a file name such as run.csv");
-    if (path.has_root_path()) {
-      reader.fail_at_value(*f, "'" + text +
-                                   "' is an absolute path; give a path relative to the "
-                                   "output directory (choose that with --out)");
-    }
-    for (const auto& part : path) {
-      if (part == "..") {
-        reader.fail_at_value(*f, "'" + text +
-                                     "' leaves the output directory through '..'; give "
-                                     "a path inside it (choose the directory with --out)");
-      }
-    }
-    output.trajectory = text;
+    output.trajectory = read_relative_path(reader, *f, "run.csv");
+  }
+  if (const auto f = map.find("animation")) {
+    output.animation = read_relative_path(reader, *f, "run.html");
   }
   return output;
 }

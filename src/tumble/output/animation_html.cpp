@@ -1,0 +1,397 @@
+#include "tumble/output/animation_html.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+
+#include "tumble/inertia/mesh.hpp"
+#include "tumble/math/rotation.hpp"
+#include "tumble/output/animation_assets.hpp"
+
+namespace tumble {
+namespace {
+
+// Meshes larger than this are drawn as their bounding box: the page stays small and fast.
+constexpr std::size_t kMaxMeshTriangles = 200'000;
+
+// Radius of a sphere about the part's origin that holds the drawn part, m.
+double part_radius(const AnimationPart& part) {
+  const Shape& s = part.shape;
+  switch (s.kind) {
+    case ShapeKind::Box:
+    case ShapeKind::Plate:
+      return 0.5 * s.size.norm();
+    case ShapeKind::Cylinder:
+      return std::hypot(s.radius, 0.5 * s.length);
+    case ShapeKind::Tube:
+      return std::hypot(s.outer_radius, 0.5 * s.length);
+    case ShapeKind::Rod:
+      return 0.5 * s.length;
+    case ShapeKind::Ring:
+    case ShapeKind::Disk:
+    case ShapeKind::Sphere:
+    case ShapeKind::Shell:
+      return s.radius;
+    case ShapeKind::Cone:
+      return std::max(std::hypot(s.radius, 0.25 * s.height), 0.75 * s.height);
+    case ShapeKind::Mesh:
+      return std::max(part.box_min.norm(), part.box_max.norm());
+    case ShapeKind::Point:
+      return 0.0;
+  }
+  return 0.0;
+}
+
+// A mesh in its part frame (the file's axes moved to the mesh's COM), or its bounding box.
+void load_mesh_part(AnimationPart& part) {
+  try {
+    const TriangleMesh mesh = load_mesh(part.shape.mesh_file);
+    const Vec3 com = mesh_mass_properties(mesh, 1.0).com;
+    part.box_min = Vec3::Constant(std::numeric_limits<double>::infinity());
+    part.box_max = -part.box_min;
+    for (const Vec3& v : mesh.vertices) {
+      part.box_min = part.box_min.cwiseMin(v - com);
+      part.box_max = part.box_max.cwiseMax(v - com);
+    }
+    if (mesh.triangles.size() > kMaxMeshTriangles) {
+      part.note = fmt::format("{} triangles, more than the page draws ({})", mesh.triangles.size(),
+                              kMaxMeshTriangles);
+      return;
+    }
+    part.vertices.reserve(mesh.vertices.size());
+    for (const Vec3& v : mesh.vertices) part.vertices.push_back(v - com);
+    part.triangles = mesh.triangles;
+  } catch (const std::exception& e) {
+    part.box_min = Vec3::Constant(-0.05);
+    part.box_max = Vec3::Constant(0.05);
+    part.note = e.what();
+  }
+}
+
+// ---- Encoding ------------------------------------------------------------------------------
+
+void append_base64(std::string& out, std::span<const unsigned char> bytes) {
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::size_t i = 0;
+  for (; i + 3 <= bytes.size(); i += 3) {
+    const unsigned n = (unsigned{bytes[i]} << 16) | (unsigned{bytes[i + 1]} << 8) | bytes[i + 2];
+    out += kAlphabet[(n >> 18) & 63];
+    out += kAlphabet[(n >> 12) & 63];
+    out += kAlphabet[(n >> 6) & 63];
+    out += kAlphabet[n & 63];
+  }
+  if (i < bytes.size()) {
+    const bool two = i + 1 < bytes.size();
+    const unsigned n = (unsigned{bytes[i]} << 16) | (two ? unsigned{bytes[i + 1]} << 8 : 0u);
+    out += kAlphabet[(n >> 18) & 63];
+    out += kAlphabet[(n >> 12) & 63];
+    out += two ? kAlphabet[(n >> 6) & 63] : '=';
+    out += '=';
+  }
+}
+
+// The bytes of numbers as the page's typed arrays read them (little-endian, as x86 and ARM).
+template <typename T>
+void append_base64_of(std::string& out, const std::vector<T>& values) {
+  std::vector<unsigned char> bytes(values.size() * sizeof(T));
+  if (!values.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  out += '"';
+  append_base64(out, bytes);
+  out += '"';
+}
+
+std::string number(double x) {
+  return std::isfinite(x) ? fmt::format("{:.9g}", x) : "0";
+}
+
+std::string vec(const Vec3& v) {
+  return fmt::format("[{},{},{}]", number(v.x()), number(v.y()), number(v.z()));
+}
+
+// Three.js order (x, y, z, w).
+std::string quaternion(const Mat3& R) {
+  const Quat q = quaternion_from_rotation(R);
+  return fmt::format("[{},{},{},{}]", number(q.x()), number(q.y()), number(q.z()), number(q.w()));
+}
+
+std::string html_text(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+void append_part(std::string& json, const AnimationPart& part) {
+  const Shape& s = part.shape;
+  json +=
+      fmt::format(R"({{"name":{},"shape":{},"position":{},"quaternion":{})", json_string(part.name),
+                  json_string(shape_name(s.kind)), vec(part.position_GP_B), quaternion(part.R_BP));
+  switch (s.kind) {
+    case ShapeKind::Box:
+    case ShapeKind::Plate:
+      json += fmt::format(R"(,"size":{})", vec(s.size));
+      break;
+    case ShapeKind::Mesh:
+      json += fmt::format(R"(,"size":{},"centre":{},"note":{})", vec(part.box_max - part.box_min),
+                          vec(0.5 * (part.box_min + part.box_max)), json_string(part.note));
+      if (!part.triangles.empty()) {
+        std::vector<float> vertices;
+        for (const Vec3& v : part.vertices) {
+          for (int k = 0; k < 3; ++k) vertices.push_back(static_cast<float>(v(k)));
+        }
+        std::vector<std::uint32_t> indices;
+        for (const auto& t : part.triangles) {
+          for (const int k : t) indices.push_back(static_cast<std::uint32_t>(k));
+        }
+        json += R"(,"vertices":)";
+        append_base64_of(json, vertices);
+        json += R"(,"triangles":)";
+        append_base64_of(json, indices);
+      }
+      break;
+    default:
+      json +=
+          fmt::format(R"(,"radius":{},"length":{},"inner_radius":{},"outer_radius":{},"height":{})",
+                      number(s.radius), number(s.length), number(s.inner_radius),
+                      number(s.outer_radius), number(s.height));
+  }
+  json += '}';
+}
+
+// The page's data: see web/src/animation.js for the layout it reads.
+std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& rows) {
+  const std::size_t n = rows.rows();
+  const std::size_t nb = rows.body_count();
+  std::string json = fmt::format(R"({{"format":"tumble-animation-1","name":{},"rows":{},)",
+                                 json_string(scene.name), n);
+  json += R"("bodies":[)";
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const AnimationBody& body = scene.bodies[b];
+    json += fmt::format(R"({}{{"name":{},"extent":{},"parts":[)", b == 0 ? "" : ",",
+                        json_string(body.name), number(body.extent));
+    for (std::size_t p = 0; p < body.parts.size(); ++p) {
+      if (p > 0) json += ',';
+      append_part(json, body.parts[p]);
+    }
+    json += "]}";
+  }
+  json += "],";
+
+  std::vector<double> time(n);
+  std::vector<double> system;
+  system.reserve(4 * n);
+  std::vector<float> body_rows;
+  body_rows.reserve(16 * n * nb);
+  const auto put = [&](const Vec3& v) {
+    for (int k = 0; k < 3; ++k) body_rows.push_back(static_cast<float>(v(k)));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    time[i] = rows.t(i);
+    const SystemQuantities& q = rows.quantities(i);
+    system.insert(system.end(), {q.kinetic_energy, q.potential_energy, q.total_energy,
+                                 q.angular_momentum_about_origin.norm()});
+    for (std::size_t b = 0; b < nb; ++b) {
+      const BodyState& s = rows.state(i, b);
+      const Quat q_WB = quaternion_from_rotation(s.R_WB);
+      put(s.r_G);
+      for (const double c : {q_WB.x(), q_WB.y(), q_WB.z(), q_WB.w()}) {
+        body_rows.push_back(static_cast<float>(c));
+      }
+      put(s.omega_W);
+      put(s.R_WB.transpose() * s.omega_W);
+      // L about the COM, world: R I_G_B R^T omega_W.
+      put(s.R_WB * (scene.bodies[b].I_G_B * (s.R_WB.transpose() * s.omega_W)));
+    }
+  }
+  json += R"("time":)";
+  append_base64_of(json, time);
+  json += R"(,"system":)";
+  append_base64_of(json, system);
+  json += R"(,"body_rows":)";
+  append_base64_of(json, body_rows);
+  json += '}';
+  return json;
+}
+
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(const std::filesystem::path& path) : path_(path) {
+    temporary_ = path;
+    temporary_ += fmt::format(".partial-{}", static_cast<long>(::getpid()));
+    file_ = std::fopen(temporary_.c_str(), "wb");
+    if (file_ == nullptr) {
+      throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(),
+                                           std::generic_category().message(errno)));
+    }
+  }
+  ~TemporaryFile() {
+    if (file_ != nullptr) std::fclose(file_);
+    if (!renamed_) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary_, ignored);
+    }
+  }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  void write(std::string_view text) { std::fwrite(text.data(), 1, text.size(), file_); }
+  void write(std::span<const std::string_view> chunks) {
+    for (const std::string_view chunk : chunks) write(chunk);
+  }
+  void finish() {
+    const bool write_failed = std::ferror(file_) != 0;
+    const bool close_failed = std::fclose(file_) != 0;
+    file_ = nullptr;
+    if (write_failed || close_failed) {
+      throw std::runtime_error(fmt::format("error writing {}", path_.string()));
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary_, path_, error);
+    if (error) {
+      throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(), error.message()));
+    }
+    renamed_ = true;
+  }
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path temporary_;
+  std::FILE* file_ = nullptr;
+  bool renamed_ = false;
+};
+
+}  // namespace
+
+std::string json_string(std::string_view text) {
+  std::string out = "\"";
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (byte < 0x20 || c == '<' || c == '>' || c == '&') {
+      // "<" as \u003c: no "</script>" or "<!--" can appear inside the data element.
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(byte));
+    } else if (byte == 0xE2 && i + 2 < text.size() &&
+               static_cast<unsigned char>(text[i + 1]) == 0x80 &&
+               (static_cast<unsigned char>(text[i + 2]) & 0xFE) == 0xA8) {
+      // U+2028 and U+2029: valid in JSON, but line ends to older JavaScript parsers.
+      out += fmt::format("\\u{:04x}", 0x2028u + (static_cast<unsigned char>(text[i + 2]) & 1u));
+      i += 2;
+    } else {
+      out += c;
+    }
+  }
+  out += '"';
+  return out;
+}
+
+AnimationScene make_animation_scene(const Scenario& scenario) {
+  AnimationScene scene;
+  scene.name = scenario.name;
+  for (const BodySpec& spec : scenario.bodies) {
+    AnimationBody body;
+    body.name = spec.name;
+    body.I_G_B = spec.mass_properties.inertia_about_com;
+    const Vec3& com_B = spec.mass_properties.com;
+    if (spec.parts.empty()) {
+      AnimationPart part;
+      part.name = spec.name;
+      part.shape = spec.shape;
+      body.parts.push_back(std::move(part));
+    } else {
+      for (const PartSpec& p : spec.parts) {
+        AnimationPart part;
+        part.name = p.name;
+        part.shape = p.shape;
+        part.position_GP_B = p.position_B - com_B;
+        part.R_BP = p.R_BP;
+        body.parts.push_back(std::move(part));
+      }
+    }
+    double extent = 0.0;
+    for (AnimationPart& part : body.parts) {
+      if (part.shape.kind == ShapeKind::Mesh) load_mesh_part(part);
+      extent = std::max(extent, part.position_GP_B.norm() + part_radius(part));
+    }
+    // A point mass (or a body of points) is drawn as a small sphere.
+    if (!(extent > 0.0)) extent = 0.1;
+    for (AnimationPart& part : body.parts) {
+      if (part.shape.kind == ShapeKind::Point) part.shape.radius = 0.05 * extent;
+    }
+    body.extent = extent;
+    scene.bodies.push_back(std::move(body));
+  }
+  return scene;
+}
+
+void RecordedTrajectory::record(double t, std::span<const BodyState> states,
+                                const SystemQuantities& q) {
+  if (states.size() != body_count_) {
+    throw std::invalid_argument(fmt::format("RecordedTrajectory: a row of {} bodies, expected {}",
+                                            states.size(), body_count_));
+  }
+  t_.push_back(t);
+  states_.insert(states_.end(), states.begin(), states.end());
+  quantities_.push_back(q);
+}
+
+void write_animation_html(const std::filesystem::path& path, const AnimationScene& scene,
+                          const RecordedTrajectory& rows) {
+  if (scene.bodies.size() != rows.body_count()) {
+    throw std::invalid_argument(
+        fmt::format("write_animation_html: {} bodies in the scene, {} in "
+                    "the rows",
+                    scene.bodies.size(), rows.body_count()));
+  }
+  if (rows.rows() == 0) {
+    throw std::invalid_argument("write_animation_html: no rows to animate");
+  }
+  const std::string json = scene_json(scene, rows);
+  TemporaryFile file(path);
+  file.write("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
+  file.write("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
+  // No network: the page may load nothing but itself and data: URLs.
+  file.write(
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
+      "script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data: blob:\">\n");
+  file.write(fmt::format("<title>{}</title>\n<style>\n", html_text(scene.name)));
+  file.write(animation_assets::style());
+  file.write("</style>\n</head>\n<body>\n");
+  file.write(animation_assets::markup());
+  file.write("<script type=\"application/json\" id=\"tumble-data\">");
+  file.write(json);
+  file.write("</script>\n<script>\n");
+  file.write(animation_assets::script());
+  file.write("\n</script>\n</body>\n</html>\n");
+  file.finish();
+}
+
+}  // namespace tumble

@@ -1,0 +1,83 @@
+#pragma once
+// The animation page of `tumble run --animate`: ONE self-contained HTML file that shows the
+// bodies with their true shapes moving through the recorded rows, their axes, the angular
+// velocity and the angular momentum about the COM, a trail of the COM, and the time plots of
+// omega (body and world axes), KE / PE / E and |L|, with a cursor that follows the animation.
+// three.js and uPlot are embedded (animation_assets.hpp): the page makes no network request.
+//
+// The trajectory is embedded as base64 in a <script type="application/json"> element: per row
+// t, KE, PE, E, |L| (float64) and per body r_G, q_WB, omega_W, omega_B, L_G_W (float32), about
+// 100 bytes a row for one body. Every name from the scenario is JSON-escaped so that no "<" can
+// end the element early, and the page shows names as text only.
+#include <array>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tumble/body/rigid_body.hpp"
+#include "tumble/inertia/shapes.hpp"
+#include "tumble/scenario/scenario.hpp"
+
+namespace tumble {
+
+// One drawable piece of a body, placed in the body's frame relative to its COM.
+struct AnimationPart {
+  std::string name;
+  Shape shape;
+  Vec3 position_GP_B = Vec3::Zero();  // part frame origin from the body's COM, body axes, m
+  Mat3 R_BP = Mat3::Identity();       // part axes -> body axes
+  // A mesh: its triangles in the part's frame (at the mesh's COM). Empty when the mesh cannot
+  // be passed (then the page draws the box [min, max] and says so in `note`).
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  Vec3 box_min = Vec3::Zero();  // m, part frame: the mesh's bounding box
+  Vec3 box_max = Vec3::Zero();
+  std::string note;
+};
+
+struct AnimationBody {
+  std::string name;
+  std::vector<AnimationPart> parts;
+  Mat3 I_G_B = Mat3::Identity();  // inertia about the COM, body axes, kg m^2: for L
+  double extent = 1.0;            // m: radius of a sphere about the COM holding every part
+};
+
+struct AnimationScene {
+  std::string name;  // the scenario's: the page's title
+  std::vector<AnimationBody> bodies;
+};
+
+// The scene of a scenario: every body's parts (a single shape is one part), meshes loaded.
+AnimationScene make_animation_scene(const Scenario& scenario);
+
+// The output rows, kept in memory for the page.
+class RecordedTrajectory {
+ public:
+  explicit RecordedTrajectory(std::size_t body_count) : body_count_(body_count) {}
+  void record(double t, std::span<const BodyState> states, const SystemQuantities& q);
+  std::size_t rows() const { return t_.size(); }
+  std::size_t body_count() const { return body_count_; }
+  double t(std::size_t row) const { return t_[row]; }
+  const BodyState& state(std::size_t row, std::size_t body) const {
+    return states_[row * body_count_ + body];
+  }
+  const SystemQuantities& quantities(std::size_t row) const { return quantities_[row]; }
+
+ private:
+  std::size_t body_count_;
+  std::vector<double> t_;
+  std::vector<BodyState> states_;  // row-major: rows x bodies
+  std::vector<SystemQuantities> quantities_;
+};
+
+// Writes the page under a temporary name beside `path` and renames it into place. Throws
+// std::runtime_error naming the path if it cannot be written, or std::invalid_argument if the
+// scene and the rows disagree on the number of bodies.
+void write_animation_html(const std::filesystem::path& path, const AnimationScene& scene,
+                          const RecordedTrajectory& rows);
+
+// For the tests: the JSON string literal of `text` (with quotes), safe inside <script>.
+std::string json_string(std::string_view text);
+
+}  // namespace tumble

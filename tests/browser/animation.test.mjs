@@ -1,0 +1,226 @@
+// Browser test of the animation page of `tumble run --animate`: the built tumble writes the
+// pages into a temporary directory, headless Chromium (software WebGL) opens them offline.
+//   TUMBLE_EXE=build/release/tumble node --test tests/browser/
+// Environment: TUMBLE_EXE (default build/release/tumble), TUMBLE_ARTIFACTS (where screenshots
+// go; default build/browser-artifacts), CHROMIUM (default /usr/bin/chromium).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, mkdirSync, readFileSync, writeFileSync, statSync, rmSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const root = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+// playwright-core is pinned with the page's packages in web/package-lock.json.
+const { chromium } = createRequire(join(root, 'web', 'package.json'))('playwright-core');
+const tumble = resolve(root, process.env.TUMBLE_EXE ?? 'build/release/tumble');
+const artifacts = resolve(root, process.env.TUMBLE_ARTIFACTS ?? 'build/browser-artifacts');
+const work = mkdtempSync(join(tmpdir(), 'tumble-browser-'));
+// Body names may not hold spaces (they prefix CSV columns): the same markup with '/' for spaces.
+const xssName = '<img src=x onerror=alert(1)>';
+const xssBody = '<img/src=x/onerror=alert(1)>';
+
+function animate(scenario, out) {
+  execFileSync(tumble, ['run', scenario, '--out', out, '--animate'], { stdio: 'pipe' });
+}
+
+let browser;
+const pages = {};
+before(async () => {
+  mkdirSync(artifacts, { recursive: true });
+  animate(join(root, 'examples', 'tumbling_prism.yaml'), work);
+  animate(join(root, 'examples', 'spinning_projectile.yaml'), work);
+  pages.prism = join(work, 'tumbling_prism.html');
+  pages.projectile = join(work, 'spinning_projectile.html');
+
+  // 20,000 rows: the prism with a row every millisecond.
+  const prism = readFileSync(join(root, 'examples', 'tumbling_prism.yaml'), 'utf8');
+  assert.match(prism, /output_every: 0\.05/);
+  writeFileSync(join(work, 'dense_prism.yaml'),
+    prism.replace('output_every: 0.05', 'output_every: 0.001')
+      .replace('trajectory: tumbling_prism.csv', 'trajectory: dense_prism.csv'));
+  animate(join(work, 'dense_prism.yaml'), work);
+  pages.dense = join(work, 'dense_prism.html');
+
+  // A body whose name is markup: the page must show it as text.
+  writeFileSync(join(work, 'xss.yaml'), [
+    'tumble: 1',
+    `name: "${xssName} </script><script>alert(2)</script>"`,
+    'bodies:',
+    `  "${xssBody}": {shape: cylinder, radius: 0.1, length: 0.5, mass: 1, angular_velocity: [0, 0, 3]}`,
+    '  wheel:',
+    '    parts:',
+    '      - {name: rim, shape: ring, radius: 0.3, mass: 1, position: [0, 0, 0.5]}',
+    '      - {name: axle, shape: rod, length: 0.6, mass: 0.5, position: [0, 0, 0.5], orientation: {axis: [0, 1, 0], angle: 90 deg}}',
+    '      - {name: hub, shape: cone, radius: 0.1, height: 0.2, mass: 0.2, position: [0, 0, 0.5]}',
+    '    position: [1, 0, 0]',
+    '    angular_velocity: [0.2, 0, 4]',
+    'simulate: {duration: 1, output_every: 0.1}',
+    '',
+  ].join('\n'));
+  animate(join(work, 'xss.yaml'), work);
+  pages.xss = join(work, 'xss.html');
+
+  browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking',
+      '--disable-component-update', '--disable-sync', '--no-first-run',
+      '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+      // Frames as fast as the page can draw them, not at the display's 60 Hz: the measured
+      // frame time is then the page's own cost.
+      '--disable-frame-rate-limit', '--disable-gpu-vsync'],
+  });
+});
+
+after(async () => {
+  await browser?.close();
+  rmSync(work, { recursive: true, force: true });
+});
+
+// Opens a page in a fresh context and records what would betray a broken or leaky page.
+async function open(file) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+  const page = await context.newPage();
+  const url = pathToFileURL(file).href;
+  const seen = { errors: [], requests: [], dialogs: [] };
+  page.on('console', (m) => { if (m.type() === 'error') seen.errors.push(m.text()); });
+  page.on('pageerror', (e) => seen.errors.push(String(e)));
+  page.on('request', (r) => {
+    if (r.url() !== url && !r.url().startsWith('data:')) seen.requests.push(r.url());
+  });
+  page.on('dialog', async (d) => { seen.dialogs.push(d.message()); await d.dismiss(); });
+  await page.goto(url);
+  await page.waitForFunction(() => window.tumble !== undefined, null, { timeout: 20000 });
+  return { page, context, seen };
+}
+
+async function canvasShot(page) {
+  return page.locator('#canvas-box canvas').screenshot();
+}
+
+test('the prism page draws the body, plays, pauses, scrubs, and plots every row', async () => {
+  const { page, context, seen } = await open(pages.prism);
+  const rows = await page.evaluate(() => window.tumble.rows);
+  assert.equal(rows, 401);
+  assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()), [401, 401, 401, 401]);
+  assert.equal(await page.title(), 'tumbling prism');
+
+  // Play: time advances; pause: it stops.
+  assert.equal(await page.evaluate(() => window.tumble.playing), true);
+  const t1 = await page.evaluate(() => window.tumble.time);
+  await page.waitForTimeout(400);
+  assert.ok(await page.evaluate(() => window.tumble.time) > t1, 'time advances while playing');
+  await page.click('#play');
+  assert.equal(await page.evaluate(() => window.tumble.playing), false);
+  const paused = await page.evaluate(() => window.tumble.time);
+  await page.waitForTimeout(200);
+  assert.equal(await page.evaluate(() => window.tumble.time), paused);
+
+  // The slider seeks to a row (row 200 is t = 10 s).
+  await page.evaluate(() => {
+    const s = document.getElementById('slider');
+    s.value = '200';
+    s.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  await page.waitForTimeout(100);
+  assert.equal(await page.evaluate(() => window.tumble.time), 10);
+  assert.equal(await page.textContent('#time'), 't = 10.000 s');
+
+  // The body turns: the canvas differs between t = 0 and t = 10 s.
+  await page.evaluate(() => window.tumble.seek(0));
+  await page.waitForTimeout(100);
+  const at0 = await canvasShot(page);
+  await page.evaluate(() => window.tumble.seek(10));
+  await page.waitForTimeout(100);
+  const at10 = await canvasShot(page);
+  assert.notDeepEqual(at0, at10, 'the canvas changes as the prism turns');
+  // Something is drawn at all: more than the white background and the grid.
+  const drawn = await page.evaluate(() => {
+    const gl = document.querySelector('#canvas-box canvas').getContext('webgl2');
+    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    const px = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    let blue = 0;  // the prism's colour, #4f7fd9, lit: blue well above red
+    for (let i = 0; i < px.length; i += 4) if (px[i + 2] > px[i] + 60) ++blue;
+    return blue / (w * h);
+  });
+  assert.ok(drawn > 0.01, `the prism covers ${drawn} of the canvas`);
+  await page.screenshot({ path: join(artifacts, 'prism.png'), fullPage: true });
+
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
+test('the projectile page opens offline without errors', async () => {
+  const { page, context, seen } = await open(pages.projectile);
+  assert.equal(await page.evaluate(() => window.tumble.rows), 181);
+  assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()), [181, 181, 181, 181]);
+  await page.evaluate(() => window.tumble.seek(0.9));
+  await page.waitForTimeout(100);
+  await page.screenshot({ path: join(artifacts, 'projectile.png'), fullPage: true });
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
+test('names are shown as text, never run as markup', async () => {
+  const { page, context, seen } = await open(pages.xss);
+  await page.waitForTimeout(300);
+  const legend = await page.$$eval('#legend li', (items) => items.map((li) => li.textContent));
+  assert.deepEqual(legend, [xssBody, 'wheel']);
+  assert.equal(await page.textContent('#title'),
+    `${xssName} </script><script>alert(2)</script>`);
+  assert.equal(await page.$$eval('img', (imgs) => imgs.length), 0);
+  await page.screenshot({ path: join(artifacts, 'composite.png'), fullPage: true });
+  assert.deepEqual(seen.dialogs, []);
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
+test('a 20,000-row page stays under 5 MB, plays, and draws a frame in under 16 ms', async () => {
+  const bytes = statSync(pages.dense).size;
+  assert.ok(bytes < 5e6, `${bytes} bytes`);
+  const { page, context, seen } = await open(pages.dense);
+  assert.equal(await page.evaluate(() => window.tumble.rows), 20001);
+  assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()),
+    [20001, 20001, 20001, 20001]);
+  await page.waitForTimeout(500);
+  // Mean interval between animation frames over two seconds of playback.
+  const frame = await page.evaluate(() => new Promise((done) => {
+    const stamps = [];
+    const tick = (now) => {
+      stamps.push(now);
+      if (now - stamps[0] < 2000) requestAnimationFrame(tick);
+      else done({ mean: (stamps.at(-1) - stamps[0]) / (stamps.length - 1), frames: stamps.length - 1 });
+    };
+    requestAnimationFrame(tick);
+  }));
+  assert.equal(await page.evaluate(() => window.tumble.playing), true);
+  // The page's own cost of a frame: seek (interpolate, move arrows, trail and plot cursors) and
+  // render, with a pixel read back so that the (software) GPU has finished. Headless Chromium
+  // may hold requestAnimationFrame to 60 Hz, which would hide this cost behind 16.7 ms.
+  const work = await page.evaluate(() => {
+    const gl = document.querySelector('#canvas-box canvas').getContext('webgl2');
+    const pixel = new Uint8Array(4);
+    const n = 120;
+    const start = performance.now();
+    for (let k = 0; k < n; ++k) {
+      window.tumble.seek((k * 20) / n);
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    }
+    const mean = (performance.now() - start) / n;
+    window.tumble.play();
+    return mean;
+  });
+  console.log(`20,001 rows: ${(bytes / 1e6).toFixed(2)} MB; mean frame ${work.toFixed(2)} ms ` +
+    `of work, ${frame.mean.toFixed(2)} ms between animation frames over ${frame.frames} frames`);
+  assert.ok(work < 16, `mean frame time ${work} ms`);
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});

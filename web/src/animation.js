@@ -1,0 +1,384 @@
+// The animation page of `tumble run --animate`. The trajectory arrives in
+// <script type="application/json" id="tumble-data"> (written by src/tumble/output/animation_html.cpp):
+//   name, rows, bodies [{name, extent, parts: [{name, shape, dims..., position, quaternion}]}],
+//   time      base64 Float64 [rows]
+//   system    base64 Float64 [rows][4]: KE, PE, E, |L| (about the world origin)
+//   body_rows base64 Float32 [rows][bodies][16]: r_G (3), q_WB (x y z w), omega_W (3), omega_B (3),
+//             L about the COM, world (3)
+// World z is up. Every name from the scenario is shown through textContent, never as HTML.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import uPlot from 'uplot';
+
+const kPerBody = 16;
+const kColors = ['#4f7fd9', '#e08a2c', '#3aa66a', '#c9487a', '#7a5bd1', '#2aa3b8', '#9c8a2e'];
+
+function decode(base64, Type) {
+  const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+  return new Type(bytes.buffer);
+}
+
+const data = JSON.parse(document.getElementById('tumble-data').textContent);
+const rows = data.rows;
+const time = decode(data.time, Float64Array);
+const system = decode(data.system, Float64Array);
+const bodyRows = decode(data.body_rows, Float32Array);
+const nBodies = data.bodies.length;
+const at = (row, body, k) => bodyRows[(row * nBodies + body) * kPerBody + k];
+
+document.title = data.name;
+document.getElementById('title').textContent = data.name;
+document.getElementById('summary').textContent =
+  `${nBodies} ${nBodies === 1 ? 'body' : 'bodies'}, ${rows} rows, t = ${time[0]} to ` +
+  `${time[rows - 1]} s`;
+
+// ---- The scene ----------------------------------------------------------------------------
+const box = document.getElementById('canvas-box');
+const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+box.appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color('#ffffff');
+const camera = new THREE.PerspectiveCamera(45, 1, 0.01, 1e5);
+camera.up.set(0, 0, 1);
+const controls = new OrbitControls(camera, renderer.domElement);
+scene.add(new THREE.HemisphereLight('#ffffff', '#8890a0', 2.0));
+const sun = new THREE.DirectionalLight('#ffffff', 1.6);
+sun.position.set(3, -5, 8);
+scene.add(sun);
+
+// Three's cylinders and cones stand along y; tumble's shapes have their axis along z.
+function alongZ(geometry) {
+  return geometry.rotateX(Math.PI / 2);
+}
+
+function partGeometry(part, notes, bodyName) {
+  const seg = 48;
+  switch (part.shape) {
+    case 'box':
+      return new THREE.BoxGeometry(part.size[0], part.size[1], part.size[2]);
+    case 'plate':
+      return new THREE.BoxGeometry(part.size[0], part.size[1], 0.002 * Math.max(...part.size));
+    case 'cylinder':
+      return alongZ(new THREE.CylinderGeometry(part.radius, part.radius, part.length, seg));
+    case 'disk':
+      return alongZ(new THREE.CylinderGeometry(part.radius, part.radius, 0.01 * part.radius, seg));
+    case 'tube': {
+      const ri = part.inner_radius, ro = part.outer_radius, h = part.length / 2;
+      const profile = [[ri, -h], [ro, -h], [ro, h], [ri, h], [ri, -h]].map(
+        ([x, y]) => new THREE.Vector2(x, y));
+      return alongZ(new THREE.LatheGeometry(profile, seg));
+    }
+    case 'ring':
+      return new THREE.TorusGeometry(part.radius, 0.03 * part.radius, 12, seg);
+    case 'rod':
+      return new THREE.CylinderGeometry(0.01 * part.length, 0.01 * part.length, part.length, 12)
+        .rotateZ(Math.PI / 2);
+    case 'sphere':
+    case 'shell':
+      return new THREE.SphereGeometry(part.radius, seg, seg / 2);
+    case 'cone':
+      // Base at z = -h/4, apex at z = 3h/4: the frame sits at the COM.
+      return alongZ(new THREE.ConeGeometry(part.radius, part.height, seg)).translate(
+        0, 0, part.height / 4);
+    case 'mesh':
+      if (part.vertices) {
+        const g = new THREE.BufferGeometry();
+        g.setAttribute('position', new THREE.BufferAttribute(decode(part.vertices, Float32Array), 3));
+        g.setIndex(new THREE.BufferAttribute(decode(part.triangles, Uint32Array), 1));
+        g.computeVertexNormals();
+        return g;
+      }
+      notes.push(`${bodyName}: ${part.name} is drawn as its bounding box (${part.note ?? ''})`);
+      return new THREE.BoxGeometry(part.size[0], part.size[1], part.size[2])
+        .translate(part.centre[0], part.centre[1], part.centre[2]);
+    default:  // a point mass
+      return new THREE.SphereGeometry(part.radius, 16, 8);
+  }
+}
+
+const notes = [];
+const bodies = data.bodies.map((spec, b) => {
+  const color = kColors[b % kColors.length];
+  const group = new THREE.Group();
+  const material = new THREE.MeshStandardMaterial({
+    color, roughness: 0.6, metalness: 0.05, side: THREE.DoubleSide,
+    transparent: false, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
+  });
+  for (const part of spec.parts) {
+    const geometry = partGeometry(part, notes, spec.name);
+    const mesh = new THREE.Mesh(geometry, material);
+    const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry, 25),
+      new THREE.LineBasicMaterial({ color: '#1d2430' }));
+    const holder = new THREE.Group();
+    holder.add(mesh, edges);
+    holder.position.fromArray(part.position);
+    holder.quaternion.fromArray(part.quaternion);
+    group.add(holder);
+  }
+  const axes = new THREE.AxesHelper(1.25 * spec.extent);
+  axes.material.depthTest = false;
+  axes.renderOrder = 2;
+  group.add(axes);
+  scene.add(group);
+
+  const arrow = (c) => {
+    const a = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, c);
+    a.line.material.depthTest = false;
+    a.cone.material.depthTest = false;
+    a.renderOrder = 3;
+    scene.add(a);
+    return a;
+  };
+  // Arrow lengths: the largest magnitude over the run is drawn 1.6 body extents long.
+  let maxW = 0, maxL = 0;
+  for (let i = 0; i < rows; ++i) {
+    maxW = Math.max(maxW, Math.hypot(at(i, b, 7), at(i, b, 8), at(i, b, 9)));
+    maxL = Math.max(maxL, Math.hypot(at(i, b, 13), at(i, b, 14), at(i, b, 15)));
+  }
+  const trailPositions = new Float32Array(rows * 3);
+  for (let i = 0; i < rows; ++i) {
+    for (let k = 0; k < 3; ++k) trailPositions[3 * i + k] = at(i, b, k);
+  }
+  const trailGeometry = new THREE.BufferGeometry();
+  trailGeometry.setAttribute('position', new THREE.BufferAttribute(trailPositions, 3));
+  const trail = new THREE.Line(trailGeometry, new THREE.LineBasicMaterial({ color }));
+  trail.frustumCulled = false;
+  scene.add(trail);
+  return {
+    spec, color, group, trail, omega: arrow('#cc8800'), momentum: arrow('#aa33cc'),
+    omegaScale: maxW > 0 ? 1.6 * spec.extent / maxW : 0,
+    momentumScale: maxL > 0 ? 1.6 * spec.extent / maxL : 0,
+  };
+});
+
+// The ground grid lies under everything the bodies reach, at z = 0 unless they go lower.
+let lo = new THREE.Vector3(Infinity, Infinity, Infinity);
+let hi = new THREE.Vector3(-Infinity, -Infinity, -Infinity);
+let zGround = 0;
+data.bodies.forEach((spec, b) => {
+  for (let i = 0; i < rows; ++i) {
+    const p = new THREE.Vector3(at(i, b, 0), at(i, b, 1), at(i, b, 2));
+    lo.min(p.clone().subScalar(spec.extent));
+    hi.max(p.clone().addScalar(spec.extent));
+  }
+  zGround = Math.min(zGround, lo.z);
+});
+const span = Math.max(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-3);
+const gridSize = Math.pow(10, Math.ceil(Math.log10(1.5 * span)));
+const grid = new THREE.GridHelper(gridSize, 20, '#9aa3b5', '#d5d9e2');
+grid.rotateX(Math.PI / 2);
+const centre = lo.clone().add(hi).multiplyScalar(0.5);
+grid.position.set(centre.x, centre.y, zGround);
+scene.add(grid);
+controls.target.copy(centre);
+camera.position.copy(centre).add(new THREE.Vector3(1.2, -1.6, 0.9).multiplyScalar(span));
+controls.update();
+
+const legend = document.getElementById('legend');
+const follow = document.getElementById('follow');
+bodies.forEach((body, b) => {
+  const li = document.createElement('li');
+  li.textContent = body.spec.name;
+  li.style.setProperty('--c', body.color);
+  legend.appendChild(li);
+  const option = document.createElement('option');
+  option.value = String(b);
+  option.textContent = `follow ${body.spec.name}`;
+  follow.appendChild(option);
+});
+document.getElementById('notes').textContent = notes.join('; ');
+
+function resize() {
+  const w = box.clientWidth, h = box.clientHeight;
+  renderer.setSize(w, h);
+  camera.aspect = w / h;
+  camera.updateProjectionMatrix();
+}
+window.addEventListener('resize', resize);
+resize();
+
+// ---- The plots ----------------------------------------------------------------------------
+const plotsBox = document.getElementById('plots');
+const axisNames = ['x', 'y', 'z'];
+const seriesColors = ['#d33', '#2a2', '#24d'];
+function bodySeries(offset, symbol) {
+  const series = [{}], columns = [time];
+  bodies.forEach((body, b) => {
+    for (let k = 0; k < 3; ++k) {
+      const column = new Float64Array(rows);
+      for (let i = 0; i < rows; ++i) column[i] = at(i, b, offset + k);
+      columns.push(column);
+      series.push({
+        label: nBodies === 1 ? `${symbol}${axisNames[k]}` : `${body.spec.name} ${symbol}${axisNames[k]}`,
+        stroke: seriesColors[k], width: 1.5, dash: b === 0 ? undefined : [4 * b, 3],
+      });
+    }
+  });
+  return { series, columns };
+}
+function systemColumn(k) {
+  const column = new Float64Array(rows);
+  for (let i = 0; i < rows; ++i) column[i] = system[4 * i + k];
+  return column;
+}
+const plotSpecs = [
+  { title: 'angular velocity, body axes (rad/s)', ...bodySeries(10, 'ω_B ') },
+  { title: 'angular velocity, world axes (rad/s)', ...bodySeries(7, 'ω_W ') },
+  {
+    title: 'energy (J)',
+    series: [{}, { label: 'KE', stroke: '#d33', width: 1.5 }, { label: 'PE', stroke: '#2a2', width: 1.5 },
+      { label: 'E', stroke: '#24d', width: 2 }],
+    columns: [time, systemColumn(0), systemColumn(1), systemColumn(2)],
+  },
+  {
+    title: '|L| about the world origin (kg m²/s)',
+    series: [{}, { label: '|L|', stroke: '#a3c', width: 2 }],
+    columns: [time, systemColumn(3)],
+  },
+];
+// A y range never narrower than a thousandth of the values' size: a conserved quantity that
+// wobbles at round-off (1e-12 relative) must read as the flat line it is, not as noise blown up
+// to fill the panel.
+function conservedAwareRange(_plot, min, max) {
+  const floor = 1e-3 * Math.max(Math.abs(min), Math.abs(max), 1e-300);
+  const pad = Math.max(0.05 * (max - min), floor);
+  return [min - pad, max + pad];
+}
+const plots = plotSpecs.map((spec) => {
+  const holder = document.createElement('div');
+  holder.className = 'plot';
+  plotsBox.appendChild(holder);
+  const plot = new uPlot({
+    title: spec.title,
+    width: Math.max(340, plotsBox.clientWidth - 4),
+    height: 190,
+    series: spec.series.map((s, i) => (i === 0 ? { label: 't (s)' } : s)),
+    scales: { x: { time: false }, y: { range: conservedAwareRange } },
+    axes: [{ label: 't (s)' }, { size: 60 }],
+    cursor: { drag: { x: true, y: false } },
+  }, spec.columns, holder);
+  const cursor = document.createElement('div');
+  cursor.className = 'plot-cursor';
+  plot.over.appendChild(cursor);
+  return { plot, cursor };
+});
+window.addEventListener('resize', () => {
+  for (const { plot } of plots) plot.setSize({ width: Math.max(340, plotsBox.clientWidth - 4), height: 190 });
+});
+
+// ---- Playback -----------------------------------------------------------------------------
+const slider = document.getElementById('slider');
+const playButton = document.getElementById('play');
+const timeLabel = document.getElementById('time');
+const speedSelect = document.getElementById('speed');
+const loopBox = document.getElementById('loop');
+const trailBox = document.getElementById('trail');
+const vectorsBox = document.getElementById('vectors');
+slider.max = String(rows - 1);
+slider.step = 'any';
+
+const t0 = time[0], tEnd = time[rows - 1];
+let simTime = t0;
+let playing = true;
+let lastFrame = null;
+
+// The last row with time <= t.
+function rowAt(t) {
+  let a = 0, b = rows - 1;
+  if (t >= time[b]) return b;
+  while (b - a > 1) {
+    const m = (a + b) >> 1;
+    if (time[m] <= t) a = m; else b = m;
+  }
+  return a;
+}
+
+const qa = new THREE.Quaternion(), qb = new THREE.Quaternion();
+const pa = new THREE.Vector3(), pb = new THREE.Vector3(), v = new THREE.Vector3();
+const followOffset = new THREE.Vector3();
+function show(t) {
+  const i = rowAt(t);
+  const j = Math.min(i + 1, rows - 1);
+  const s = j > i ? Math.min(1, Math.max(0, (t - time[i]) / (time[j] - time[i]))) : 0;
+  const followed = Number(follow.value);
+  bodies.forEach((body, b) => {
+    const previous = body.group.position.clone();
+    pa.set(at(i, b, 0), at(i, b, 1), at(i, b, 2));
+    pb.set(at(j, b, 0), at(j, b, 1), at(j, b, 2));
+    body.group.position.lerpVectors(pa, pb, s);
+    qa.set(at(i, b, 3), at(i, b, 4), at(i, b, 5), at(i, b, 6));
+    qb.set(at(j, b, 3), at(j, b, 4), at(j, b, 5), at(j, b, 6));
+    body.group.quaternion.slerpQuaternions(qa, qb, s);
+    const row = s < 0.5 ? i : j;
+    for (const [arrow, offset, scale] of [[body.omega, 7, body.omegaScale], [body.momentum, 13, body.momentumScale]]) {
+      v.set(at(row, b, offset), at(row, b, offset + 1), at(row, b, offset + 2));
+      const length = v.length() * scale;
+      arrow.visible = vectorsBox.checked && length > 1e-9;
+      if (arrow.visible) {
+        arrow.position.copy(body.group.position);
+        arrow.setDirection(v.normalize());
+        arrow.setLength(length, Math.min(0.25 * length, 0.3 * body.spec.extent), Math.min(0.12 * length, 0.15 * body.spec.extent));
+      }
+    }
+    body.trail.visible = trailBox.checked;
+    body.trail.geometry.setDrawRange(0, i + 1);
+    if (b === followed) {
+      followOffset.subVectors(body.group.position, previous);
+      camera.position.add(followOffset);
+      controls.target.copy(body.group.position);
+    }
+  });
+  timeLabel.textContent = `t = ${t.toFixed(3)} s`;
+  for (const { plot, cursor } of plots) {
+    cursor.style.left = `${plot.valToPos(t, 'x')}px`;
+  }
+}
+
+function frame(now) {
+  if (playing && lastFrame !== null) {
+    simTime += ((now - lastFrame) / 1000) * Number(speedSelect.value);
+    if (simTime > tEnd) {
+      if (loopBox.checked) simTime = t0 + ((simTime - t0) % Math.max(tEnd - t0, 1e-12));
+      else { simTime = tEnd; setPlaying(false); }
+    }
+    slider.value = String(rowAt(simTime));
+  }
+  lastFrame = now;
+  show(simTime);
+  controls.update();
+  renderer.render(scene, camera);
+  requestAnimationFrame(frame);
+}
+
+function setPlaying(on) {
+  playing = on;
+  playButton.textContent = on ? 'Pause' : 'Play';
+  if (on && simTime >= tEnd && !loopBox.checked) simTime = t0;
+}
+playButton.addEventListener('click', () => setPlaying(!playing));
+slider.addEventListener('input', () => {
+  setPlaying(false);
+  simTime = time[Math.round(Number(slider.value))];
+});
+follow.addEventListener('change', () => {
+  const b = Number(follow.value);
+  if (b >= 0) {
+    // Keep the view direction, centred on the body.
+    const offset = camera.position.clone().sub(controls.target);
+    controls.target.copy(bodies[b].group.position);
+    camera.position.copy(controls.target).add(offset);
+  }
+});
+
+// For the browser test and for scripting: read-only views and a way to seek.
+window.tumble = {
+  rows,
+  get time() { return simTime; },
+  get playing() { return playing; },
+  plotPoints: () => plots.map(({ plot }) => plot.data[0].length),
+  seek(t) { setPlaying(false); simTime = t; slider.value = String(rowAt(t)); show(t); renderer.render(scene, camera); },
+  play() { setPlaying(true); },
+  pause() { setPlaying(false); },
+};
+requestAnimationFrame(frame);

@@ -1,14 +1,13 @@
 #include "tumble/output/animation_html.hpp"
 
+#include "tumble/output/atomic_file.hpp"
+
 #include <fmt/format.h>
-#include <unistd.h>
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
-#include <system_error>
 
 #include "tumble/inertia/mesh.hpp"
 #include "tumble/math/rotation.hpp"
@@ -239,53 +238,6 @@ std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& ro
   return json;
 }
 
-class TemporaryFile {
- public:
-  explicit TemporaryFile(const std::filesystem::path& path) : path_(path) {
-    temporary_ = path;
-    temporary_ += fmt::format(".partial-{}", static_cast<long>(::getpid()));
-    file_ = std::fopen(temporary_.c_str(), "wb");
-    if (file_ == nullptr) {
-      throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(),
-                                           std::generic_category().message(errno)));
-    }
-  }
-  ~TemporaryFile() {
-    if (file_ != nullptr) std::fclose(file_);
-    if (!renamed_) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary_, ignored);
-    }
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  void write(std::string_view text) { std::fwrite(text.data(), 1, text.size(), file_); }
-  void write(std::span<const std::string_view> chunks) {
-    for (const std::string_view chunk : chunks) write(chunk);
-  }
-  void finish() {
-    const bool write_failed = std::ferror(file_) != 0;
-    const bool close_failed = std::fclose(file_) != 0;
-    file_ = nullptr;
-    if (write_failed || close_failed) {
-      throw std::runtime_error(fmt::format("error writing {}", path_.string()));
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary_, path_, error);
-    if (error) {
-      throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(), error.message()));
-    }
-    renamed_ = true;
-  }
-
- private:
-  std::filesystem::path path_;
-  std::filesystem::path temporary_;
-  std::FILE* file_ = nullptr;
-  bool renamed_ = false;
-};
-
 }  // namespace
 
 std::string json_string(std::string_view text) {
@@ -375,7 +327,7 @@ void write_animation_html(const std::filesystem::path& path, const AnimationScen
     throw std::invalid_argument("write_animation_html: no rows to animate");
   }
   const std::string json = scene_json(scene, rows);
-  TemporaryFile file(path);
+  AtomicFile file(path);
   file.write("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
   file.write("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
   // No network: the page may load nothing but itself and data: URLs.

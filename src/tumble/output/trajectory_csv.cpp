@@ -1,8 +1,6 @@
 #include "tumble/output/trajectory_csv.hpp"
 
-#include <unistd.h>
 #include <stdexcept>
-#include <system_error>
 
 namespace tumble {
 
@@ -22,31 +20,14 @@ std::vector<std::string> trajectory_columns(std::span<const std::string> body_na
 
 TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path,
                                          std::span<const std::string> body_names)
-    : path_(std::move(path)) {
-  // A name unique to this process beside the destination: rename() then stays on one file
-  // system and is atomic.
-  temporary_path_ = path_;
-  temporary_path_ += fmt::format(".partial-{}", static_cast<long>(::getpid()));
-  file_ = std::fopen(temporary_path_.c_str(), "wb");
-  if (file_ == nullptr) {
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path_.string(), std::generic_category().message(errno)));
-  }
+    : file_(std::move(path)) {
   const std::vector<std::string> columns = trajectory_columns(body_names);
   fmt::memory_buffer header;
   for (std::size_t i = 0; i < columns.size(); ++i) {
     fmt::format_to(std::back_inserter(header), "{}{}", i == 0 ? "" : ",", columns[i]);
   }
   header.push_back('\n');
-  std::fwrite(header.data(), 1, header.size(), file_);
-}
-
-TrajectoryCsvWriter::~TrajectoryCsvWriter() {
-  if (file_ != nullptr) {
-    std::fclose(file_);
-    std::error_code ignored;
-    std::filesystem::remove(temporary_path_, ignored);
-  }
+  file_.write(std::string_view(header.data(), header.size()));
 }
 
 void TrajectoryCsvWriter::write_row(double t, std::span<const BodyState> states,
@@ -69,20 +50,12 @@ void TrajectoryCsvWriter::write_row(double t, std::span<const BodyState> states,
   for (int k = 0; k < 3; ++k) put(q.linear_momentum(k));
   for (int k = 0; k < 3; ++k) put(q.angular_momentum_about_origin(k));
   line_.push_back('\n');
-  std::fwrite(line_.data(), 1, line_.size(), file_);
+  file_.write(std::string_view(line_.data(), line_.size()));
   ++rows_;
 }
 
 void TrajectoryCsvWriter::finish() {
-  const bool write_failed = std::ferror(file_) != 0;
-  const bool close_failed = std::fclose(file_) != 0;
-  file_ = nullptr;
-  if (write_failed || close_failed) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary_path_, ignored);
-    throw std::runtime_error(fmt::format("error writing {}", path_.string()));
-  }
-  std::filesystem::rename(temporary_path_, path_);
+  file_.finish();
 }
 
 }  // namespace tumble

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "tumble/body/rigid_body.hpp"
+#include "tumble/output/atomic_file.hpp"
 
 namespace tumble {
 
@@ -23,22 +24,18 @@ std::vector<std::string> trajectory_columns(std::span<const std::string> body_na
 class TrajectoryCsvWriter {
  public:
   // Throws std::runtime_error naming the path if the temporary file cannot be created.
+  // Destroyed before finish(), it leaves nothing behind.
   TrajectoryCsvWriter(std::filesystem::path path, std::span<const std::string> body_names);
-  ~TrajectoryCsvWriter();  // removes the temporary file if finish() was never called
-  TrajectoryCsvWriter(const TrajectoryCsvWriter&) = delete;
-  TrajectoryCsvWriter& operator=(const TrajectoryCsvWriter&) = delete;
 
   void write_row(double t, std::span<const BodyState> states, const SystemQuantities& q);
   // Flushes, closes and renames the file to its destination. Throws on an I/O error.
   void finish();
 
-  const std::filesystem::path& path() const { return path_; }
+  const std::filesystem::path& path() const { return file_.path(); }
   std::size_t rows() const { return rows_; }
 
  private:
-  std::filesystem::path path_;
-  std::filesystem::path temporary_path_;
-  std::FILE* file_ = nullptr;
+  AtomicFile file_;
   fmt::memory_buffer line_;
   std::size_t rows_ = 0;
 };

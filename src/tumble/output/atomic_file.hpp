@@ -1,0 +1,37 @@
+#pragma once
+// An output file that appears only when complete: it is written under a temporary name beside
+// its destination (same file system, so the final rename is atomic) and renamed by finish();
+// destroyed unfinished, it removes the temporary file and leaves nothing behind.
+#include <cstdio>
+#include <filesystem>
+#include <span>
+#include <string_view>
+
+namespace tumble {
+
+class AtomicFile {
+ public:
+  // Throws std::runtime_error naming the destination if the temporary file cannot be created.
+  explicit AtomicFile(std::filesystem::path path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  void write(std::string_view text) { std::fwrite(text.data(), 1, text.size(), file_); }
+  void write(std::span<const std::string_view> chunks) {
+    for (const std::string_view chunk : chunks) write(chunk);
+  }
+  // Flushes, closes and renames to the destination. Throws std::runtime_error on an I/O error
+  // (and removes the temporary file).
+  void finish();
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path temporary_;
+  std::FILE* file_ = nullptr;
+  bool renamed_ = false;
+};
+
+}  // namespace tumble

@@ -223,13 +223,15 @@ TEST(FreePrism, IntermediateAxisFlipsAtTheExactTime) {
 }
 
 // The exact integrator, run through the same driver, reproduces the 40-digit reference at
-// t = 20, 200 and 2000 (the closed form's own accuracy: phase error ~ t * eps * frequency).
+// t = 20, 200 and 2000 to the closed form's own accuracy.
 TEST(FreePrism, ExactIntegratorMatchesTheReference) {
   for (const PrismCase& c : prism_cases()) {
     for (const testing::ReferenceState& ref : c.states) {
       const FinalState f = simulate_prism(c, "body", "exact", StepControl{}, ref.t);
       const double error = testing::state_error(f.state.R_WB, f.state.omega_W, ref);
-      EXPECT_LT(error, 1e-15 * ref.t * 100 + 1e-13) << c.id << " t " << ref.t;
+      // The closed form's phase error grows like t * eps * (a few frequencies): 2e-15 per unit
+      // of time, floored at t = 50 (measured 6.8e-13 at t = 2000, bound 4e-12).
+      EXPECT_LT(error, 2e-15 * std::max(ref.t, 50.0)) << c.id << " t " << ref.t;
     }
   }
 }

@@ -9,8 +9,12 @@ namespace tumble::cli {
 struct RunArguments {
   std::string scenario;
   std::string out_dir = ".";
-  std::vector<std::string> sets;  // NAME=VALUE
-  bool animate = false;           // also write the animation page (output.animation does too)
+  std::vector<std::string> sets;        // NAME=VALUE
+  bool animate = false;                 // also write the animation page (output.animation does too)
+  std::string video;                    // empty: no video; else .mp4 or .gif (docs/video.md)
+  std::string video_size = "1280x720";  // WIDTHxHEIGHT, pixels
+  int video_fps = 30;                   // frames per second of video
+  double video_speed = 1.0;             // simulation seconds per second of video
 };
 
 struct InertiaArguments {

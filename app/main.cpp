@@ -18,11 +18,12 @@ int main(int argc, char** argv) {
   RunArguments run_args;
   CLI::App* run = app.add_subcommand(
       "run",
-      "Integrate a scenario; write its trajectory CSV (and with --animate an HTML page that "
-      "animates it) and print a summary (steps, evaluations, wall time, drift of E and |L|, "
-      "largest |R^T R - I|).\nExit status: 0 done, 2 bad command "
-      "line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed (the rows so far "
-      "stay a valid CSV), 5 output not writable.");
+      "Integrate a scenario; write its trajectory CSV (with --animate an HTML page that animates "
+      "it, with --video an .mp4 or .gif of that page's 3D view) and print a summary (steps, "
+      "evaluations, wall time, drift of E and |L|, largest |R^T R - I|).\nExit status: 0 done, "
+      "2 bad command line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed "
+      "(the rows so far stay a valid CSV), 5 output not writable (or the video could not be "
+      "made: node, Chromium or ffmpeg missing or failing; no partial video is left).");
   run->set_version_flag("--version", version);
   run->add_option("scenario", run_args.scenario, "Scenario file (YAML)")->required();
   run->add_option("--out", run_args.out_dir, "Directory for the output files (created if missing)")
@@ -33,6 +34,23 @@ int main(int argc, char** argv) {
                 "Also write the animation page: one self-contained HTML file (3D view of the "
                 "bodies, plots of omega, E and |L|) named like the trajectory with .html, or "
                 "output.animation");
+  CLI::Option* video =
+      run->add_option("--video", run_args.video,
+                      "Also write a video of the page's 3D view, with the name and the time: "
+                      "PATH.mp4 (H.264) or PATH.gif (from the current directory, not under --out), "
+                      "drawn by headless Chromium and encoded by ffmpeg (docs/video.md)");
+  run->add_option("--video-size", run_args.video_size,
+                  "The video's WIDTHxHEIGHT in pixels, 16 to 8192 each (even for .mp4)")
+      ->capture_default_str()
+      ->needs(video);
+  run->add_option("--video-fps", run_args.video_fps, "Frames per second of the video")
+      ->check(CLI::Range(1, 240))
+      ->capture_default_str()
+      ->needs(video);
+  run->add_option("--video-speed", run_args.video_speed,
+                  "Simulation seconds per second of video (2: twice as fast as real time)")
+      ->capture_default_str()
+      ->needs(video);
 
   InertiaArguments inertia_args;
   CLI::App* inertia = app.add_subcommand(

@@ -5,9 +5,11 @@
 
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "system_summary.hpp"
 #include "tumble/output/animation_html.hpp"
 #include "tumble/output/trajectory_csv.hpp"
 #include "tumble/simulation/simulation.hpp"
+#include "video_export.hpp"
 
 namespace tumble::cli {
 
@@ -27,7 +29,8 @@ namespace {
 
 void print_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                    const SimulationResult& result, const std::filesystem::path& trajectory,
-                   const std::optional<std::filesystem::path>& animation) {
+                   const std::optional<std::filesystem::path>& animation,
+                   const std::optional<std::string>& video) {
   const SimulateSpec& sim = scenario.simulate;
   const IntegratorStats& stats = result.report.stats;
   fmt::print("{} ({})\n", scenario.name, scenario.file);
@@ -43,18 +46,22 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
              stats.rejected_steps);
   fmt::print("  evaluations    {} of the right-hand side\n", stats.rhs_evaluations);
   fmt::print("  wall time      {:.3f} ms (integration and output)\n", 1e3 * result.wall_seconds);
-  const bool forces_act = !scenario.loads.empty();
+  const bool forces_act = energy_changes(scenario);
   const bool gravity_acts = scenario.gravity_W.squaredNorm() > 0.0;
   fmt::print("  energy E       max relative drift {:.3e}{}\n",
              result.conservation.max_relative_energy_drift,
-             forces_act ? " (applied forces do work: E is not conserved)" : "");
+             forces_act
+                 ? " (forces, motors, dampers, impulses or locks do work: E is not conserved)"
+                 : "");
   fmt::print("  |L| (origin)   max relative drift {:.3e}{}\n",
              result.conservation.max_relative_angular_momentum_drift,
              forces_act || gravity_acts ? " (external moments act: |L| is not conserved)" : "");
   fmt::print("  |R^T R - I|    max {:.3e}\n", result.conservation.max_orthonormality_error);
+  print_system_summary(scenario, simulation, result);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,
              result.report.t_reached);
   if (animation) fmt::print("  animation      {}\n", animation->string());
+  if (video) fmt::print("  video          {}\n", *video);
 }
 
 // The page's path: output.animation under --out, else with --animate the trajectory's name
@@ -71,9 +78,38 @@ std::optional<std::filesystem::path> animation_path(const RunArguments& args,
   return page;
 }
 
+// Renders the video from the page: the one written for --animate, or else one written for the
+// video alone into a temporary directory that goes with it. Returns the summary's line.
+std::string make_video(const VideoRequest& video, const std::optional<std::filesystem::path>& page,
+                       const Scenario& scenario, const RecordedTrajectory& recorded,
+                       const std::filesystem::path& trajectory) {
+  const long frames = video_frame_count(recorded.t(0), recorded.t(recorded.rows() - 1), video);
+  if (page) {
+    render_video(*page, video, frames);
+  } else {
+    const TemporaryDirectory scratch;
+    std::filesystem::path temporary_page = scratch.path() / trajectory.filename();
+    temporary_page.replace_extension(".html");
+    write_animation_html(temporary_page, make_animation_scene(scenario), recorded);
+    render_video(temporary_page, video, frames);
+  }
+  return fmt::format("{} ({} frames, {}x{}, {} fps)", video.path.string(), frames, video.width,
+                     video.height, video.fps);
+}
+
 }  // namespace
 
 int run_command(const RunArguments& args) {
+  std::optional<VideoRequest> video;
+  if (!args.video.empty()) {
+    try {
+      video = parse_video_request(args);
+    } catch (const std::invalid_argument& e) {
+      fmt::print(stderr, "tumble run: {}\n", e.what());
+      return kBadCommandLine;
+    }
+  }
+
   Scenario scenario;
   try {
     scenario = load_scenario(args.scenario, parse_overrides(args.sets));
@@ -88,6 +124,9 @@ int run_command(const RunArguments& args) {
   std::optional<PreparedSimulation> simulation;
   try {
     simulation = prepare_simulation(scenario);
+  } catch (const ScenarioError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return kInvalidScenario;
   } catch (const std::invalid_argument& e) {
     const SourceLocation& at = scenario.simulate.where;
     fmt::print(stderr, "{}\n", ScenarioError(at, "simulate.integrator", e.what()).what());
@@ -99,24 +138,24 @@ int run_command(const RunArguments& args) {
   std::optional<TrajectoryCsvWriter> writer;
   try {
     std::filesystem::create_directories(trajectory.parent_path());
-    writer.emplace(trajectory, [&] {
-      std::vector<std::string> names;
-      for (const BodySpec& b : scenario.bodies) names.push_back(b.name);
-      return names;
-    }());
+    std::vector<std::string> bodies, joints;
+    for (const BodySpec& b : scenario.bodies) bodies.push_back(b.name);
+    for (const JointSpec& j : scenario.joints) joints.push_back(j.name);
+    writer.emplace(trajectory, bodies, joints, simulation->formulation->element_names());
   } catch (const std::exception& e) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
     return kOutputError;
   }
 
-  // Rows are kept in memory only for the animation page.
+  // Rows are kept in memory only for the animation page (which the video is drawn from).
   const std::optional<std::filesystem::path> animation = animation_path(args, scenario, trajectory);
   std::optional<RecordedTrajectory> recorded;
-  if (animation) recorded.emplace(scenario.bodies.size());
+  if (animation || video) recorded.emplace(scenario.bodies.size());
 
-  const SimulationResult result = run_simulation(
-      *simulation, [&](double t, std::span<const BodyState> states, const SystemQuantities& q) {
-        writer->write_row(t, states, q);
+  const SimulationResult result =
+      run_simulation(*simulation, [&](double t, std::span<const BodyState> states,
+                                      const SystemQuantities& q, const RowExtras& extras) {
+        writer->write_row(t, states, q, &extras);
         if (recorded) recorded->record(t, states, q);
       });
   try {
@@ -129,7 +168,28 @@ int run_command(const RunArguments& args) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
     return kOutputError;
   }
-  print_summary(scenario, *simulation, result, trajectory, animation);
+
+  // A video that cannot be made leaves the CSV and the page valid: the summary still reports
+  // them, then the video's error and its exit status.
+  std::optional<std::string> video_line;
+  int video_status = kDone;
+  std::string video_failure;
+  if (video && recorded->rows() > 0) {
+    try {
+      video_line = make_video(*video, animation, scenario, *recorded, trajectory);
+    } catch (const std::invalid_argument& e) {
+      video_status = kBadCommandLine;
+      video_failure = e.what();
+    } catch (const std::exception& e) {
+      video_status = kOutputError;
+      video_failure = fmt::format("no video written to {}: {}", video->path.string(), e.what());
+    }
+  }
+  print_summary(scenario, *simulation, result, trajectory, animation, video_line);
+  if (video_status != kDone) {
+    fmt::print(stderr, "tumble run: {}\n", video_failure);
+    return video_status;
+  }
   if (!result.report.completed) {
     fmt::print(stderr, "tumble run: integration failed: {}\n", result.report.failure);
     return kIntegrationFailed;

@@ -6,7 +6,7 @@ packages=(
   g++ cmake ninja-build pkg-config clang-format
   libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev libmuparser-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  chromium gnuplot-nox
+  chromium gnuplot-nox ffmpeg
 )
 # Node.js and npm build the animation page. A machine may already have them from elsewhere
 # (nodesource's nodejs carries its own npm); install Debian's only where the commands are missing.

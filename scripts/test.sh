@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: formatting, the Release suite, the same suite under
 # AddressSanitizer + UndefinedBehaviorSanitizer, the main example end to end, and the animation
-# page in headless Chromium.
+# page and its videos (`tumble run --video`, checked with ffprobe) in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -28,5 +28,5 @@ build/release/tumble run examples/tumbling_prism.yaml --out "$out" --animate
 test -s "$out/tumbling_prism.csv"
 test -s "$out/tumbling_prism.html"
 
-echo "== The animation page in headless Chromium"
+echo "== The animation page and its videos in headless Chromium"
 TUMBLE_EXE=build/release/tumble TUMBLE_ARTIFACTS=build/release/artifacts node --test tests/browser/

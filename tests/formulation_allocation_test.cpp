@@ -3,6 +3,9 @@
 // start() has sized the workspace.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "allocation_counter.hpp"
 #include "tumble/dynamics/formulation.hpp"
 #include "tumble/integrators/integrator.hpp"
@@ -28,6 +31,89 @@ Model two_loaded_bodies() {
   torque.body_frame = true;
   m.loads = {force, torque};
   return m;
+}
+
+// Every kind of joint and element: a ball-jointed body, a hinged one under a torque motor and a
+// torsional spring, a welded one, a free one on a spring, and a hinge driven at a speed.
+Model jointed_system() {
+  Model m;
+  for (const char* name : {"b0", "b1", "b2", "b3", "b4"}) {
+    const double i = static_cast<double>(m.bodies.size());
+    m.bodies.push_back(RigidBody::make(name, 1.0 + i, Vec3(0.3, 0.4 + 0.1 * i, 0.5).asDiagonal()));
+  }
+  JointModel ball;
+  ball.type = JointModel::Type::Ball;
+  ball.body_a = kGround;
+  ball.body_b = 0;
+  ball.p_BJ_B = Vec3(0.0, 0.0, 0.5);
+  JointModel hinge;
+  hinge.type = JointModel::Type::Hinge;
+  hinge.body_a = 0;
+  hinge.body_b = 1;
+  hinge.p_AJ_A = Vec3(0.0, 0.0, -0.5);
+  hinge.p_BJ_B = Vec3(0.3, 0.0, 0.0);
+  hinge.axis_B = Vec3(0.0, 1.0, 0.0);
+  hinge.motor.kind = HingeMotor::Kind::Torque;
+  hinge.motor.value = 0.2;
+  JointModel weld;
+  weld.type = JointModel::Type::Fixed;
+  weld.body_a = 1;
+  weld.body_b = 2;
+  weld.p_AJ_A = Vec3(-0.3, 0.0, 0.0);
+  JointModel driven = hinge;
+  driven.motor.kind = HingeMotor::Kind::Speed;
+  driven.motor.value = 3.0;
+  driven.body_a = 2;
+  driven.body_b = 4;
+  m.joints = {ball, hinge, weld, driven};
+  LinearSpring spring;
+  spring.body_a = kGround;
+  spring.body_b = 3;
+  spring.stiffness = 10.0;
+  spring.damping = 0.1;
+  spring.rest_length = 0.2;
+  spring.p_A_A = Vec3(1.0, 0.0, 0.0);
+  m.springs = {spring};
+  TorsionalSpring twist;
+  twist.body_a = 0;
+  twist.body_b = 1;
+  twist.stiffness = 2.0;
+  twist.damping = 0.05;
+  twist.hinge = 1;
+  TorsionalSpring free_twist = twist;
+  free_twist.body_a = 3;
+  free_twist.body_b = 4;
+  free_twist.hinge = -1;
+  m.torsional_springs = {twist, free_twist};
+  return m;
+}
+
+TEST(NoAllocation, StepsOfAJointedSystem) {
+  for (const std::string method : {"dopri5", "dop853", "rk4", "rkmk4"}) {
+    auto system = make_formulation("body", jointed_system());
+    StepControl control;
+    control.rtol = 1e-9;
+    control.atol = 1e-12;
+    control.fixed_step = 0.01;
+    auto integrator = make_integrator(method, control);
+    std::vector<BodyState> states(5);
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      const double i = static_cast<double>(k);
+      states[k].R_WB = rotation_from_axis_angle(Vec3(1, 0.5 * i, 0), 0.2 * i);
+      states[k].r_G = Vec3(0.1 * i, 0.0, -0.5 * i);
+    }
+    VecX y0(system->dimension()), y_dense(system->dimension());
+    system->pack(states, y0);
+    system->begin(0.0, y0);
+    integrator->start(*system, 0.0, y0, 1.0);
+    integrator->step(1.0);
+    test::AllocationCounter allocations;
+    for (int i = 0; i < 50 && integrator->t() < 1.0; ++i) {
+      ASSERT_EQ(integrator->step(1.0), StepOutcome::Ok);
+      integrator->dense_output(0.5 * (integrator->t_previous() + integrator->t()), y_dense);
+    }
+    EXPECT_EQ(allocations.count(), 0) << method;
+  }
 }
 
 TEST(NoAllocation, StepsOfEveryMethodOnBothFormulations) {

@@ -627,30 +627,17 @@ TEST(ScenarioError, AMissingFileCannotBeRead) {
   expect_error("", {1, 1, "", "the file is empty"});
 }
 
-TEST(ScenarioError, JointsContactsAndSpringsAreNotSupportedYet) {
-  expect_error(
-      kHead + kSphere + "joints:\n  knob: {type: ball, body: ball, at: [0, 0, 0]}\n" + kSimulate,
-      {4, 1, "joints",
-       "joints are not supported yet (coming with the joints feature); remove the key "
-       "to run the free bodies"});
+TEST(ScenarioError, ContactsAreNotSupportedYet) {
   expect_error(kHead + kSphere + "contacts: []\n" + kSimulate,
                {4, 1, "contacts", "contacts are not supported yet"});
-  expect_error(kHead + kSphere +
-                   "forces:\n  - {type: spring, bodies: [ground, ball], stiffness: 100}\n" +
-                   kSimulate,
-               {5, 12, "forces[0].type", "type 'spring' is not supported yet"});
-  expect_error(kHead + kSphere +
-                   "forces:\n  - {type: force, body: ball, value: [1, 0, 0]}\n"
-                   "  - {type: impulse, body: ball, value: [0, 1, 0], time: 0.1}\n" +
-                   kSimulate,
-               {6, 12, "forces[1].type", "type 'impulse' is not supported yet"});
 }
 
 TEST(ScenarioError, AnUnknownForceTypeListsTheTypes) {
   expect_error(
       kHead + kSphere + "forces:\n  - {type: forse, body: ball, value: [1, 0, 0]}\n" + kSimulate,
       {5, 12, "forces[0].type",
-       "unknown type 'forse'; did you mean 'force'? (the types are force and torque"});
+       "unknown type 'forse'; did you mean 'force'? (the types are force, torque, impulse, "
+       "spring, torsional_spring)"});
   expect_error(kHead + kSphere +
                    "forces:\n  - {type: torque, body: ball, value: [1, 0, 0], at: [1, 0, 0]}\n" +
                    kSimulate,
@@ -694,7 +681,7 @@ TEST(ScenarioError, ExactIsForTorqueFreeBodies) {
   expect_error(kHead + kSphere + "forces:\n  - {type: torque, body: ball, value: [0, 0, 1]}\n" +
                    "simulate: {duration: 1, integrator: exact}\n",
                {6, 37, "simulate.integrator",
-                "exact is for torque-free bodies; remove forces or choose dopri5"});
+                "exact is for torque-free free bodies; remove forces and joints or choose dopri5"});
 }
 
 TEST(ScenarioError, RtolMustLieBetweenZeroAndOne) {

@@ -282,6 +282,9 @@ const t0 = time[0], tEnd = time[rows - 1];
 let simTime = t0;
 let playing = true;
 let lastFrame = null;
+// Video mode (see videoMode below): the playback clock stops for good and only seek draws.
+let video = false;
+const videoTime = document.getElementById('video-time');
 
 // The last row with time <= t.
 function rowAt(t) {
@@ -330,12 +333,20 @@ function show(t) {
     }
   });
   timeLabel.textContent = `t = ${t.toFixed(3)} s`;
+  if (video) videoTime.textContent = `t = ${t.toFixed(3)} s`;
   for (const { plot, cursor } of plots) {
     cursor.style.left = `${plot.valToPos(t, 'x')}px`;
   }
 }
 
+function draw(t) {
+  show(t);
+  controls.update();
+  renderer.render(scene, camera);
+}
+
 function frame(now) {
+  if (video) return;  // frames of a video are drawn by seek alone, at the times it asks for
   if (playing && lastFrame !== null) {
     simTime += ((now - lastFrame) / 1000) * Number(speedSelect.value);
     if (simTime > tEnd) {
@@ -345,9 +356,7 @@ function frame(now) {
     slider.value = String(rowAt(simTime));
   }
   lastFrame = now;
-  show(simTime);
-  controls.update();
-  renderer.render(scene, camera);
+  draw(simTime);
   requestAnimationFrame(frame);
 }
 
@@ -371,14 +380,33 @@ follow.addEventListener('change', () => {
   }
 });
 
+// One frame of a video (`tumble run --video`, web/render_video.mjs): the 3D view alone fills the
+// viewport at one canvas pixel per CSS pixel, with the scenario's name and the time over it, and
+// the playback clock stops, so that each frame shows exactly the time seek was given. There is
+// no way back: the page is opened for the video only.
+function enterVideoMode() {
+  setPlaying(false);
+  video = true;
+  document.body.classList.add('video');
+  document.getElementById('video-title').textContent = data.name;
+  document.getElementById('video-overlay').hidden = false;
+  renderer.setPixelRatio(1);
+  resize();
+  draw(simTime);
+}
+
 // For the browser test and for scripting: read-only views and a way to seek.
 window.tumble = {
   rows,
+  start: t0,
+  end: tEnd,
   get time() { return simTime; },
   get playing() { return playing; },
+  get video() { return video; },
   plotPoints: () => plots.map(({ plot }) => plot.data[0].length),
   seek(t) { setPlaying(false); simTime = t; slider.value = String(rowAt(t)); show(t); renderer.render(scene, camera); },
-  play() { setPlaying(true); },
+  play() { if (!video) setPlaying(true); },
   pause() { setPlaying(false); },
+  videoMode: enterVideoMode,
 };
 requestAnimationFrame(frame);

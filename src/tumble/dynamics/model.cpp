@@ -4,11 +4,26 @@
 
 namespace tumble {
 
+bool Model::bodies_are_free() const {
+  return joints.empty() && springs.empty() && torsional_springs.empty() && impulses.empty();
+}
+
 double Model::next_load_switch(double t) const {
   double next = std::numeric_limits<double>::infinity();
+  const auto consider = [&](double edge) {
+    if (edge > t) next = std::min(next, edge);
+  };
   for (const AppliedLoad& load : loads) {
-    if (load.from > t) next = std::min(next, load.from);
-    if (load.to > t) next = std::min(next, load.to);
+    consider(load.from);
+    consider(load.to);
+  }
+  for (const ImpulseLoad& impulse : impulses) consider(impulse.time);
+  for (const JointModel& joint : joints) {
+    if (joint.motor.kind != HingeMotor::Kind::None) {
+      consider(joint.motor.from);
+      consider(joint.motor.to);
+    }
+    consider(joint.lock_at);
   }
   return next;
 }

@@ -1,11 +1,14 @@
 #pragma once
 // The constant description of a mechanical system (what MuJoCo calls the model): bodies, uniform
-// gravity and the applied loads. The state lives elsewhere (in the integrator's vector y).
+// gravity, the applied loads, force elements and joints. The state lives elsewhere (in the
+// integrator's vector y).
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "tumble/body/rigid_body.hpp"
+#include "tumble/dynamics/force_elements.hpp"
+#include "tumble/dynamics/joint_model.hpp"
 
 namespace tumble {
 
@@ -27,8 +30,16 @@ struct Model {
   std::vector<RigidBody> bodies;
   Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);  // m/s^2
   std::vector<AppliedLoad> loads;
+  std::vector<LinearSpring> springs;
+  std::vector<TorsionalSpring> torsional_springs;
+  std::vector<ImpulseLoad> impulses;
+  std::vector<JointModel> joints;
 
-  // The first schedule edge (a load's from or to) strictly after t, or +infinity.
+  // Only free bodies under gravity and one-body loads: the free-body formulations run it.
+  bool bodies_are_free() const;
+
+  // The first schedule edge strictly after t (a load's or motor's from or to, an impulse, a
+  // lock), or +infinity.
   double next_load_switch(double t) const;
 };
 

@@ -4,7 +4,9 @@
 
 namespace tumble {
 
-std::vector<std::string> trajectory_columns(std::span<const std::string> body_names) {
+std::vector<std::string> trajectory_columns(std::span<const std::string> body_names,
+                                            std::span<const std::string> joint_names,
+                                            std::span<const std::string> element_names) {
   std::vector<std::string> columns{"t"};
   static const char* const kBodyFields[] = {"x",   "y",   "z",   "vx",  "vy",  "vz",
                                             "wx",  "wy",  "wz",  "R11", "R12", "R13",
@@ -15,13 +17,25 @@ std::vector<std::string> trajectory_columns(std::span<const std::string> body_na
   for (const char* c : {"KE", "PE", "E", "px", "py", "pz", "Lx", "Ly", "Lz"}) {
     columns.emplace_back(c);
   }
+  for (const std::string& joint : joint_names) {
+    for (const char* field : {"Fx", "Fy", "Fz", "Mx", "My", "Mz"}) {
+      columns.push_back(joint + "." + field);
+    }
+  }
+  for (const std::string& element : element_names) {
+    columns.push_back(element + ".P");
+    columns.push_back(element + ".W");
+  }
   return columns;
 }
 
 TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path,
-                                         std::span<const std::string> body_names)
+                                         std::span<const std::string> body_names,
+                                         std::span<const std::string> joint_names,
+                                         std::span<const std::string> element_names)
     : file_(std::move(path)) {
-  const std::vector<std::string> columns = trajectory_columns(body_names);
+  const std::vector<std::string> columns =
+      trajectory_columns(body_names, joint_names, element_names);
   fmt::memory_buffer header;
   for (std::size_t i = 0; i < columns.size(); ++i) {
     fmt::format_to(std::back_inserter(header), "{}{}", i == 0 ? "" : ",", columns[i]);
@@ -31,7 +45,7 @@ TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path,
 }
 
 void TrajectoryCsvWriter::write_row(double t, std::span<const BodyState> states,
-                                    const SystemQuantities& q) {
+                                    const SystemQuantities& q, const RowExtras* extras) {
   line_.clear();
   auto out = std::back_inserter(line_);
   fmt::format_to(out, "{:.17g}", t);
@@ -49,6 +63,16 @@ void TrajectoryCsvWriter::write_row(double t, std::span<const BodyState> states,
   put(q.total_energy);
   for (int k = 0; k < 3; ++k) put(q.linear_momentum(k));
   for (int k = 0; k < 3; ++k) put(q.angular_momentum_about_origin(k));
+  if (extras != nullptr) {
+    for (const JointReaction& joint : extras->joints) {
+      for (int k = 0; k < 3; ++k) put(joint.F_W(k));
+      for (int k = 0; k < 3; ++k) put(joint.M_J_W(k));
+    }
+    for (const ElementWork& element : extras->elements) {
+      put(element.power);
+      put(element.work);
+    }
+  }
   line_.push_back('\n');
   file_.write(std::string_view(line_.data(), line_.size()));
   ++rows_;

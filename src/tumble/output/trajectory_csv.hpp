@@ -2,7 +2,10 @@
 // The trajectory CSV of the scenario contract: one header row, then one row per output time:
 //   t, per body B: B.x B.y B.z (COM, world), B.vx B.vy B.vz, B.wx B.wy B.wz (world),
 //   B.R11 ... B.R33 (row-major, body axes -> world), then KE PE E px py pz Lx Ly Lz (about the
-//   world origin). Numbers carry 17 significant digits, enough to round-trip a double.
+//   world origin), then per joint J: J.Fx J.Fy J.Fz J.Mx J.My J.Mz (what its first body exerts on
+//   its second, world, moment about the joint point), then per force element, motor, impulse and
+//   lock E: E.P E.W (power now, work since t0). Numbers carry 17 significant digits, enough to
+//   round-trip a double.
 // The file is written under a temporary name beside its destination and renamed into place by
 // finish(), so a reader never sees half a file; a run that fails part way still finishes the
 // rows it has, which form a valid CSV.
@@ -15,19 +18,26 @@
 #include <fmt/format.h>
 
 #include "tumble/body/rigid_body.hpp"
+#include "tumble/dynamics/formulation.hpp"
 #include "tumble/output/atomic_file.hpp"
 
 namespace tumble {
 
-std::vector<std::string> trajectory_columns(std::span<const std::string> body_names);
+std::vector<std::string> trajectory_columns(std::span<const std::string> body_names,
+                                            std::span<const std::string> joint_names = {},
+                                            std::span<const std::string> element_names = {});
 
 class TrajectoryCsvWriter {
  public:
   // Throws std::runtime_error naming the path if the temporary file cannot be created.
   // Destroyed before finish(), it leaves nothing behind.
-  TrajectoryCsvWriter(std::filesystem::path path, std::span<const std::string> body_names);
+  TrajectoryCsvWriter(std::filesystem::path path, std::span<const std::string> body_names,
+                      std::span<const std::string> joint_names = {},
+                      std::span<const std::string> element_names = {});
 
-  void write_row(double t, std::span<const BodyState> states, const SystemQuantities& q);
+  // extras: the row's joint reactions and element powers and works, in the constructor's order.
+  void write_row(double t, std::span<const BodyState> states, const SystemQuantities& q,
+                 const RowExtras* extras = nullptr);
   // Flushes, closes and renames the file to its destination. Throws on an I/O error.
   void finish();
 

@@ -153,8 +153,14 @@ BodySpec read_body(const Reader& reader, const Field& field,
   }
   if (const auto f = map.find("position")) body.position_W = reader.vec3(*f);
   if (const auto f = map.find("orientation")) body.R_WB = read_orientation(reader, *f);
-  if (const auto f = map.find("velocity")) body.velocity_W = reader.vec3(*f);
-  if (const auto f = map.find("angular_velocity")) body.angular_velocity_W = reader.vec3(*f);
+  if (const auto f = map.find("velocity")) {
+    body.velocity_W = reader.vec3(*f);
+    body.velocity_where = reader.location(f->value_mark());
+  }
+  if (const auto f = map.find("angular_velocity")) {
+    body.angular_velocity_W = reader.vec3(*f);
+    body.angular_velocity_where = reader.location(f->value_mark());
+  }
   return body;
 }
 

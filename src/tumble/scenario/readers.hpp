@@ -42,11 +42,20 @@ Mat3 read_orientation(const Reader& reader, const Field& field);
 // `bodies:` (body_reader.cpp).
 std::vector<BodySpec> read_bodies(const Reader& reader, const Field& field,
                                   const std::filesystem::path& directory);
-// `forces:` (loads_reader.cpp): the entries of type force and torque.
-std::vector<LoadSpec> read_forces(const Reader& reader, const Field& field,
-                                  const std::vector<BodySpec>& bodies);
+// `joints:` (joints_reader.cpp), after the bodies.
+std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
+                                   const std::vector<BodySpec>& bodies);
+// `forces:` (forces_reader.cpp), after the bodies and joints: fills scenario.loads, impulses,
+// springs and torsional_springs.
+void read_forces(const Reader& reader, const Field& field, Scenario& scenario);
+// A body's name as a joint or force names it; "ground" only where ground_allowed. Fails with the
+// names there are (and the likely one, for a typo).
+std::string read_body_or_ground(const Reader& reader, const Field& field,
+                                const std::vector<BodySpec>& bodies, bool ground_allowed);
 // `simulate:` and `output:` (simulate_reader.cpp).
-SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces);
+// has_forces: any load, force element or joint; has_system: joints, springs or impulses.
+SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces,
+                           bool has_system);
 OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
                        const std::string& file_stem);
 

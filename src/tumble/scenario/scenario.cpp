@@ -120,12 +120,10 @@ Scenario load_scenario(const std::string& path, const std::vector<ParameterOverr
                        "a mapping of the scenario's keys (tumble: 1, bodies:, simulate:, ...)");
   check_version(reader, root);
   root.allow_only(kTopLevelKeys, "a scenario");
-  for (const char* unsupported : {"joints", "contacts"}) {
-    if (const auto f = root.find(unsupported)) {
-      reader.fail_at_key(*f, fmt::format("{} are not supported yet (coming with the {} feature); "
-                                         "remove the key to run the free bodies",
-                                         unsupported, unsupported));
-    }
+  if (const auto f = root.find("contacts")) {
+    reader.fail_at_key(*f,
+                       "contacts are not supported yet (coming with the contact feature); "
+                       "remove the key to run the rest");
   }
 
   Scenario scenario;
@@ -139,12 +137,15 @@ Scenario load_scenario(const std::string& path, const std::vector<ParameterOverr
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
   scenario.bodies = scenario_reading::read_bodies(
       reader, root.require("bodies", "the bodies, by name"), directory);
-  if (const auto f = root.find("forces")) {
-    scenario.loads = scenario_reading::read_forces(reader, *f, scenario.bodies);
+  if (const auto f = root.find("joints")) {
+    scenario.joints = scenario_reading::read_joints(reader, *f, scenario.bodies);
   }
+  if (const auto f = root.find("forces")) scenario_reading::read_forces(reader, *f, scenario);
+  const bool has_system = !scenario.joints.empty() || !scenario.impulses.empty() ||
+                          !scenario.springs.empty() || !scenario.torsional_springs.empty();
   scenario.simulate = scenario_reading::read_simulate(
       reader, root.require("simulate", "the run's settings, at least duration"),
-      !scenario.loads.empty());
+      has_system || !scenario.loads.empty(), has_system);
   scenario.output = scenario_reading::read_output(reader, root.find("output"), stem);
   return scenario;
 }

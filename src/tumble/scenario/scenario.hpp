@@ -58,6 +58,9 @@ struct BodySpec {
   Vec3 velocity_W = Vec3::Zero();          // COM velocity at t = 0, world, m/s
   Vec3 angular_velocity_W = Vec3::Zero();  // at t = 0, world, rad/s
   SourceLocation where;
+  // Where `velocity:` and `angular_velocity:` are written (line 0: not given). A body held by
+  // joints takes the velocities its joints allow; given ones must agree with them.
+  SourceLocation velocity_where, angular_velocity_where;
 };
 
 // A constant force or a pure torque on one body, optionally switched on a from/to schedule.
@@ -71,6 +74,66 @@ struct LoadSpec {
   bool has_point = false;     // force: `at:` given (else at the COM)
   double from = -std::numeric_limits<double>::infinity();  // s
   double to = std::numeric_limits<double>::infinity();     // s
+  SourceLocation where;
+};
+
+// A body named in a joint or a force element: "ground" (the fixed world) or one of the bodies.
+inline constexpr const char* kGroundName = "ground";
+
+// `motor:` of a hinge: a prescribed relative speed or a torque, optionally on a schedule.
+struct MotorSpec {
+  enum class Kind { None, Speed, Torque } kind = Kind::None;
+  double value = 0.0;                                      // rad/s or N m
+  double from = -std::numeric_limits<double>::infinity();  // s
+  double to = std::numeric_limits<double>::infinity();     // s
+  SourceLocation where;
+};
+
+struct JointSpec {
+  enum class Type { Ball, Hinge, Fixed } type = Type::Ball;
+  std::string name;                  // the key under `joints:`
+  std::string body_a = kGroundName;  // `bodies: [a, b]`, or `body: b` (then a is ground)
+  std::string body_b;
+  Vec3 at_W = Vec3::Zero();                                  // the joint point, world at t = 0, m
+  Vec3 axis_W = Vec3::UnitZ();                               // hinge: unit axis, world at t = 0
+  MotorSpec motor;                                           // hinge only
+  double lock_at = std::numeric_limits<double>::infinity();  // hinge only: `lock: {at: t}`, s
+  SourceLocation where;
+};
+
+// `type: spring`: a linear spring-damper between two body points.
+struct SpringSpec {
+  std::string name;
+  std::string body_a, body_b;
+  Vec3 at_a_W = Vec3::Zero(), at_b_W = Vec3::Zero();  // world points at t = 0, m
+  double stiffness = 0.0;                             // N/m, >= 0
+  double damping = 0.0;                               // N s/m, >= 0
+  std::optional<double> rest_length;                  // m; default: the length at t = 0
+  SourceLocation where;
+};
+
+// `type: torsional_spring` between two bodies (or a body and ground).
+struct TorsionalSpringSpec {
+  std::string name;
+  std::string body_a, body_b;
+  double stiffness = 0.0;  // N m/rad, >= 0
+  double damping = 0.0;    // N m s/rad, >= 0
+  // `rest:` an orientation of b's frame relative to a's, or (across a hinge) an angle; default:
+  // the relative orientation at t = 0.
+  std::optional<Mat3> rest_orientation;
+  std::optional<double> rest_angle;  // rad
+  SourceLocation where;
+};
+
+// `type: impulse`: a jump of momentum at a body point at one instant.
+struct ImpulseSpec {
+  std::string name;
+  std::string body;
+  Vec3 value = Vec3::Zero();  // N s
+  bool body_frame = false;
+  Vec3 at_W = Vec3::Zero();
+  bool has_point = false;
+  double time = 0.0;  // s, > 0
   SourceLocation where;
 };
 
@@ -98,10 +161,14 @@ struct OutputSpec {
 struct Scenario {
   std::string file;  // as given on the command line
   std::string name;
-  std::map<std::string, double> parameters;  // after --set
-  Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);    // m/s^2
-  std::vector<BodySpec> bodies;              // file order
-  std::vector<LoadSpec> loads;               // `forces:` entries of type force and torque
+  std::map<std::string, double> parameters;            // after --set
+  Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);              // m/s^2
+  std::vector<BodySpec> bodies;                        // file order
+  std::vector<JointSpec> joints;                       // file order
+  std::vector<LoadSpec> loads;                         // `forces:` entries of type force and torque
+  std::vector<SpringSpec> springs;                     // ... of type spring
+  std::vector<TorsionalSpringSpec> torsional_springs;  // ... of type torsional_spring
+  std::vector<ImpulseSpec> impulses;                   // ... of type impulse
   SimulateSpec simulate;
   OutputSpec output;
 };

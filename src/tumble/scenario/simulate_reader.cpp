@@ -48,7 +48,8 @@ bool fraction(double x) {
 
 }  // namespace
 
-SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces) {
+SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces,
+                           bool has_system) {
   SimulateSpec sim;
   const MapReader map(reader, field, "the run's settings {duration: s, integrator: ..., ...}");
   map.allow_only({"duration", "integrator", "formulation", "rtol", "atol", "step", "max_step",
@@ -64,6 +65,11 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
   }
   if (const auto f = map.find("formulation")) {
     sim.formulation = read_choice(reader, *f, kFormulations, "formulation");
+    if (sim.formulation == "textbook" && has_system) {
+      reader.fail_at_value(*f,
+                           "the textbook formulation integrates free bodies (the chapter's "
+                           "[R; omega]); joints, springs and impulses need formulation: body");
+    }
   }
   if (const auto f = map.find("rtol")) {
     sim.rtol = checked(reader, *f, fraction, "between 0 and 1 (e.g. 1e-8)");
@@ -103,7 +109,8 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
   }
   if (sim.integrator == "exact" && has_forces) {
     reader.fail_at_value(*integrator,
-                         "exact is for torque-free bodies; remove forces or choose dopri5");
+                         "exact is for torque-free free bodies; remove forces and joints or choose "
+                         "dopri5");
   }
   return sim;
 }

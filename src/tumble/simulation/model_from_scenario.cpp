@@ -3,12 +3,91 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "tumble/math/rotation.hpp"
+
 namespace tumble {
 
 namespace {
 
 Vec3 com_position_W(const BodySpec& body) {
   return body.position_W + body.R_WB * body.mass_properties.com;
+}
+
+int body_index(const Scenario& scenario, const std::string& name) {
+  if (name == kGroundName) return kGround;
+  for (std::size_t i = 0; i < scenario.bodies.size(); ++i) {
+    if (scenario.bodies[i].name == name) return static_cast<int>(i);
+  }
+  throw std::logic_error("'" + name + "' names no body; the reader checks this");
+}
+
+// A world point at t = 0 fixed to a body: its offset from the COM in body axes (for ground, the
+// world point itself).
+Vec3 fixed_point(const Scenario& scenario, int body, const Vec3& at_W) {
+  if (body == kGround) return at_W;
+  const BodySpec& spec = scenario.bodies[static_cast<std::size_t>(body)];
+  return spec.R_WB.transpose() * (at_W - com_position_W(spec));
+}
+
+Mat3 orientation(const Scenario& scenario, int body) {
+  return body == kGround ? Mat3::Identity() : scenario.bodies[static_cast<std::size_t>(body)].R_WB;
+}
+
+JointModel joint_model(const Scenario& scenario, const JointSpec& spec) {
+  JointModel joint;
+  joint.type = spec.type == JointSpec::Type::Ball    ? JointModel::Type::Ball
+               : spec.type == JointSpec::Type::Hinge ? JointModel::Type::Hinge
+                                                     : JointModel::Type::Fixed;
+  joint.name = spec.name;
+  joint.body_a = body_index(scenario, spec.body_a);
+  joint.body_b = body_index(scenario, spec.body_b);
+  joint.p_AJ_A = fixed_point(scenario, joint.body_a, spec.at_W);
+  joint.p_BJ_B = fixed_point(scenario, joint.body_b, spec.at_W);
+  const Mat3 R_WA = orientation(scenario, joint.body_a);
+  const Mat3 R_WB = orientation(scenario, joint.body_b);
+  joint.R_AB0 = R_WA.transpose() * R_WB;
+  joint.axis_B = R_WB.transpose() * spec.axis_W;
+  joint.motor.kind = spec.motor.kind == MotorSpec::Kind::Speed    ? HingeMotor::Kind::Speed
+                     : spec.motor.kind == MotorSpec::Kind::Torque ? HingeMotor::Kind::Torque
+                                                                  : HingeMotor::Kind::None;
+  joint.motor.value = spec.motor.value;
+  joint.motor.from = spec.motor.from;
+  joint.motor.to = spec.motor.to;
+  joint.lock_at = spec.lock_at;
+  return joint;
+}
+
+TorsionalSpring torsional_spring_model(const Scenario& scenario, const Model& model,
+                                       const TorsionalSpringSpec& spec) {
+  TorsionalSpring spring;
+  spring.name = spec.name;
+  spring.body_a = body_index(scenario, spec.body_a);
+  spring.body_b = body_index(scenario, spec.body_b);
+  spring.stiffness = spec.stiffness;
+  spring.damping = spec.damping;
+  const Mat3 R_AB0 =
+      orientation(scenario, spring.body_a).transpose() * orientation(scenario, spring.body_b);
+  spring.R_AB_rest = spec.rest_orientation.value_or(R_AB0);
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const JointModel& joint = model.joints[j];
+    if (joint.type != JointModel::Type::Hinge) continue;
+    const bool same = joint.body_a == spring.body_a && joint.body_b == spring.body_b;
+    const bool swapped = joint.body_a == spring.body_b && joint.body_b == spring.body_a;
+    if (!same && !swapped) continue;
+    // Across a hinge the spring turns with the hinge angle, taken in the joint's order: the pair
+    // of moments is the same whichever body is named first.
+    spring.hinge = static_cast<int>(j);
+    double rest = spec.rest_angle.value_or(
+        spec.rest_orientation ? joint.axis_B.dot(log_so3(R_AB0.transpose() * spring.R_AB_rest))
+                              : 0.0);
+    if (swapped) {
+      std::swap(spring.body_a, spring.body_b);
+      rest = -rest;
+    }
+    spring.rest_angle = rest;
+    break;
+  }
+  return spring;
 }
 
 }  // namespace
@@ -38,6 +117,34 @@ Model build_model(const Scenario& scenario) {
     load.from = spec.from;
     load.to = spec.to;
     model.loads.push_back(load);
+  }
+  for (const JointSpec& spec : scenario.joints) model.joints.push_back(joint_model(scenario, spec));
+  for (const SpringSpec& spec : scenario.springs) {
+    LinearSpring spring;
+    spring.name = spec.name;
+    spring.body_a = body_index(scenario, spec.body_a);
+    spring.body_b = body_index(scenario, spec.body_b);
+    spring.p_A_A = fixed_point(scenario, spring.body_a, spec.at_a_W);
+    spring.p_B_B = fixed_point(scenario, spring.body_b, spec.at_b_W);
+    spring.stiffness = spec.stiffness;
+    spring.damping = spec.damping;
+    spring.rest_length = spec.rest_length.value_or((spec.at_b_W - spec.at_a_W).norm());
+    model.springs.push_back(spring);
+  }
+  for (const TorsionalSpringSpec& spec : scenario.torsional_springs) {
+    model.torsional_springs.push_back(torsional_spring_model(scenario, model, spec));
+  }
+  for (const ImpulseSpec& spec : scenario.impulses) {
+    ImpulseLoad impulse;
+    impulse.name = spec.name;
+    impulse.body = static_cast<std::size_t>(body_index(scenario, spec.body));
+    impulse.value = spec.value;
+    impulse.body_frame = spec.body_frame;
+    if (spec.has_point) {
+      impulse.p_GP_B = fixed_point(scenario, static_cast<int>(impulse.body), spec.at_W);
+    }
+    impulse.time = spec.time;
+    model.impulses.push_back(impulse);
   }
   return model;
 }

@@ -4,11 +4,65 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "tumble/math/rotation.hpp"
+#include "tumble/multibody/articulated_formulation.hpp"
 #include "tumble/simulation/exact_integrator.hpp"
 #include "tumble/simulation/model_from_scenario.hpp"
 
 namespace tumble {
+
+namespace {
+
+// The state packs what the joints allow; a given velocity that differs was not what the user
+// meant, and running anyway would silently change the problem.
+void check_initial_velocities(const Scenario& scenario, const Formulation& formulation,
+                              std::span<const BodyState> given, const VecX& y0) {
+  std::vector<BodyState> allowed(given.size());
+  formulation.unpack_all(y0, allowed);
+  const auto differ = [](const Vec3& a, const Vec3& b) {
+    return (a - b).norm() > 1e-9 * (a.norm() + b.norm()) + 1e-12;
+  };
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const BodySpec& body = scenario.bodies[i];
+    const auto fail = [&](const SourceLocation& where, const std::string& key, const Vec3& value,
+                          const Vec3& wanted, const char* unit) {
+      throw ScenarioError(
+          where, "bodies." + body.name + "." + key,
+          fmt::format("[{:.6g}, {:.6g}, {:.6g}] {} is not a motion the joints allow (or a motor "
+                      "prescribes); they give [{:.9g}, {:.9g}, {:.9g}]: correct it, or leave {} "
+                      "out to take what the joints allow",
+                      value.x(), value.y(), value.z(), unit, wanted.x(), wanted.y(), wanted.z(),
+                      key));
+    };
+    if (body.angular_velocity_where.line > 0 && differ(given[i].omega_W, allowed[i].omega_W)) {
+      fail(body.angular_velocity_where, "angular_velocity", given[i].omega_W, allowed[i].omega_W,
+           "rad/s");
+    }
+    if (body.velocity_where.line > 0 && differ(given[i].v_G, allowed[i].v_G)) {
+      fail(body.velocity_where, "velocity", given[i].v_G, allowed[i].v_G, "m/s");
+    }
+  }
+  // A speed motor running from the start fixes its hinge's rate from the start.
+  const auto* articulated = dynamic_cast<const ArticulatedFormulation*>(&formulation);
+  if (articulated == nullptr) return;
+  for (std::size_t j = 0; j < scenario.joints.size(); ++j) {
+    const MotorSpec& motor = scenario.joints[j].motor;
+    if (motor.kind != MotorSpec::Kind::Speed || !(motor.from <= 0.0 && 0.0 < motor.to)) continue;
+    const double rate = articulated->hinge_rate(y0, j);
+    if (std::abs(rate - motor.value) > 1e-9 * (std::abs(rate) + std::abs(motor.value)) + 1e-12) {
+      throw ScenarioError(
+          motor.where, "joints." + scenario.joints[j].name + ".motor",
+          fmt::format("the motor drives the hinge at {:.9g} rad/s from the start, but the bodies' "
+                      "angular velocities turn it at {:.9g} rad/s; give them angular velocities "
+                      "that agree, or start the motor later (from: ...)",
+                      motor.value, rate));
+    }
+  }
+}
+
+}  // namespace
 
 PreparedSimulation prepare_simulation(const Scenario& scenario) {
   const SimulateSpec& sim = scenario.simulate;
@@ -33,26 +87,46 @@ PreparedSimulation prepare_simulation(const Scenario& scenario) {
   p.t0 = 0.0;
   p.t_end = sim.duration;
   p.y0.resize(p.formulation->dimension());
-  p.formulation->pack(initial_states(scenario), p.y0);
+  const std::vector<BodyState> given = initial_states(scenario);
+  p.formulation->pack(given, p.y0);
+  check_initial_velocities(scenario, *p.formulation, given, p.y0);
   return p;
 }
 
 SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserver& observe) {
+  return run_simulation(simulation,
+                        [&](double t, std::span<const BodyState> states, const SystemQuantities& q,
+                            const RowExtras&) { observe(t, states, q); });
+}
+
+SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe) {
   const Formulation& formulation = *simulation.formulation;
   const Model& model = formulation.model();
   std::vector<BodyState> states(formulation.body_count());
+  RowExtras extras;
   SimulationResult result;
-  double E0 = 0.0, L0 = 0.0;
+  double E0 = 0.0, L0 = 0.0, KE0 = 0.0, gravity_potential0 = 0.0;
 
   const auto on_row = [&](double t, const VecX& y) {
-    for (std::size_t i = 0; i < states.size(); ++i) states[i] = formulation.unpack(y, i);
-    const SystemQuantities q = calc_system_quantities(model.bodies, states, model.gravity_W);
+    formulation.unpack_all(y, states);
+    formulation.calc_row_extras(t, y, extras);
+    SystemQuantities q = calc_system_quantities(model.bodies, states, model.gravity_W);
+    const double gravity_potential = q.potential_energy;
+    q.potential_energy += extras.elastic_energy;
+    q.total_energy += extras.elastic_energy;
     const double L = q.angular_momentum_about_origin.norm();
     if (result.rows == 0) {
       E0 = q.total_energy;
       L0 = L;
+      KE0 = q.kinetic_energy;
+      gravity_potential0 = gravity_potential;
     }
     ConservationReport& c = result.conservation;
+    double work = -(gravity_potential - gravity_potential0);
+    for (const ElementWork& e : extras.elements) work += e.work;
+    c.max_work_energy_residual =
+        std::max(c.max_work_energy_residual, std::abs(q.kinetic_energy - KE0 - work));
+    c.max_kinetic_energy = std::max(c.max_kinetic_energy, q.kinetic_energy);
     if (E0 != 0.0) {
       c.max_relative_energy_drift =
           std::max(c.max_relative_energy_drift, std::abs(q.total_energy - E0) / std::abs(E0));
@@ -66,7 +140,8 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserve
           std::max(c.max_orthonormality_error, orthonormality_error(s.R_WB));
     }
     ++result.rows;
-    observe(t, states, q);
+    observe(t, states, q, extras);
+    result.last_extras = extras;
   };
 
   const auto start = std::chrono::steady_clock::now();

@@ -26,7 +26,8 @@ struct PreparedSimulation {
 };
 
 // Throws std::invalid_argument for a combination the engine cannot run (e.g. rkmk4 on the
-// textbook formulation, which has no quaternions to move on the group).
+// textbook formulation, which has no quaternions to move on the group), and ScenarioError where
+// the bodies' given velocities disagree with what their joints allow or a motor prescribes.
 PreparedSimulation prepare_simulation(const Scenario& scenario);
 
 // Largest departures from what a free system conserves, over all output rows.
@@ -34,18 +35,28 @@ struct ConservationReport {
   double max_relative_energy_drift = 0.0;            // max |E - E0| / |E0|
   double max_relative_angular_momentum_drift = 0.0;  // max | |L| - |L0| | / |L0|, L about origin
   double max_orthonormality_error = 0.0;             // max |R^T R - I| over bodies and rows
+  // Work-energy theorem: KE - KE0 = W_gravity + sum of the elements' work (ideal joints do none);
+  // the largest departure over the rows, in J, and the largest KE it compares with.
+  double max_work_energy_residual = 0.0;
+  double max_kinetic_energy = 0.0;
 };
 
 using RowObserver = std::function<void(double t, std::span<const BodyState> states,
                                        const SystemQuantities& quantities)>;
+// The same with the row's joint reactions, element powers and works (RowExtras).
+using FullRowObserver =
+    std::function<void(double t, std::span<const BodyState> states,
+                       const SystemQuantities& quantities, const RowExtras& extras)>;
 
 struct SimulationResult {
   IntegrationReport report;
   ConservationReport conservation;
   std::size_t rows = 0;
   double wall_seconds = 0.0;  // integration and output, not reading the scenario
+  RowExtras last_extras;      // of the last row: the work each element did over the run
 };
 
+SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe);
 SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserver& observe);
 
 }  // namespace tumble

@@ -1,0 +1,57 @@
+#include "system_summary.hpp"
+
+#include <fmt/core.h>
+
+#include "tumble/multibody/articulated_formulation.hpp"
+
+namespace tumble::cli {
+
+bool energy_changes(const Scenario& scenario) {
+  if (!scenario.loads.empty() || !scenario.impulses.empty()) return true;
+  for (const JointSpec& joint : scenario.joints) {
+    if (joint.motor.kind != MotorSpec::Kind::None || std::isfinite(joint.lock_at)) return true;
+  }
+  for (const SpringSpec& spring : scenario.springs) {
+    if (spring.damping > 0.0) return true;
+  }
+  for (const TorsionalSpringSpec& spring : scenario.torsional_springs) {
+    if (spring.damping > 0.0) return true;
+  }
+  return false;
+}
+
+void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
+                          const SimulationResult& result) {
+  const std::vector<std::string> names = simulation.formulation->element_names();
+  const auto* articulated =
+      dynamic_cast<const ArticulatedFormulation*>(simulation.formulation.get());
+  if (articulated == nullptr) return;
+  const ConservationReport& c = result.conservation;
+  fmt::print(
+      "  work-energy    max |KE - KE0 - W| {:.3e} J ({:.1e} of the largest KE; W: the "
+      "work of gravity and of every element)\n",
+      c.max_work_energy_residual,
+      c.max_kinetic_energy > 0.0 ? c.max_work_energy_residual / c.max_kinetic_energy : 0.0);
+  const std::vector<ElementWork>& works = result.last_extras.elements;
+  for (std::size_t i = 0; i < names.size() && i < works.size(); ++i) {
+    fmt::print("  work           {}: {:.6g} J\n", names[i], works[i].work);
+  }
+  for (const JumpRecord& jump : articulated->jumps()) {
+    fmt::print("  t = {:<10.6g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,
+               jump.kinetic_energy_before, jump.kinetic_energy_after);
+    const Vec3& L0 = jump.angular_momentum_before_W;
+    const Vec3& L1 = jump.angular_momentum_after_W;
+    fmt::print("; L (origin) [{:.6g}, {:.6g}, {:.6g}] -> [{:.6g}, {:.6g}, {:.6g}] kg m^2/s\n",
+               L0.x(), L0.y(), L0.z(), L1.x(), L1.y(), L1.z());
+    for (std::size_t j = 0; j < jump.reaction_impulses.size(); ++j) {
+      const Vec3& F = jump.reaction_impulses[j].F_W;
+      const Vec3& M = jump.reaction_impulses[j].M_J_W;
+      fmt::print(
+          "                 reaction impulse at {}: [{:.6g}, {:.6g}, {:.6g}] N s, "
+          "[{:.6g}, {:.6g}, {:.6g}] N m s\n",
+          scenario.joints[j].name, F.x(), F.y(), F.z(), M.x(), M.y(), M.z());
+    }
+  }
+}
+
+}  // namespace tumble::cli

@@ -1,0 +1,16 @@
+#pragma once
+// The part of `tumble run`'s summary about joints and force elements: the work each element did,
+// the work-energy balance, and what happened at each impulse, lock and motor start.
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/simulation/simulation.hpp"
+
+namespace tumble::cli {
+
+// Whether anything in the scenario does work on the bodies besides gravity and conservative
+// springs (so E is not expected to stay constant).
+bool energy_changes(const Scenario& scenario);
+
+void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
+                          const SimulationResult& result);
+
+}  // namespace tumble::cli

@@ -1,0 +1,50 @@
+#pragma once
+// Joints as the scenario states them (docs/scenario.md, `joints:`), with their geometry fixed to
+// the bodies from the configuration at t = 0, and the instantaneous loads (impulses) that act
+// through them. Body index -1 is ground (the world frame, at rest).
+#include <limits>
+#include <string>
+
+#include "tumble/math/types.hpp"
+
+namespace tumble {
+
+inline constexpr int kGround = -1;
+
+// A hinge motor: while active (from <= t < to) it prescribes the relative speed (rad/s) or
+// applies the torque (N m) about the hinge axis, on the second body and against the first.
+struct HingeMotor {
+  enum class Kind { None, Speed, Torque } kind = Kind::None;
+  double value = 0.0;
+  double from = -std::numeric_limits<double>::infinity();  // s
+  double to = std::numeric_limits<double>::infinity();     // s
+
+  bool active_at(double t) const { return kind != Kind::None && from <= t && t < to; }
+};
+
+struct JointModel {
+  enum class Type { Ball, Hinge, Fixed } type = Type::Ball;
+  std::string name;
+  int body_a = kGround;        // the first body listed (may be ground)
+  int body_b = 0;              // the second: reactions are what body_a exerts on body_b
+  Vec3 p_AJ_A = Vec3::Zero();  // joint point from A's COM, A's axes (world point when A is ground)
+  Vec3 p_BJ_B = Vec3::Zero();  // joint point from B's COM, B's axes
+  Mat3 R_AB0 = Mat3::Identity();  // B's axes relative to A's at t = 0: R_WA^T R_WB
+  // Hinge: the unit axis in B's axes; the angle theta turns B relative to A about it, positive
+  // by the right-hand rule, zero at t = 0.
+  Vec3 axis_B = Vec3::UnitZ();
+  HingeMotor motor;
+  double lock_at = std::numeric_limits<double>::infinity();  // s: the hinge is rigid from then
+};
+
+// An impulse (a jump of momentum) at a body point at one instant.
+struct ImpulseLoad {
+  std::string name;
+  std::size_t body = 0;
+  Vec3 value = Vec3::Zero();  // N s: world axes, or body axes when body_frame
+  bool body_frame = false;
+  Vec3 p_GP_B = Vec3::Zero();  // point of application from the COM, body axes, m
+  double time = 0.0;           // s
+};
+
+}  // namespace tumble

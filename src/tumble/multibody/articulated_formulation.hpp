@@ -1,0 +1,116 @@
+#pragma once
+// The production formulation for systems: bodies held by joints (ball, hinge, fixed) in a tree
+// rooted at ground, in joint coordinates, integrated with Featherstone's articulated-body
+// algorithm (RBDA 2008, ch. 7): O(n) per evaluation for n bodies, and the joints hold by
+// construction (the state has no coordinates that could break them), so nothing drifts off the
+// constraints and no stabilisation is needed. Hinges that are locked or driven at a prescribed
+// speed are joints of known acceleration (hybrid dynamics, RBDA ch. 9.2); their torque is the
+// motor's or the brake's. Joint reactions come from the same passes: the spatial force across
+// joint i is I^A_i a_i + p^A_i.
+//
+// State y = [ joint coordinates | joint speeds | work ledger ]: the work each element has done
+// since t0 is integrated with the motion (its power is one more right-hand side), so the rows can
+// report it to the integrator's accuracy. Impulses, motor starts and locks are breakpoints: the
+// speeds jump there by the impulsive form of the same algorithm.
+#include <string>
+#include <vector>
+
+#include "tumble/dynamics/formulation.hpp"
+#include "tumble/multibody/kinematic_tree.hpp"
+
+namespace tumble {
+
+// A jump of the speeds at a breakpoint, for the summary.
+struct JumpRecord {
+  double t = 0.0;
+  std::string what;  // "impulse hit", "lock knob", "motor wheel starts"
+  double kinetic_energy_before = 0.0, kinetic_energy_after = 0.0;
+  Vec3 angular_momentum_before_W = Vec3::Zero();  // about the world origin
+  Vec3 angular_momentum_after_W = Vec3::Zero();
+  std::vector<JointReaction> reaction_impulses;  // N s and N m s, one per Model::joints entry
+};
+
+class ArticulatedFormulation final : public Formulation {
+ public:
+  // Throws std::invalid_argument if the joints close a loop.
+  explicit ArticulatedFormulation(Model model);
+
+  std::string_view name() const override { return "body, joint coordinates"; }
+  Eigen::Index dimension() const override { return dimension_; }
+  void derivative(double t, const VecX& y, VecX& dydt) const override;
+  std::span<const Eigen::Index> unit_quaternion_offsets() const override {
+    return quaternion_offsets_;
+  }
+  // Joint coordinates from the bodies' states: each joint takes the relative angular velocity
+  // its freedoms allow (a hinge the component along its axis); velocities the joints forbid are
+  // dropped. consistency_error() says by how much.
+  void pack(std::span<const BodyState> states, VecX& y) const override;
+  BodyState unpack(const VecX& y, std::size_t body) const override;
+  void unpack_all(const VecX& y, std::span<BodyState> states) const override;
+
+  // A new run starts with no jumps recorded.
+  void begin(double t0, const VecX& y) override;
+  void at_breakpoint(double t, VecX& y) override;
+
+  std::vector<std::string> element_names() const override;
+  void calc_row_extras(double t, const VecX& y, RowExtras& extras) const override;
+
+  const std::vector<TreeJoint>& tree() const { return tree_; }
+  const std::vector<JumpRecord>& jumps() const { return jumps_; }
+  // The hinge angle and rate of a model joint (its sign as the scenario states it).
+  double hinge_angle(const VecX& y, std::size_t joint) const;
+  double hinge_rate(const VecX& y, std::size_t joint) const;
+
+ private:
+  using SpeedMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+  using SpeedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+  // Per tree joint, what the passes compute (child axes at the child's COM).
+  struct Workspace {
+    Mat3 R_WC = Mat3::Identity();
+    Vec3 r_G_W = Vec3::Zero();
+    Transform X;                       // parent coordinates -> child coordinates
+    Vec6 velocity = Vec6::Zero();      // spatial velocity of the child
+    Vec6 bias = Vec6::Zero();          // c = v x (S qdot)
+    Vec6 external = Vec6::Zero();      // applied force (or impulse) on the child, child axes
+    Mat6 IA = Mat6::Zero();            // articulated inertia
+    Vec6 pA = Vec6::Zero();            // articulated bias force
+    MotionSubspace U;                  // IA S
+    SpeedMatrix D_inv;                 // (S^T IA S)^-1
+    SpeedVector u;                     // tau - S^T pA
+    SpeedVector tau;                   // generalized force on the joint's freedoms
+    SpeedVector qdd;                   // joint accelerations (or speed jumps)
+    Vec6 acceleration = Vec6::Zero();  // spatial acceleration (with -g at ground)
+    bool known = false;                // prescribed: qdd is given, tau follows
+  };
+  // Positions and velocities of every body from y (forward pass), into the workspace.
+  void calc_kinematics(const VecX& y, bool with_velocities) const;
+  // The articulated-body passes after calc_kinematics, in the modes of `mode_time`: the
+  // accelerations (impulsive = false), or the jumps of the speeds that the impulses in
+  // Workspace::external cause with the prescribed joints jumping by their Workspace::qdd
+  // (impulsive = true: no velocity terms, no gravity).
+  void solve(double mode_time, bool impulsive) const;
+  // Locked hinges, hinges driven at a speed, fixed joints: their acceleration is known.
+  bool prescribed(std::size_t tree_index, double mode_time) const;
+  // Applied loads and force elements on each body (into Workspace::external); their powers into
+  // rates from `offset` on, in ledger order; the springs' stored energy into elastic_energy.
+  void accumulate_element_loads(const VecX& y, double mode_time, VecX& rates, Eigen::Index offset,
+                                double* elastic_energy) const;
+  JointReaction reaction_of(std::size_t model_joint) const;
+  double kinetic_energy() const;
+  Vec3 angular_momentum_about_origin() const;  // from states_
+
+  std::vector<TreeJoint> tree_;
+  std::vector<std::size_t> slot_of_body_;  // tree index of each body's inbound joint
+  std::vector<int> slot_of_joint_;         // tree index of each model joint
+  std::vector<Eigen::Index> quaternion_offsets_;
+  Eigen::Index speeds_ = 0, ledger_ = 0, dimension_ = 0;
+  // Ledger order: loads, springs, torsional springs, motors, impulses, locks.
+  std::vector<std::size_t> motor_joints_, lock_joints_;
+  std::vector<JumpRecord> jumps_;
+  // Scratch of derivative() and the other const queries, sized once here: no allocation per call.
+  mutable std::vector<Workspace> work_;
+  mutable std::vector<BodyState> states_;
+  mutable VecX rates_;
+};
+
+}  // namespace tumble

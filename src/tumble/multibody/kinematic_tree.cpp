@@ -1,0 +1,125 @@
+#include "tumble/multibody/kinematic_tree.hpp"
+
+#include <deque>
+#include <stdexcept>
+
+namespace tumble {
+
+namespace {
+
+void set_subspace(TreeJoint& joint) {
+  switch (joint.type) {
+    case TreeJoint::Type::Free:
+      joint.nq = 7;
+      joint.nv = 6;
+      joint.S = Mat6::Identity();
+      break;
+    case TreeJoint::Type::Ball:
+      // The child's COM moves at omega_rel x (r_G - r_J) = [p_CJ]x omega_rel.
+      joint.nq = 4;
+      joint.nv = 3;
+      joint.S.resize(6, 3);
+      joint.S.topRows<3>() = Mat3::Identity();
+      joint.S.bottomRows<3>() = hat(joint.p_CJ_C);
+      break;
+    case TreeJoint::Type::Hinge:
+      joint.nq = 1;
+      joint.nv = 1;
+      joint.S.resize(6, 1);
+      joint.S.col(0).head<3>() = joint.axis_C;
+      joint.S.col(0).tail<3>() = joint.p_CJ_C.cross(joint.axis_C);
+      break;
+    case TreeJoint::Type::Fixed:
+      joint.nq = 0;
+      joint.nv = 0;
+      joint.S.resize(6, 0);
+      break;
+  }
+}
+
+TreeJoint from_model_joint(const JointModel& joint, int index, bool reversed) {
+  TreeJoint t;
+  t.type = joint.type == JointModel::Type::Ball    ? TreeJoint::Type::Ball
+           : joint.type == JointModel::Type::Hinge ? TreeJoint::Type::Hinge
+                                                   : TreeJoint::Type::Fixed;
+  t.model_joint = index;
+  t.reversed = reversed;
+  if (!reversed) {
+    t.parent = joint.body_a;
+    t.child = static_cast<std::size_t>(joint.body_b);
+    t.p_PJ_P = joint.p_AJ_A;
+    t.p_CJ_C = joint.p_BJ_B;
+    t.R_PC0 = joint.R_AB0;
+    t.axis_C = joint.axis_B;
+  } else {
+    // B is the parent: A turns relative to B by -theta about the same line, so about -axis in A's
+    // axes by +theta, and theta keeps the sign the scenario gave it.
+    t.parent = joint.body_b;
+    t.child = static_cast<std::size_t>(joint.body_a);
+    t.p_PJ_P = joint.p_BJ_B;
+    t.p_CJ_C = joint.p_AJ_A;
+    t.R_PC0 = joint.R_AB0.transpose();
+    t.axis_C = -(joint.R_AB0 * joint.axis_B);
+  }
+  set_subspace(t);
+  return t;
+}
+
+}  // namespace
+
+std::vector<TreeJoint> build_kinematic_tree(const Model& model) {
+  const std::size_t n = model.bodies.size();
+  std::vector<bool> reached(n, false), joint_used(model.joints.size(), false);
+  std::vector<TreeJoint> tree;
+  std::deque<int> frontier;
+
+  // Breadth first from ground, then from each body not yet reached (hung from ground by a free
+  // joint), so parents always precede children.
+  const auto grow = [&](int start) {
+    frontier.push_back(start);
+    while (!frontier.empty()) {
+      const int body = frontier.front();
+      frontier.pop_front();
+      for (std::size_t j = 0; j < model.joints.size(); ++j) {
+        const JointModel& joint = model.joints[j];
+        if (joint_used[j] || (joint.body_a != body && joint.body_b != body)) continue;
+        const bool reversed = joint.body_b == body;
+        const int other = reversed ? joint.body_a : joint.body_b;
+        joint_used[j] = true;
+        if (other == kGround || reached[static_cast<std::size_t>(other)]) {
+          throw std::invalid_argument("joint '" + joint.name +
+                                      "' closes a loop (its bodies are already connected through "
+                                      "other joints); tumble solves tree-structured systems");
+        }
+        reached[static_cast<std::size_t>(other)] = true;
+        tree.push_back(from_model_joint(joint, static_cast<int>(j), reversed));
+        frontier.push_back(other);
+      }
+    }
+  };
+  grow(kGround);
+  for (std::size_t b = 0; b < n; ++b) {
+    if (reached[b]) continue;
+    TreeJoint free;
+    free.type = TreeJoint::Type::Free;
+    free.parent = kGround;
+    free.child = b;
+    set_subspace(free);
+    reached[b] = true;
+    tree.push_back(free);
+    grow(static_cast<int>(b));
+  }
+
+  Eigen::Index q = 0;
+  for (TreeJoint& joint : tree) {
+    joint.q = q;
+    q += joint.nq;
+  }
+  for (TreeJoint& joint : tree) {
+    joint.v = q;
+    q += joint.nv;
+  }
+  return tree;
+}
+
+}  // namespace tumble

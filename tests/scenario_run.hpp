@@ -1,0 +1,41 @@
+#pragma once
+// Runs a scenario written inline in a test through the same path as `tumble run` (read, prepare,
+// integrate) and keeps every output row, for tests of whole problems.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tumble/multibody/articulated_formulation.hpp"
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/simulation/simulation.hpp"
+
+namespace tumble::test {
+
+struct Row {
+  double t = 0.0;
+  std::vector<BodyState> states;
+  SystemQuantities quantities;
+  RowExtras extras;
+};
+
+struct ScenarioRun {
+  Scenario scenario;
+  std::vector<Row> rows;
+  SimulationResult result;
+  std::vector<JumpRecord> jumps;  // articulated systems only
+};
+
+inline Scenario load_inline_scenario(const std::string& yaml, const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tumble_scenario_run";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path path = dir / (name + ".yaml");
+  std::ofstream(path) << yaml;
+  return load_scenario(path.string(), {});
+}
+
+ScenarioRun run_inline_scenario(const std::string& yaml, const std::string& name);
+
+}  // namespace tumble::test

@@ -117,7 +117,8 @@ TEST(JointScenario, ForceElementsNameTheirBodiesAndNonNegativeConstants) {
 }
 
 TEST(JointScenario, TheTrajectoryHasReactionAndWorkColumns) {
-  const std::string dir = (std::filesystem::temp_directory_path() / "tumble_joint_cli").string();
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / "tumble_joint_cli_columns").string();
   std::filesystem::create_directories(dir);
   const std::string path = dir + "/bat.yaml";
   std::ofstream(path) << kBat

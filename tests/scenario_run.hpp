@@ -28,8 +28,12 @@ struct ScenarioRun {
   std::vector<JumpRecord> jumps;  // articulated systems only
 };
 
+// The file goes into a directory of the running test's own: ctest runs tests in parallel.
 inline Scenario load_inline_scenario(const std::string& yaml, const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tumble_scenario_run";
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "tumble_scenario_run" /
+      (test != nullptr ? std::string(test->test_suite_name()) + "." + test->name() : "none");
   std::filesystem::create_directories(dir);
   const std::filesystem::path path = dir / (name + ".yaml");
   std::ofstream(path) << yaml;

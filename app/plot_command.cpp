@@ -3,8 +3,6 @@
 // to a temporary file and runs gnuplot from an argument vector (no shell). The figure is drawn
 // under a temporary name beside the destination and renamed: it appears only when complete.
 #include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -20,10 +18,9 @@
 #include <system_error>
 #include <vector>
 
+#include "child_process.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
-
-extern char** environ;
 
 namespace tumble::cli {
 namespace {
@@ -197,39 +194,10 @@ std::optional<fs::path> find_on_path(const std::string& program) {
   return std::nullopt;
 }
 
-// Runs gnuplot without a shell: stdin from /dev/null, stdout and stderr shared with tumble so its
-// messages reach the user. Returns the wait status.
-int run_gnuplot(const fs::path& gnuplot, const fs::path& script, const fs::path& output,
-                const fs::path& csv) {
-  std::vector<std::string> args = {gnuplot.string(), "--default-settings", "-c",
-                                   script.string(),  output.string(),      csv.string()};
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  pid_t pid = 0;
-  const int spawn_error =
-      posix_spawn(&pid, gnuplot.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawn_error != 0) {
-    throw PlotError(kOutputError, fmt::format("cannot run {}: {}", gnuplot.string(),
-                                              std::generic_category().message(spawn_error)));
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw PlotError(kOutputError, "waiting for gnuplot: " + errno_text());
-  }
-  return status;
-}
-
 int plot(const PlotArguments& args) {
   const fs::path csv(args.csv);
   const fs::path output(args.output);
-  std::string extension = output.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lowercase_extension(output);
   if (extension != ".png" && extension != ".svg") {
     throw PlotError(kBadCommandLine,
                     fmt::format("-o {}: the figure's name must end in .png or .svg", args.output));
@@ -283,13 +251,19 @@ int plot(const PlotArguments& args) {
 
   const fs::path absolute_csv = fs::absolute(csv, error);
   if (error) throw PlotError(kBadCommandLine, fmt::format("{}: {}", args.csv, error.message()));
-  const int status = run_gnuplot(*gnuplot, script_name, partial, absolute_csv);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    throw PlotError(
-        kOutputError,
-        fmt::format("gnuplot failed ({} {}); nothing was written to {}",
-                    WIFEXITED(status) ? "exit status" : "signal",
-                    WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status), args.output));
+  // gnuplot's own messages go straight to the user.
+  ChildOutcome gnuplot_run;
+  try {
+    gnuplot_run = run_child({gnuplot->string(), "--default-settings", "-c", script_name,
+                             partial.string(), absolute_csv.string()},
+                            ChildOutput::Inherit);
+  } catch (const ChildProcessError& e) {
+    throw PlotError(kOutputError,
+                    fmt::format("{}; nothing was written to {}", e.what(), args.output));
+  }
+  if (!gnuplot_run.succeeded()) {
+    throw PlotError(kOutputError, fmt::format("gnuplot failed ({}); nothing was written to {}",
+                                              gnuplot_run.how_it_ended(), args.output));
   }
   if (fs::file_size(partial, error) == 0 || error) {
     throw PlotError(kOutputError,

@@ -1,37 +1,23 @@
 #include "video_export.hpp"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/core.h>
 #include <algorithm>
-#include <array>
-#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <csignal>
 #include <cstdlib>
-#include <cstring>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
-extern char** environ;
+#include "child_process.hpp"
 
 namespace tumble::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 // One side of WIDTHxHEIGHT: digits only, 16 to 8192 pixels.
 int parse_side(std::string_view text, std::string_view size) {
@@ -62,108 +48,6 @@ std::string last_line(std::string text) {
   return line;
 }
 
-// While the renderer runs, SIGINT, SIGTERM and SIGHUP are passed on to it instead of ending
-// tumble at once: the script then removes its partial video, and tumble, returning normally,
-// removes the temporary page. (Ctrl-C reaches both anyway; a signal sent to tumble alone would
-// otherwise leave the renderer running.)
-volatile std::sig_atomic_t g_renderer_pid = 0;
-volatile std::sig_atomic_t g_signal = 0;
-
-extern "C" void forward_signal(int signal_number) {
-  g_signal = signal_number;
-  if (g_renderer_pid > 0) ::kill(static_cast<pid_t>(g_renderer_pid), signal_number);
-}
-
-class ForwardSignals {
- public:
-  ForwardSignals() {
-    g_signal = 0;
-    g_renderer_pid = 0;
-    struct sigaction action {};
-    action.sa_handler = forward_signal;
-    sigemptyset(&action.sa_mask);
-    for (std::size_t i = 0; i < kSignals.size(); ++i) {
-      ::sigaction(kSignals[i], &action, &previous_[i]);
-    }
-  }
-  ForwardSignals(const ForwardSignals&) = delete;
-  ForwardSignals& operator=(const ForwardSignals&) = delete;
-  ~ForwardSignals() {
-    g_renderer_pid = 0;
-    for (std::size_t i = 0; i < kSignals.size(); ++i) {
-      ::sigaction(kSignals[i], &previous_[i], nullptr);
-    }
-  }
-  // Started: a signal that came before the pid was known is passed on now.
-  void started(pid_t pid) {
-    g_renderer_pid = pid;
-    if (g_signal != 0) ::kill(pid, g_signal);
-  }
-  int received() const { return g_signal; }
-
- private:
-  static constexpr std::array<int, 3> kSignals = {SIGINT, SIGTERM, SIGHUP};
-  std::array<struct sigaction, 3> previous_{};
-};
-
-struct ScriptResult {
-  int wait_status = 0;
-  std::string output;  // the script's stdout and stderr together, its last 8 KB
-};
-
-// Runs argv[0] (searched on PATH) with stdin from /dev/null and stdout and stderr into a pipe
-// that is read here: the script's messages become tumble's one-line reason, and nothing it
-// prints can mix into the summary on stdout.
-ScriptResult run_capturing(std::vector<std::string> args) {
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::array<int, 2> pipe_fds{};
-  if (::pipe2(pipe_fds.data(), O_CLOEXEC) != 0) {
-    throw VideoError("cannot make a pipe: " + std::generic_category().message(errno));
-  }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDERR_FILENO);
-  ForwardSignals forward;
-  pid_t pid = 0;
-  const int spawn_error = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(pipe_fds[1]);
-  if (spawn_error != 0) {
-    ::close(pipe_fds[0]);
-    throw VideoError(spawn_error == ENOENT
-                         ? fmt::format("{} not found: install Node.js (scripts/setup.sh) or set "
-                                       "TUMBLE_NODE to the node executable",
-                                       args[0])
-                         : fmt::format("cannot run {}: {}", args[0],
-                                       std::generic_category().message(spawn_error)));
-  }
-  forward.started(pid);
-  ScriptResult result;
-  std::array<char, 4096> buffer{};
-  for (;;) {
-    const ssize_t n = ::read(pipe_fds[0], buffer.data(), buffer.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    result.output.append(buffer.data(), static_cast<std::size_t>(n));
-    constexpr std::size_t kKeep = 8192;
-    if (result.output.size() > 2 * kKeep) result.output.erase(0, result.output.size() - kKeep);
-  }
-  ::close(pipe_fds[0]);
-  while (::waitpid(pid, &result.wait_status, 0) < 0) {
-    if (errno != EINTR) {
-      throw VideoError("waiting for the renderer: " + std::generic_category().message(errno));
-    }
-  }
-  if (forward.received() != 0) {
-    throw VideoError(fmt::format("interrupted ({})", ::strsignal(forward.received())));
-  }
-  return result;
-}
-
 }  // namespace
 
 TemporaryDirectory::TemporaryDirectory() {
@@ -184,7 +68,7 @@ TemporaryDirectory::~TemporaryDirectory() {
 VideoRequest parse_video_request(const RunArguments& args) {
   VideoRequest video;
   video.path = args.video;
-  const std::string extension = lowercase(video.path.extension().string());
+  const std::string extension = lowercase_extension(video.path);
   if (extension != ".mp4" && extension != ".gif") {
     throw std::invalid_argument(
         fmt::format("--video {}: the video's name must end in .mp4 or .gif", args.video));
@@ -243,25 +127,33 @@ void render_video(const fs::path& page, const VideoRequest& video, long frames) 
   if (!error) fs::create_directories(output.parent_path(), error);
   if (error) throw VideoError(fmt::format("cannot write it: {}", error.message()));
 
-  const ScriptResult result = run_capturing({
-      getenv_or("TUMBLE_NODE", "node"),
-      TUMBLE_VIDEO_SCRIPT,
-      fs::absolute(page).string(),
-      output.string(),
-      std::to_string(video.width),
-      std::to_string(video.height),
-      std::to_string(video.fps),
-      fmt::format("{}", video.speed),  // the shortest text that reads back as the same double
-      std::to_string(frames),
-      getenv_or("TUMBLE_CHROMIUM", "/usr/bin/chromium"),
-  });
-  const int status = result.wait_status;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  const std::string node = getenv_or("TUMBLE_NODE", "node");
+  ChildOutcome result;
+  try {
+    result = run_child(
+        {
+            node,
+            TUMBLE_VIDEO_SCRIPT,
+            fs::absolute(page).string(),
+            output.string(),
+            std::to_string(video.width),
+            std::to_string(video.height),
+            std::to_string(video.fps),
+            fmt::format("{}", video.speed),  // the shortest text that reads back as the same double
+            std::to_string(frames),
+            getenv_or("TUMBLE_CHROMIUM", "/usr/bin/chromium"),
+        },
+        ChildOutput::Capture);
+  } catch (const ChildProcessError& e) {
+    throw VideoError(e.not_found() ? fmt::format("{} not found: install Node.js (scripts/setup.sh) "
+                                                 "or set TUMBLE_NODE to the node executable",
+                                                 node)
+                                   : std::string(e.what()));
+  }
+  if (!result.succeeded()) {
     const std::string reason = last_line(result.output);
     throw VideoError(reason.empty()
-                         ? fmt::format("{} failed ({} {})", TUMBLE_VIDEO_SCRIPT,
-                                       WIFEXITED(status) ? "exit status" : "signal",
-                                       WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status))
+                         ? fmt::format("{} failed ({})", TUMBLE_VIDEO_SCRIPT, result.how_it_ended())
                          : reason);
   }
   if (fs::file_size(output, error) == 0 || error) {

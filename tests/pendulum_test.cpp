@@ -45,6 +45,19 @@ std::vector<double> upward_zero_crossings(const std::vector<double>& t,
   return crossings;
 }
 
+// The upward zero crossings of a swing angle about y, read from each row's COM by angle_of (its
+// rate is omega_W.y, with the sign convention of the scenarios below).
+template <typename AngleOf>
+std::vector<double> upward_crossings_of(const std::vector<Row>& rows, AngleOf angle_of) {
+  std::vector<double> t, theta, rate;
+  for (const Row& row : rows) {
+    t.push_back(row.t);
+    theta.push_back(angle_of(row.states[0].r_G));
+    rate.push_back(row.states[0].omega_W.y());
+  }
+  return upward_zero_crossings(t, theta, rate);
+}
+
 struct Cylinder {
   double mass, radius, length;
   double transverse_inertia() const { return mass * (3 * radius * radius + length * length) / 12; }
@@ -83,14 +96,8 @@ TEST(CompoundPendulum, PeriodIsTheExactEllipticPeriod) {
     const double T_exact = 2 / kPi * T_small * boost::math::ellint_1(std::sin(c.theta0 / 2));
     const auto run = run_inline_scenario(
         bat_scenario(c.body, c.L, c.theta0, 2.6 * T_exact, T_exact / 2000), "pendulum");
-    std::vector<double> t, theta, rate;
-    for (const Row& row : run.rows) {
-      const BodyState& s = row.states[0];
-      t.push_back(row.t);
-      theta.push_back(std::atan2(-s.r_G.x(), -s.r_G.z()));
-      rate.push_back(s.omega_W.y());
-    }
-    const std::vector<double> up = upward_zero_crossings(t, theta, rate);
+    const std::vector<double> up = upward_crossings_of(
+        run.rows, [](const Vec3& r_G) { return std::atan2(-r_G.x(), -r_G.z()); });
     ASSERT_GE(up.size(), 2u);
     EXPECT_NEAR(up[1] - up[0], T_exact, 1e-8 * T_exact) << "theta0 " << c.theta0;
     if (c.theta0 < 0.1) {
@@ -218,13 +225,8 @@ TEST(InvertedMast, SmallOscillationFrequency) {
     const double T = 2 * kPi / omega_n;
     const auto run = run_inline_scenario(
         mast_scenario(M, length, radius, k, 1e-4 * omega_n, 2.6 * T, T / 2000), "mast");
-    std::vector<double> t, theta, rate;
-    for (const Row& row : run.rows) {
-      t.push_back(row.t);
-      theta.push_back(std::atan2(row.states[0].r_G.x(), row.states[0].r_G.z()));
-      rate.push_back(row.states[0].omega_W.y());
-    }
-    const std::vector<double> up = upward_zero_crossings(t, theta, rate);
+    const std::vector<double> up =
+        upward_crossings_of(run.rows, [](const Vec3& r_G) { return std::atan2(r_G.x(), r_G.z()); });
     ASSERT_GE(up.size(), 2u);
     EXPECT_NEAR(up[1] - up[0], T, 1e-7 * T) << "k / (M g L / 2) = " << ratio;
     // Elastic energy is part of E: with it E holds.

@@ -43,6 +43,14 @@ struct Model {
   double next_load_switch(double t) const;
 };
 
+// What one active load does to its body at orientation R_WB: the force (world) and its moment
+// about the COM (world).
+struct LoadOnBody {
+  Vec3 F_W = Vec3::Zero();
+  Vec3 M_G_W = Vec3::Zero();
+};
+LoadOnBody calc_load_on_body(const AppliedLoad& load, const Mat3& R_WB);
+
 // Resultant of the applied loads on one body (gravity excluded): the force (world) and the
 // moment about the COM (world), for orientation R_WB. The loads that act are those active at
 // `schedule_time`, the last schedule edge reached (not the current time: the last stage of a step

@@ -179,16 +179,10 @@ void ArticulatedFormulation::accumulate_element_loads(const VecX& y, double mode
     double power = 0.0;
     if (load.active_at(mode_time)) {
       const BodyState& s = states_[load.body];
-      const Vec3 value_W = load.body_frame ? Vec3(s.R_WB * load.value) : load.value;
-      const int body = static_cast<int>(load.body);
-      if (load.kind == AppliedLoad::Kind::Torque) {
-        add(body, Vec3::Zero(), value_W);
-        power = value_W.dot(s.omega_W);
-      } else {
-        const Vec3 p_GP_W = s.R_WB * load.p_GP_B;
-        add(body, value_W, p_GP_W.cross(value_W));
-        power = value_W.dot(velocity_of_point(s.v_G, s.omega_W, p_GP_W));
-      }
+      const LoadOnBody on_body = calc_load_on_body(load, s.R_WB);
+      add(static_cast<int>(load.body), on_body.F_W, on_body.M_G_W);
+      // F . v_P + M_G . omega with M_G = p_GP x F: the force's power at its point.
+      power = on_body.F_W.dot(s.v_G) + on_body.M_G_W.dot(s.omega_W);
     }
     rates(slot++) = power;
   }
@@ -320,15 +314,23 @@ void ArticulatedFormulation::derivative(double /*t*/, const VecX& y, VecX& dydt)
     }
     if (joint.nv > 0) dydt.segment(joint.v, joint.nv) = w.qdd;
   }
+  write_joint_powers(y, dydt, ledger_);
+}
+
+Eigen::Index ArticulatedFormulation::first_motor_entry() const {
+  return static_cast<Eigen::Index>(model_.loads.size() + model_.springs.size() +
+                                   model_.torsional_springs.size());
+}
+
+void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,
+                                                Eigen::Index offset) const {
   // Motors work at tau theta'; impulses and locks act only at their instants.
-  Eigen::Index slot =
-      ledger_ + static_cast<Eigen::Index>(model_.loads.size() + model_.springs.size() +
-                                          model_.torsional_springs.size());
+  Eigen::Index entry = offset + first_motor_entry();
   for (const std::size_t j : motor_joints_) {
     const std::size_t k = static_cast<std::size_t>(slot_of_joint_[j]);
-    dydt(slot++) = work_[k].tau(0) * y(tree_[k].v);
+    rates(entry++) = work_[k].tau(0) * y(tree_[k].v);
   }
-  for (; slot < dimension_; ++slot) dydt(slot) = 0.0;
+  for (; entry < rates.size(); ++entry) rates(entry) = 0.0;
 }
 
 void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) const {
@@ -414,13 +416,7 @@ void ArticulatedFormulation::calc_row_extras(double /*t*/, const VecX& y, RowExt
   solve(schedule_time_, false);
   extras.joints.resize(model_.joints.size());
   for (std::size_t j = 0; j < model_.joints.size(); ++j) extras.joints[j] = reaction_of(j);
-  Eigen::Index slot = static_cast<Eigen::Index>(model_.loads.size() + model_.springs.size() +
-                                                model_.torsional_springs.size());
-  for (const std::size_t j : motor_joints_) {
-    const std::size_t k = static_cast<std::size_t>(slot_of_joint_[j]);
-    rates_(slot++) = work_[k].tau(0) * y(tree_[k].v);
-  }
-  for (; slot < rates_.size(); ++slot) rates_(slot) = 0.0;
+  write_joint_powers(y, rates_, 0);
   extras.elements.resize(static_cast<std::size_t>(rates_.size()));
   for (Eigen::Index i = 0; i < rates_.size(); ++i) {
     extras.elements[static_cast<std::size_t>(i)] = {rates_(i), y(ledger_ + i)};
@@ -491,9 +487,7 @@ void ArticulatedFormulation::at_breakpoint(double t, VecX& y) {
   record.kinetic_energy_after = kinetic_energy();
   record.angular_momentum_after_W = angular_momentum_about_origin();
 
-  Eigen::Index slot =
-      ledger_ + static_cast<Eigen::Index>(model_.loads.size() + model_.springs.size() +
-                                          model_.torsional_springs.size());
+  Eigen::Index slot = ledger_ + first_motor_entry();
   for (const std::size_t j : motor_joints_) {
     const std::size_t k = static_cast<std::size_t>(slot_of_joint_[j]);
     const JointModel& joint = model_.joints[j];

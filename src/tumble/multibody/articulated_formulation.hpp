@@ -95,6 +95,11 @@ class ArticulatedFormulation final : public Formulation {
   // rates from `offset` on, in ledger order; the springs' stored energy into elastic_energy.
   void accumulate_element_loads(const VecX& y, double mode_time, VecX& rates, Eigen::Index offset,
                                 double* elastic_energy) const;
+  // Ledger entry of the first motor (after the loads, springs and torsional springs).
+  Eigen::Index first_motor_entry() const;
+  // Motors' powers (tau theta', after solve()) and zero for impulses and locks, into rates from
+  // offset + first_motor_entry() to the end.
+  void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
   JointReaction reaction_of(std::size_t model_joint) const;
   double kinetic_energy() const;
   Vec3 angular_momentum_about_origin() const;  // from states_

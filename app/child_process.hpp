@@ -1,0 +1,45 @@
+#pragma once
+// Running a helper program (gnuplot for `tumble plot`, the video renderer for `tumble run
+// --video`) without a shell, so paths with spaces or quotes pass through untouched.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tumble::cli {
+
+// The program could not be started or waited for, or tumble was interrupted while it ran.
+class ChildProcessError : public std::runtime_error {
+ public:
+  ChildProcessError(const std::string& message, bool not_found)
+      : std::runtime_error(message), not_found_(not_found) {}
+  bool not_found() const { return not_found_; }  // no such program (on PATH)
+
+ private:
+  bool not_found_;
+};
+
+enum class ChildOutput {
+  Inherit,  // stdout and stderr shared with tumble: the program speaks to the user
+  Capture,  // read into ChildOutcome::output (its last 8 KB), kept out of tumble's summary
+};
+
+struct ChildOutcome {
+  int wait_status = 0;
+  std::string output;
+
+  bool succeeded() const;
+  // "exit status 3" or "signal 9".
+  std::string how_it_ended() const;
+};
+
+// Runs args[0] (searched on PATH unless it holds a '/') with stdin from /dev/null and waits for
+// it. While it runs, SIGINT, SIGTERM and SIGHUP sent to tumble are passed on to it instead of
+// ending tumble at once, so the program cleans up after itself and tumble then removes its own
+// temporary files; ChildProcessError says the run was interrupted.
+ChildOutcome run_child(std::vector<std::string> args, ChildOutput output);
+
+// The file's extension in lower case: ".png" for "Figure.PNG".
+std::string lowercase_extension(const std::filesystem::path& path);
+
+}  // namespace tumble::cli

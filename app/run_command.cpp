@@ -48,11 +48,13 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   fmt::print("  wall time      {:.3f} ms (integration and output)\n", 1e3 * result.wall_seconds);
   const bool forces_act = energy_changes(scenario);
   const bool gravity_acts = scenario.gravity_W.squaredNorm() > 0.0;
-  fmt::print("  energy E       max relative drift {:.3e}{}\n",
-             result.conservation.max_relative_energy_drift,
-             forces_act
-                 ? " (forces, motors, dampers, impulses or locks do work: E is not conserved)"
-                 : "");
+  fmt::print(
+      "  energy E       max relative drift {:.3e}{}\n",
+      result.conservation.max_relative_energy_drift,
+      forces_act
+          ? " (forces, motors, dampers, impulses, locks, friction or impacts do work: E is not "
+            "conserved)"
+          : "");
   fmt::print("  |L| (origin)   max relative drift {:.3e}{}\n",
              result.conservation.max_relative_angular_momentum_drift,
              forces_act || gravity_acts ? " (external moments act: |L| is not conserved)" : "");
@@ -138,10 +140,11 @@ int run_command(const RunArguments& args) {
   std::optional<TrajectoryCsvWriter> writer;
   try {
     std::filesystem::create_directories(trajectory.parent_path());
-    std::vector<std::string> bodies, joints;
+    std::vector<std::string> bodies, joints, contacts;
     for (const BodySpec& b : scenario.bodies) bodies.push_back(b.name);
     for (const JointSpec& j : scenario.joints) joints.push_back(j.name);
-    writer.emplace(trajectory, bodies, joints, simulation->formulation->element_names());
+    for (const ContactSpec& c : scenario.contacts) contacts.push_back(c.name);
+    writer.emplace(trajectory, bodies, joints, contacts, simulation->formulation->element_names());
   } catch (const std::exception& e) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
     return kOutputError;

@@ -17,6 +17,9 @@ bool energy_changes(const Scenario& scenario) {
   for (const TorsionalSpringSpec& spring : scenario.torsional_springs) {
     if (spring.damping > 0.0) return true;
   }
+  for (const ContactSpec& contact : scenario.contacts) {
+    if (contact.friction > 0.0 || contact.restitution < 1.0) return true;
+  }
   return false;
 }
 
@@ -35,6 +38,18 @@ void print_system_summary(const Scenario& scenario, const PreparedSimulation& si
   const std::vector<ElementWork>& works = result.last_extras.elements;
   for (std::size_t i = 0; i < names.size() && i < works.size(); ++i) {
     fmt::print("  work           {}: {:.6g} J\n", names[i], works[i].work);
+  }
+  // Contact events in time order: the first ones in full (a bouncing ball has dozens).
+  constexpr std::size_t kContactEventsShown = 24;
+  const std::vector<ContactEventRecord>& events = articulated->contact_events();
+  for (std::size_t i = 0; i < events.size() && i < kContactEventsShown; ++i) {
+    fmt::print("  t = {:<10.8g} {}: {}\n", events[i].t, scenario.contacts[events[i].contact].name,
+               events[i].what);
+  }
+  if (events.size() > kContactEventsShown) {
+    fmt::print("  ...            {} more contact events; the last at t = {:.8g}: {}: {}\n",
+               events.size() - kContactEventsShown, events.back().t,
+               scenario.contacts[events.back().contact].name, events.back().what);
   }
   for (const JumpRecord& jump : articulated->jumps()) {
     fmt::print("  t = {:<10.6g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,

@@ -184,12 +184,13 @@ BENCHMARK_CAPTURE(BM_ExampleIntegrationOnly, bat_struck, "bat_struck")
 BENCHMARK_CAPTURE(BM_ExampleIntegrationOnly, gyroscope, "gyroscope")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExampleIntegrationOnly, cubli, "cubli")->Unit(benchmark::kMillisecond);
 
-// The gyroscope's fast spin (100 rad/s) makes it the one example over 10 ms with dopri5; the
-// eighth-order method at the same rtol takes a third of the evaluations.
-void BM_GyroscopeDop853(benchmark::State& state) {
-  time_example(state, "gyroscope", true, "dop853");
+// The gyroscope's fast spin (100 rad/s) made it the one example over 10 ms with dopri5, so the
+// example runs dop853 (about 7x fewer steps at the same rtol); this times dopri5 on it for
+// comparison, integration only.
+void BM_ExampleGyroscopeDopri5(benchmark::State& state) {
+  time_example(state, "gyroscope", false, "dopri5");
 }
-BENCHMARK(BM_GyroscopeDop853)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ExampleGyroscopeDopri5)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace tumble

@@ -3,6 +3,7 @@
 // start() has sized the workspace.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,53 @@ TEST(NoAllocation, StepsOfAJointedSystem) {
     for (int i = 0; i < 50 && integrator->t() < 1.0; ++i) {
       ASSERT_EQ(integrator->step(1.0), StepOutcome::Ok);
       integrator->dense_output(0.5 * (integrator->t_previous() + integrator->t()), y_dense);
+    }
+    EXPECT_EQ(allocations.count(), 0) << method;
+  }
+}
+
+// A sphere rolling down a ramp and a disk sliding on the floor: both contact modes, whose steps
+// solve for the contact forces, project onto the constraints and evaluate the events.
+TEST(NoAllocation, StepsOfBodiesInContact) {
+  Model m;
+  m.bodies.push_back(RigidBody::make("ball", 1.0, Vec3(0.004, 0.004, 0.004).asDiagonal()));
+  m.bodies.push_back(RigidBody::make("disk", 0.2, Vec3(0.0005, 0.0005, 0.001).asDiagonal()));
+  PlaneContact ramp;
+  ramp.body = 0;
+  ramp.surface = {ContactSurface::Kind::Sphere, 0.1, 0.0};
+  ramp.normal_W = Vec3(0.5, 0.0, std::sqrt(0.75));
+  ramp.friction = 0.9;
+  PlaneContact floor;
+  floor.body = 1;
+  floor.surface = {ContactSurface::Kind::Circle, 0.1, 0.0};
+  floor.point_W = Vec3(0.0, 0.0, -1.0);
+  floor.friction = 0.2;
+  m.contacts = {ramp, floor};
+  for (const std::string method : {"dopri5", "dop853", "rk4", "rkmk4"}) {
+    auto system = make_formulation("body", m);
+    StepControl control;
+    control.rtol = 1e-9;
+    control.atol = 1e-12;
+    control.fixed_step = 0.01;
+    auto integrator = make_integrator(method, control);
+    std::vector<BodyState> states(2);
+    states[0].r_G = 0.1 * ramp.normal_W;
+    states[1].r_G = Vec3(0.0, 0.0, -0.9);
+    states[1].R_WB = rotation_from_axis_angle(Vec3::UnitX(), 1.5707963267948966);
+    states[1].v_G = Vec3(2.0, 0.0, 0.0);
+    states[1].omega_W = Vec3(0.0, -60.0, 0.0);
+    VecX y0(system->dimension()), y_dense(system->dimension());
+    VecX g(static_cast<Eigen::Index>(system->events().size()));
+    system->pack(states, y0);
+    system->begin(0.0, y0);
+    integrator->start(*system, 0.0, y0, 1.0);
+    integrator->step(1.0);
+    test::AllocationCounter allocations;
+    for (int i = 0; i < 50 && integrator->t() < 1.0; ++i) {
+      ASSERT_EQ(integrator->step(1.0), StepOutcome::Ok);
+      integrator->dense_output(0.5 * (integrator->t_previous() + integrator->t()), y_dense);
+      system->event_functions(integrator->t(), integrator->y(), g);
+      system->refresh_event_functions(integrator->t(), integrator->y());
     }
     EXPECT_EQ(allocations.count(), 0) << method;
   }

@@ -18,20 +18,7 @@ const std::string kBat =
     "  bat: {shape: cylinder, radius: 0.03, length: 0.8, mass: 1, position: [0, 0, -0.5]}\n";  // 3
 const std::string kSimulate = "simulate: {duration: 0.1}\n";
 
-// Reads and prepares the text, expecting a ScenarioError at line:column about key, saying why.
-void expect_error(const std::string& text, int line, int column, const std::string& key,
-                  const std::string& why) {
-  try {
-    const Scenario scenario = test::load_inline_scenario(text, "invalid_joint");
-    prepare_simulation(scenario);
-    ADD_FAILURE() << "no error; expected one about " << key;
-  } catch (const ScenarioError& error) {
-    EXPECT_EQ(error.where().line, line) << error.what();
-    EXPECT_EQ(error.where().column, column) << error.what();
-    EXPECT_EQ(error.key(), key) << error.what();
-    EXPECT_NE(error.why().find(why), std::string::npos) << error.what();
-  }
-}
+using test::expect_error;
 
 TEST(JointScenario, AJointNamesKnownBodiesAndATypeItHas) {
   expect_error(kBat + "joints:\n  knob: {type: hing, body: bat, at: [0, 0, 0]}\n" + kSimulate, 5,

@@ -18,32 +18,9 @@ namespace {
 
 using test::Row;
 using test::run_inline_scenario;
+using test::upward_zero_crossings;
 constexpr double kG = 9.81;
 constexpr double kPi = std::numbers::pi;
-
-// Times where theta(t) crosses zero upwards, from the rows by cubic Hermite interpolation on
-// theta and its rate (error ~ h^4 theta'''' / 384: below 1e-12 of a period at 2000 rows each).
-std::vector<double> upward_zero_crossings(const std::vector<double>& t,
-                                          const std::vector<double>& theta,
-                                          const std::vector<double>& rate) {
-  std::vector<double> crossings;
-  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
-    if (!(theta[i] < 0.0 && theta[i + 1] >= 0.0)) continue;
-    const double h = t[i + 1] - t[i];
-    const auto hermite = [&](double s) {
-      const double s2 = s * s, s3 = s2 * s;
-      return (2 * s3 - 3 * s2 + 1) * theta[i] + (s3 - 2 * s2 + s) * h * rate[i] +
-             (-2 * s3 + 3 * s2) * theta[i + 1] + (s3 - s2) * h * rate[i + 1];
-    };
-    double lo = 0.0, hi = 1.0;
-    for (int k = 0; k < 60; ++k) {
-      const double mid = 0.5 * (lo + hi);
-      (hermite(mid) < 0.0 ? lo : hi) = mid;
-    }
-    crossings.push_back(t[i] + 0.5 * (lo + hi) * h);
-  }
-  return crossings;
-}
 
 // The upward zero crossings of a swing angle about y, read from each row's COM by angle_of (its
 // rate is omega_W.y, with the sign convention of the scenarios below).

@@ -15,8 +15,45 @@ ScenarioRun run_inline_scenario(const std::string& yaml, const std::string& name
   EXPECT_TRUE(run.result.report.completed) << run.result.report.failure;
   if (const auto* a = dynamic_cast<const ArticulatedFormulation*>(simulation.formulation.get())) {
     run.jumps = a->jumps();
+    run.contact_events = a->contact_events();
   }
   return run;
+}
+
+std::vector<double> upward_zero_crossings(const std::vector<double>& t,
+                                          const std::vector<double>& x,
+                                          const std::vector<double>& rate) {
+  std::vector<double> crossings;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    if (!(x[i] < 0.0 && x[i + 1] >= 0.0)) continue;
+    const double h = t[i + 1] - t[i];
+    const auto hermite = [&](double s) {
+      const double s2 = s * s, s3 = s2 * s;
+      return (2 * s3 - 3 * s2 + 1) * x[i] + (s3 - 2 * s2 + s) * h * rate[i] +
+             (-2 * s3 + 3 * s2) * x[i + 1] + (s3 - s2) * h * rate[i + 1];
+    };
+    double lo = 0.0, hi = 1.0;
+    for (int k = 0; k < 60; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (hermite(mid) < 0.0 ? lo : hi) = mid;
+    }
+    crossings.push_back(t[i] + 0.5 * (lo + hi) * h);
+  }
+  return crossings;
+}
+
+void expect_error(const std::string& yaml, int line, int column, const std::string& key,
+                  const std::string& why) {
+  try {
+    const Scenario scenario = load_inline_scenario(yaml, "invalid");
+    prepare_simulation(scenario);
+    ADD_FAILURE() << "no error; expected one about " << key;
+  } catch (const ScenarioError& error) {
+    EXPECT_EQ(error.where().line, line) << error.what();
+    EXPECT_EQ(error.where().column, column) << error.what();
+    EXPECT_EQ(error.key(), key) << error.what();
+    EXPECT_NE(error.why().find(why), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace tumble::test

@@ -627,11 +627,6 @@ TEST(ScenarioError, AMissingFileCannotBeRead) {
   expect_error("", {1, 1, "", "the file is empty"});
 }
 
-TEST(ScenarioError, ContactsAreNotSupportedYet) {
-  expect_error(kHead + kSphere + "contacts: []\n" + kSimulate,
-               {4, 1, "contacts", "contacts are not supported yet"});
-}
-
 TEST(ScenarioError, AnUnknownForceTypeListsTheTypes) {
   expect_error(
       kHead + kSphere + "forces:\n  - {type: forse, body: ball, value: [1, 0, 0]}\n" + kSimulate,

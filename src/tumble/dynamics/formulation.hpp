@@ -27,10 +27,18 @@ struct ElementWork {
   double power = 0.0;  // W, rate of work on the bodies now
   double work = 0.0;   // J, done since t0 (impulses and locks: at their instants)
 };
+// A contact's force and how it touches (docs/scenario.md, the CSV's C.* columns).
+struct ContactOutput {
+  double normal_force = 0.0;       // N, >= 0 (0 when apart)
+  Vec3 friction_W = Vec3::Zero();  // N, the tangential force on the body, world
+  double slip_speed = 0.0;         // m/s, of the body's material point at the contact
+  int mode = 0;                    // 0 apart, 1 sliding, 2 rolling / sticking
+};
 struct RowExtras {
-  std::vector<JointReaction> joints;  // one per Model::joints entry
-  std::vector<ElementWork> elements;  // one per element_names() entry
-  double elastic_energy = 0.0;        // J, stored in springs: part of PE
+  std::vector<JointReaction> joints;    // one per Model::joints entry
+  std::vector<ContactOutput> contacts;  // one per Model::contacts entry
+  std::vector<ElementWork> elements;    // one per element_names() entry
+  double elastic_energy = 0.0;          // J, stored in springs: part of PE
 };
 
 class Formulation : public OdeSystem {

@@ -5,7 +5,8 @@
 namespace tumble {
 
 bool Model::bodies_are_free() const {
-  return joints.empty() && springs.empty() && torsional_springs.empty() && impulses.empty();
+  return joints.empty() && springs.empty() && torsional_springs.empty() && impulses.empty() &&
+         contacts.empty();
 }
 
 double Model::next_load_switch(double t) const {

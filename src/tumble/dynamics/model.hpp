@@ -1,12 +1,13 @@
 #pragma once
 // The constant description of a mechanical system (what MuJoCo calls the model): bodies, uniform
-// gravity, the applied loads, force elements and joints. The state lives elsewhere (in the
-// integrator's vector y).
+// gravity, the applied loads, force elements, joints and contacts. The state lives elsewhere (in
+// the integrator's vector y).
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "tumble/body/rigid_body.hpp"
+#include "tumble/contact/plane_contact.hpp"
 #include "tumble/dynamics/force_elements.hpp"
 #include "tumble/dynamics/joint_model.hpp"
 
@@ -34,6 +35,7 @@ struct Model {
   std::vector<TorsionalSpring> torsional_springs;
   std::vector<ImpulseLoad> impulses;
   std::vector<JointModel> joints;
+  std::vector<PlaneContact> contacts;
 
   // Only free bodies under gravity and one-body loads: the free-body formulations run it.
   bool bodies_are_free() const;

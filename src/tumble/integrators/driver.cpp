@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace tumble {
 
@@ -43,9 +44,10 @@ class OutputClock {
 
 }  // namespace
 
-IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
-                            double t_end, const DriverOptions& options, const Observer& observe) {
-  IntegrationReport report;
+namespace {
+
+void drive(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0, double t_end,
+           const DriverOptions& options, const Observer& observe, IntegrationReport& report) {
   const std::size_t event_count = system.events().size();
   const auto event_specs = system.events();
   VecX y_row(y0.size()), y_event(y0.size());
@@ -65,7 +67,10 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
       if (t == integrator.t()) {
         observe(t, integrator.y());
       } else {
+        // Between steps the continuous extension drifts off the constraints by the local error;
+        // a row shows the state put back on them, as every step's end is.
         integrator.dense_output(t, y_row);
+        system.project(t, y_row);
         observe(t, y_row);
       }
       clock.advance();
@@ -177,7 +182,12 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
 
     emit_rows_until(integrator.t());
     if (clock.every_step()) observe(integrator.t(), integrator.y());
-    if (event_count > 0) g_before = g_after;
+    if (event_count > 0) {
+      g_before = g_after;
+      if (system.refresh_event_functions(integrator.t(), integrator.y())) {
+        system.event_functions(integrator.t(), integrator.y(), g_before);
+      }
+    }
 
     if (integrator.t() == t_stop && t_stop < t_end) {
       // A breakpoint: the system may change the state (an impulse), then the method restarts so
@@ -190,9 +200,24 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
       if (event_count > 0) system.event_functions(t_stop, integrator.y(), g_before);
     }
   }
+  if (!stopped_by_event) report.t_reached = integrator.t();
+}
+
+}  // namespace
+
+IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
+                            double t_end, const DriverOptions& options, const Observer& observe) {
+  IntegrationReport report;
+  try {
+    drive(integrator, system, t0, y0, t_end, options, observe, report);
+  } catch (const std::runtime_error& e) {
+    // The system found it cannot go on (e.g. contact constraints that contradict each other):
+    // the run fails there, with the rows so far, like a step size underflow.
+    report.failure = fmt::format("at t = {:.17g} s: {}", integrator.t(), e.what());
+    report.t_reached = integrator.t();
+  }
   report.stats = integrator.stats();
   report.completed = report.failure.empty();
-  if (!stopped_by_event) report.t_reached = integrator.t();
   return report;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Runs an Integrator on an OdeSystem from t0 to t_end and builds on its three calls (step,
 // dense_output, restart) everything a simulation needs:
-//  - output rows at t0 + k * output_every from the continuous extension (or at every step);
+//  - output rows at t0 + k * output_every from the continuous extension, projected as a step's
+//    end is (or at every step);
 //  - located events: sign changes of the system's g_k between two steps are bracketed and then
 //    pinned down by the Illinois variant of regula falsi on the dense output, to a bracket of a
 //    few ulps of t; the system then records, jumps (the method restarts) or stops;

@@ -35,6 +35,10 @@ void OdeSystem::project(double /*t*/, VecX& y) const {
 
 void OdeSystem::event_functions(double /*t*/, const VecX& /*y*/, VecX& /*g*/) const {}
 
+bool OdeSystem::refresh_event_functions(double /*t*/, const VecX& /*y*/) {
+  return false;
+}
+
 EventAction OdeSystem::on_event(std::size_t /*event_index*/, double /*t*/, VecX& /*y*/) {
   return EventAction::Record;
 }

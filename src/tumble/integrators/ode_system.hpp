@@ -57,6 +57,11 @@ class OdeSystem {
   virtual void event_functions(double t, const VecX& y, VecX& g) const;
   // Called at a located event with y at the event time; may change y.
   virtual EventAction on_event(std::size_t event_index, double t, VecX& y);
+  // Called after each accepted step whose events are handled. A system whose event functions
+  // watch something it updates step by step (a sliding contact watches the slip along the
+  // direction it had at the step's start) updates it here and returns true; the driver then
+  // evaluates g again.
+  virtual bool refresh_event_functions(double t, const VecX& y);
 
   // The first time strictly after t at which f is discontinuous (a force switching on, an
   // impulse, a lock), or +infinity. The driver lands a step exactly on it, calls at_breakpoint

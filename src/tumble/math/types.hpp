@@ -9,5 +9,6 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;  // (w, x, y, z); unit quaternions stand for rotations
 using VecX = Eigen::VectorXd;
+using MatX = Eigen::MatrixXd;
 
 }  // namespace tumble

@@ -91,8 +91,14 @@ ArticulatedFormulation::ArticulatedFormulation(Model model)
     w.tau.resize(nv);
     w.qdd.resize(nv);
   }
+  has_children_.assign(tree_.size(), false);
+  for (const TreeJoint& joint : tree_) {
+    if (joint.parent != kGround)
+      has_children_[slot_of_body_[static_cast<std::size_t>(joint.parent)]] = true;
+  }
   states_.resize(body_count());
   rates_.resize(entries);
+  set_up_contacts();
 }
 
 std::vector<std::string> ArticulatedFormulation::element_names() const {
@@ -103,6 +109,7 @@ std::vector<std::string> ArticulatedFormulation::element_names() const {
   for (const std::size_t j : motor_joints_) names.push_back(model_.joints[j].name + ".motor");
   for (const ImpulseLoad& impulse : model_.impulses) names.push_back(impulse.name);
   for (const std::size_t j : lock_joints_) names.push_back(model_.joints[j].name + ".lock");
+  for (const PlaneContact& contact : model_.contacts) names.push_back(contact.name);
   return names;
 }
 
@@ -242,6 +249,22 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive) const {
     const Vec6 c = impulsive ? Vec6::Zero() : w.bias;
     Mat6 Ia;
     Vec6 pa;
+    if (joint.type == TreeJoint::Type::Free && !w.known) {
+      // A free joint's S is the identity and its parent is ground: U = D = I^A, and nothing
+      // passes on. A body with nothing hung from it has I^A = diag(I_G, M): inverted in closed
+      // form.
+      w.U = w.IA;
+      if (has_children_[k]) {
+        invert_joint_inertia(SpeedMatrix(w.IA), w.D_inv);
+      } else {
+        const RigidBody& body = model_.bodies[joint.child];
+        w.D_inv.setZero();
+        w.D_inv.topLeftCorner(3, 3) = body.I_G_B_inv;
+        w.D_inv.bottomRightCorner(3, 3) = Mat3::Identity() / body.mass;
+      }
+      w.u = w.tau - w.pA;
+      continue;
+    }
     if (w.known) {
       Vec6 a_joint = c;
       if (joint.nv > 0) a_joint.noalias() += joint.S * w.qdd;
@@ -294,7 +317,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive) const {
 void ArticulatedFormulation::derivative(double /*t*/, const VecX& y, VecX& dydt) const {
   calc_kinematics(y, true);
   accumulate_element_loads(y, schedule_time_, dydt, ledger_, nullptr);
-  solve(schedule_time_, false);
+  solve_with_contacts(schedule_time_);
   for (std::size_t k = 0; k < tree_.size(); ++k) {
     const TreeJoint& joint = tree_[k];
     const Workspace& w = work_[k];
@@ -315,6 +338,7 @@ void ArticulatedFormulation::derivative(double /*t*/, const VecX& y, VecX& dydt)
     if (joint.nv > 0) dydt.segment(joint.v, joint.nv) = w.qdd;
   }
   write_joint_powers(y, dydt, ledger_);
+  write_contact_powers(dydt, ledger_);
 }
 
 Eigen::Index ArticulatedFormulation::first_motor_entry() const {
@@ -324,7 +348,8 @@ Eigen::Index ArticulatedFormulation::first_motor_entry() const {
 
 void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,
                                                 Eigen::Index offset) const {
-  // Motors work at tau theta'; impulses and locks act only at their instants.
+  // Motors work at tau theta'; impulses and locks act only at their instants (and contacts' entries
+  // are written by write_contact_powers).
   Eigen::Index entry = offset + first_motor_entry();
   for (const std::size_t j : motor_joints_) {
     const std::size_t k = static_cast<std::size_t>(slot_of_joint_[j]);
@@ -413,10 +438,21 @@ JointReaction ArticulatedFormulation::reaction_of(std::size_t model_joint) const
 void ArticulatedFormulation::calc_row_extras(double /*t*/, const VecX& y, RowExtras& extras) const {
   calc_kinematics(y, true);
   accumulate_element_loads(y, schedule_time_, rates_, 0, &extras.elastic_energy);
-  solve(schedule_time_, false);
+  solve_with_contacts(schedule_time_);
   extras.joints.resize(model_.joints.size());
   for (std::size_t j = 0; j < model_.joints.size(); ++j) extras.joints[j] = reaction_of(j);
+  extras.contacts.resize(model_.contacts.size());
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const ContactNow& now = contact_now_[c];
+    const Vec3& n = model_.contacts[c].normal_W;
+    ContactOutput& out = extras.contacts[c];
+    out.mode = static_cast<int>(contact_status_[c].mode);
+    out.normal_force = now.normal_force;
+    out.friction_W = now.force_W - now.normal_force * n;
+    out.slip_speed = now.slip_W.norm();
+  }
   write_joint_powers(y, rates_, 0);
+  write_contact_powers(rates_, 0);
   extras.elements.resize(static_cast<std::size_t>(rates_.size()));
   for (Eigen::Index i = 0; i < rates_.size(); ++i) {
     extras.elements[static_cast<std::size_t>(i)] = {rates_(i), y(ledger_ + i)};
@@ -426,10 +462,16 @@ void ArticulatedFormulation::calc_row_extras(double /*t*/, const VecX& y, RowExt
 void ArticulatedFormulation::begin(double t0, const VecX& y) {
   Formulation::begin(t0, y);
   jumps_.clear();
+  begin_contacts(t0, y);
 }
 
 void ArticulatedFormulation::at_breakpoint(double t, VecX& y) {
   schedule_time_ = t;
+  apply_jumps_at(t, y);
+  reclassify_contacts(t, y);
+}
+
+void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   calc_kinematics(y, true);
   for (Workspace& w : work_) w.external.setZero();
 

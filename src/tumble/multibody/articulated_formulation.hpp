@@ -12,8 +12,19 @@
 // since t0 is integrated with the motion (its power is one more right-hand side), so the rows can
 // report it to the integrator's accuracy. Impulses, motor starts and locks are breakpoints: the
 // speeds jump there by the impulsive form of the same algorithm.
+//
+// Contacts with planes (articulated_contacts.cpp) make it a hybrid system: each contact is apart,
+// sliding or rolling, and only located events change that. In a mode the contact's force is
+// whatever keeps its constraints' accelerations zero (sliding: the normal one, with Coulomb's
+// friction mu N against the slip; rolling: all three), found from the same algorithm's response
+// to unit forces; project() puts positions and velocities back on the constraints after every
+// step. Touchdowns are impacts (restitution and friction on the impulse).
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
+
+#include "tumble/contact/plane_contact.hpp"
 
 #include "tumble/dynamics/formulation.hpp"
 #include "tumble/multibody/kinematic_tree.hpp"
@@ -21,6 +32,13 @@
 namespace tumble {
 
 // A jump of the speeds at a breakpoint, for the summary.
+// A contact's mode change or impact, for the summary.
+struct ContactEventRecord {
+  double t = 0.0;
+  std::size_t contact = 0;
+  std::string what;  // "touchdown, rolls", "impact: normal speed 4.4 -> 3.5 m/s", "slides", ...
+};
+
 struct JumpRecord {
   double t = 0.0;
   std::string what;  // "impulse hit", "lock knob", "motor wheel starts"
@@ -52,6 +70,25 @@ class ArticulatedFormulation final : public Formulation {
   void begin(double t0, const VecX& y) override;
   void at_breakpoint(double t, VecX& y) override;
 
+  // Contact events, three per contact: touchdown (height reaches 0 while apart), lift-off (the
+  // normal force reaches 0), and stick-slip (sliding: the slip stops; rolling: the friction it
+  // needs reaches the cone's edge).
+  std::span<const EventSpec> events() const override { return event_specs_; }
+  void event_functions(double t, const VecX& y, VecX& g) const override;
+  EventAction on_event(std::size_t event_index, double t, VecX& y) override;
+  // Also puts each touching contact back on the plane and its velocity on the mode's
+  // constraints (no normal velocity; rolling: no slip).
+  void project(double t, VecX& y) const override;
+  bool refresh_event_functions(double t, const VecX& y) override;
+  const std::vector<ContactEventRecord>& contact_events() const { return contact_events_; }
+  // Why the bodies cannot start where the scenario puts them (a contact inside its plane, or
+  // touching it and moving into it), if they cannot.
+  struct ContactStartProblem {
+    std::size_t contact = 0;
+    std::string why;
+  };
+  std::optional<ContactStartProblem> contact_start_problem(const VecX& y0) const;
+
   std::vector<std::string> element_names() const override;
   void calc_row_extras(double t, const VecX& y, RowExtras& extras) const override;
 
@@ -81,7 +118,34 @@ class ArticulatedFormulation final : public Formulation {
     SpeedVector qdd;                   // joint accelerations (or speed jumps)
     Vec6 acceleration = Vec6::Zero();  // spatial acceleration (with -g at ground)
     bool known = false;                // prescribed: qdd is given, tau follows
+    Vec6 applied = Vec6::Zero();       // the loads in `external` before contact forces join them
   };
+  enum class ContactMode { Apart = 0, Sliding = 1, Rolling = 2 };
+  struct ContactStatus {
+    ContactMode mode = ContactMode::Apart;
+    Vec3 slide_direction_W = Vec3::UnitX();  // slip direction while the slip speed is ~0
+    double speed_scale = 1.0;                // m/s: scales the tolerances below
+    double slip_zero = 0.0;                  // m/s: slower slip counts as none
+    double settle_speed = 0.0;               // m/s: slower touchdowns settle instead of bouncing
+    double touching_height = 0.0;            // m: nearer the plane counts as touching
+  };
+  // What calc_contact_points and solve_with_contacts found for each contact at the current y.
+  struct ContactNow {
+    SupportPoint support;
+    Vec3 n_B = Vec3::UnitZ();
+    Vec3 support_rate_B = Vec3::Zero();  // the contact point's motion over the body
+    Vec3 velocity_W = Vec3::Zero();      // of the body's material point at the contact
+    Vec3 slip_W = Vec3::Zero();          // its tangential part
+    Vec3 force_W = Vec3::Zero();         // on the body at the contact
+    double normal_force = 0.0;
+  };
+  // One unknown of the contact forces and the constraint row that goes with it.
+  struct ContactUnknown {
+    std::size_t contact = 0;
+    Vec3 row_W = Vec3::Zero();    // the constraint: row . (acceleration or velocity) = 0
+    Vec3 force_W = Vec3::Zero();  // the force per unit of the unknown
+  };
+  enum class ContactRows { Motion, Projection };
   // Positions and velocities of every body from y (forward pass), into the workspace.
   void calc_kinematics(const VecX& y, bool with_velocities) const;
   // The articulated-body passes after calc_kinematics, in the modes of `mode_time`: the
@@ -101,17 +165,59 @@ class ArticulatedFormulation final : public Formulation {
   // offset + first_motor_entry() to the end.
   void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
   JointReaction reaction_of(std::size_t model_joint) const;
+
+  // Contacts (articulated_contacts.cpp).
+  void set_up_contacts();
+  // The contacts' modes at the start: touching ones roll or slide, the others are apart.
+  void begin_contacts(double t0, const VecX& y);
+  // After a breakpoint (a load switched, an impulse): the touching contacts' modes again.
+  void reclassify_contacts(double t, VecX& y);
+  // Impulses, locks and starting motors at a breakpoint.
+  void apply_jumps_at(double t, VecX& y);
+  // Support points and contact-point velocities, after calc_kinematics.
+  void calc_contact_points() const;
+  // solve() with the contact forces of the current modes, after calc_kinematics and
+  // accumulate_element_loads; fills contact_now_.
+  void solve_with_contacts(double mode_time) const;
+  // The unknowns of the touching contacts' forces: their constraints in each mode (Motion) or
+  // the velocity constraints with normal impulses for sliding contacts (Projection). Returns
+  // their count.
+  Eigen::Index gather_contact_unknowns(ContactRows rows) const;
+  // The constraint matrix A (rows: unknowns_ rows, columns: their forces) from impulsive solves
+  // of unit forces; leaves every Workspace::external zero.
+  void calc_contact_matrix(Eigen::Index count, double mode_time) const;
+  // Jump the speeds by the impulses x_j along unknowns_[j].force_W.
+  void apply_contact_impulses(Eigen::Index count, const VecX& impulses, double mode_time,
+                              VecX& y) const;
+  // The current slip direction of a sliding contact.
+  Vec3 slide_direction(std::size_t contact) const;
+  // The mode a touching contact takes now (slip stopped, touchdown settled, start): rolling if
+  // the friction that needs fits in the cone, else sliding the way the body is pushed.
+  void classify_contact(std::size_t contact, double t, VecX& y);
+  void impact(std::size_t contact, double t, VecX& y);
+  void note_contact(double t, std::size_t contact, std::string what);
+  // The ledger entry of a contact (after the locks).
+  Eigen::Index contact_entry(std::size_t contact) const;
+  void write_contact_powers(VecX& rates, Eigen::Index offset) const;
   double kinetic_energy() const;
   Vec3 angular_momentum_about_origin() const;  // from states_
 
   std::vector<TreeJoint> tree_;
   std::vector<std::size_t> slot_of_body_;  // tree index of each body's inbound joint
+  std::vector<bool> has_children_;         // per tree joint: another body hangs from its child
   std::vector<int> slot_of_joint_;         // tree index of each model joint
   std::vector<Eigen::Index> quaternion_offsets_;
   Eigen::Index speeds_ = 0, ledger_ = 0, dimension_ = 0;
   // Ledger order: loads, springs, torsional springs, motors, impulses, locks.
   std::vector<std::size_t> motor_joints_, lock_joints_;
   std::vector<JumpRecord> jumps_;
+  std::vector<ContactStatus> contact_status_;
+  std::vector<EventSpec> event_specs_;
+  std::vector<ContactEventRecord> contact_events_;
+  mutable std::vector<ContactNow> contact_now_;
+  mutable std::vector<ContactUnknown> unknowns_;  // sized to 3 per contact
+  mutable MatX contact_matrix_;
+  mutable VecX contact_rhs_, contact_x_;
   // Scratch of derivative() and the other const queries, sized once here: no allocation per call.
   mutable std::vector<Workspace> work_;
   mutable std::vector<BodyState> states_;

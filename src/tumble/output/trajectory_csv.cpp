@@ -6,6 +6,7 @@ namespace tumble {
 
 std::vector<std::string> trajectory_columns(std::span<const std::string> body_names,
                                             std::span<const std::string> joint_names,
+                                            std::span<const std::string> contact_names,
                                             std::span<const std::string> element_names) {
   std::vector<std::string> columns{"t"};
   static const char* const kBodyFields[] = {"x",   "y",   "z",   "vx",  "vy",  "vz",
@@ -22,6 +23,11 @@ std::vector<std::string> trajectory_columns(std::span<const std::string> body_na
       columns.push_back(joint + "." + field);
     }
   }
+  for (const std::string& contact : contact_names) {
+    for (const char* field : {"N", "Fx", "Fy", "Fz", "slip", "mode"}) {
+      columns.push_back(contact + "." + field);
+    }
+  }
   for (const std::string& element : element_names) {
     columns.push_back(element + ".P");
     columns.push_back(element + ".W");
@@ -32,10 +38,11 @@ std::vector<std::string> trajectory_columns(std::span<const std::string> body_na
 TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path,
                                          std::span<const std::string> body_names,
                                          std::span<const std::string> joint_names,
+                                         std::span<const std::string> contact_names,
                                          std::span<const std::string> element_names)
     : file_(std::move(path)) {
   const std::vector<std::string> columns =
-      trajectory_columns(body_names, joint_names, element_names);
+      trajectory_columns(body_names, joint_names, contact_names, element_names);
   fmt::memory_buffer header;
   for (std::size_t i = 0; i < columns.size(); ++i) {
     fmt::format_to(std::back_inserter(header), "{}{}", i == 0 ? "" : ",", columns[i]);
@@ -67,6 +74,12 @@ void TrajectoryCsvWriter::write_row(double t, std::span<const BodyState> states,
     for (const JointReaction& joint : extras->joints) {
       for (int k = 0; k < 3; ++k) put(joint.F_W(k));
       for (int k = 0; k < 3; ++k) put(joint.M_J_W(k));
+    }
+    for (const ContactOutput& contact : extras->contacts) {
+      put(contact.normal_force);
+      for (int k = 0; k < 3; ++k) put(contact.friction_W(k));
+      put(contact.slip_speed);
+      fmt::format_to(out, ",{}", contact.mode);
     }
     for (const ElementWork& element : extras->elements) {
       put(element.power);

@@ -48,6 +48,9 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
 // `forces:` (forces_reader.cpp), after the bodies and joints: fills scenario.loads, impulses,
 // springs and torsional_springs.
 void read_forces(const Reader& reader, const Field& field, Scenario& scenario);
+// `contacts:` (contacts_reader.cpp), after the bodies and joints.
+std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
+                                       const Scenario& scenario);
 // A body's name as a joint or force names it; "ground" only where ground_allowed. Fails with the
 // names there are (and the likely one, for a typo).
 std::string read_body_or_ground(const Reader& reader, const Field& field,

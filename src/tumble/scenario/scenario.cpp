@@ -120,11 +120,6 @@ Scenario load_scenario(const std::string& path, const std::vector<ParameterOverr
                        "a mapping of the scenario's keys (tumble: 1, bodies:, simulate:, ...)");
   check_version(reader, root);
   root.allow_only(kTopLevelKeys, "a scenario");
-  if (const auto f = root.find("contacts")) {
-    reader.fail_at_key(*f,
-                       "contacts are not supported yet (coming with the contact feature); "
-                       "remove the key to run the rest");
-  }
 
   Scenario scenario;
   scenario.file = path;
@@ -141,8 +136,12 @@ Scenario load_scenario(const std::string& path, const std::vector<ParameterOverr
     scenario.joints = scenario_reading::read_joints(reader, *f, scenario.bodies);
   }
   if (const auto f = root.find("forces")) scenario_reading::read_forces(reader, *f, scenario);
+  if (const auto f = root.find("contacts")) {
+    scenario.contacts = scenario_reading::read_contacts(reader, *f, scenario);
+  }
   const bool has_system = !scenario.joints.empty() || !scenario.impulses.empty() ||
-                          !scenario.springs.empty() || !scenario.torsional_springs.empty();
+                          !scenario.springs.empty() || !scenario.torsional_springs.empty() ||
+                          !scenario.contacts.empty();
   scenario.simulate = scenario_reading::read_simulate(
       reader, root.require("simulate", "the run's settings, at least duration"),
       has_system || !scenario.loads.empty(), has_system);

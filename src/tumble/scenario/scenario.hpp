@@ -137,6 +137,17 @@ struct ImpulseSpec {
   SourceLocation where;
 };
 
+// `contacts:` entry of type plane: a body touching a fixed plane.
+struct ContactSpec {
+  std::string name;  // `name:`, or "contact1", "contact2" by list position
+  std::string body;
+  Vec3 plane_point_W = Vec3::Zero();
+  Vec3 plane_normal_W = Vec3::UnitZ();  // unit (the given normal, normalised)
+  double friction = 0.0;                // Coulomb mu, >= 0
+  double restitution = 0.0;             // Newton's e, 0 ... 1
+  SourceLocation where;
+};
+
 struct SimulateSpec {
   double duration = 0.0;              // s, > 0, required
   std::string integrator = "dopri5";  // dopri5 | dop853 | rk4 | rkmk4 | exact
@@ -169,6 +180,7 @@ struct Scenario {
   std::vector<SpringSpec> springs;                     // ... of type spring
   std::vector<TorsionalSpringSpec> torsional_springs;  // ... of type torsional_spring
   std::vector<ImpulseSpec> impulses;                   // ... of type impulse
+  std::vector<ContactSpec> contacts;                   // `contacts:`
   SimulateSpec simulate;
   OutputSpec output;
 };

@@ -66,9 +66,10 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
   if (const auto f = map.find("formulation")) {
     sim.formulation = read_choice(reader, *f, kFormulations, "formulation");
     if (sim.formulation == "textbook" && has_system) {
-      reader.fail_at_value(*f,
-                           "the textbook formulation integrates free bodies (the chapter's "
-                           "[R; omega]); joints, springs and impulses need formulation: body");
+      reader.fail_at_value(
+          *f,
+          "the textbook formulation integrates free bodies (the chapter's "
+          "[R; omega]); joints, springs, impulses and contacts need formulation: body");
     }
   }
   if (const auto f = map.find("rtol")) {

@@ -9,6 +9,32 @@ namespace tumble {
 
 namespace {
 
+// The part of a shape that touches a plane (the reader admits only these shapes).
+ContactSurface contact_surface(const Shape& shape) {
+  ContactSurface surface;
+  switch (shape.kind) {
+    case ShapeKind::Sphere:
+    case ShapeKind::Shell:
+      surface.kind = ContactSurface::Kind::Sphere;
+      surface.radius = shape.radius;
+      break;
+    case ShapeKind::Disk:
+    case ShapeKind::Ring:
+      surface.kind = ContactSurface::Kind::Circle;
+      surface.radius = shape.radius;
+      break;
+    case ShapeKind::Cylinder:
+    case ShapeKind::Tube:
+      surface.kind = ContactSurface::Kind::Cylinder;
+      surface.radius = shape.kind == ShapeKind::Tube ? shape.outer_radius : shape.radius;
+      surface.half_length = shape.length / 2;
+      break;
+    default:
+      throw std::logic_error("no contact surface for this shape; the reader checks this");
+  }
+  return surface;
+}
+
 Vec3 com_position_W(const BodySpec& body) {
   return body.position_W + body.R_WB * body.mass_properties.com;
 }
@@ -75,16 +101,17 @@ TorsionalSpring torsional_spring_model(const Scenario& scenario, const Model& mo
     const bool swapped = joint.body_a == spring.body_b && joint.body_b == spring.body_a;
     if (!same && !swapped) continue;
     // Across a hinge the spring turns with the hinge angle, taken in the joint's order: the pair
-    // of moments is the same whichever body is named first.
+    // of moments is the same whichever body is named first. A rest angle is the hinge's angle as
+    // the joint states it; a rest orientation is the spring's second body relative to its first,
+    // so turned into the joint's order before its angle about the joint's axis is taken.
     spring.hinge = static_cast<int>(j);
-    double rest = spec.rest_angle.value_or(
-        spec.rest_orientation ? joint.axis_B.dot(log_so3(R_AB0.transpose() * spring.R_AB_rest))
+    if (swapped) std::swap(spring.body_a, spring.body_b);
+    const Mat3 R_AB_rest_joint = swapped ? Mat3(spring.R_AB_rest.transpose()) : spring.R_AB_rest;
+    const double rest = spec.rest_angle.value_or(
+        spec.rest_orientation ? joint.axis_B.dot(log_so3(joint.R_AB0.transpose() * R_AB_rest_joint))
                               : 0.0);
-    if (swapped) {
-      std::swap(spring.body_a, spring.body_b);
-      rest = -rest;
-    }
     spring.rest_angle = rest;
+    spring.R_AB_rest = R_AB_rest_joint;
     break;
   }
   return spring;
@@ -145,6 +172,17 @@ Model build_model(const Scenario& scenario) {
     }
     impulse.time = spec.time;
     model.impulses.push_back(impulse);
+  }
+  for (const ContactSpec& spec : scenario.contacts) {
+    PlaneContact contact;
+    contact.name = spec.name;
+    contact.body = static_cast<std::size_t>(body_index(scenario, spec.body));
+    contact.surface = contact_surface(scenario.bodies[contact.body].shape);
+    contact.point_W = spec.plane_point_W;
+    contact.normal_W = spec.plane_normal_W;
+    contact.friction = spec.friction;
+    contact.restitution = spec.restitution;
+    model.contacts.push_back(contact);
   }
   return model;
 }

@@ -1,5 +1,6 @@
 #include "tumble/simulation/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -90,6 +91,13 @@ PreparedSimulation prepare_simulation(const Scenario& scenario) {
   const std::vector<BodyState> given = initial_states(scenario);
   p.formulation->pack(given, p.y0);
   check_initial_velocities(scenario, *p.formulation, given, p.y0);
+  if (const auto* articulated = dynamic_cast<const ArticulatedFormulation*>(p.formulation.get())) {
+    if (const auto problem = articulated->contact_start_problem(p.y0)) {
+      const ContactSpec& contact = scenario.contacts[problem->contact];
+      throw ScenarioError(contact.where, fmt::format("contacts[{}]", problem->contact),
+                          problem->why);
+    }
+  }
   return p;
 }
 

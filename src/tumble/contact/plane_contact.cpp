@@ -1,0 +1,73 @@
+#include "tumble/contact/plane_contact.hpp"
+
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+// A cylinder whose axis is within this angle (rad) of the plane lies on its side: it touches
+// along a line. Rolling keeps the axis parallel to the plane to round-off (~1e-16), far inside.
+constexpr double kLineContactTilt = 1e-9;
+
+// The unit vector in the x-y plane most opposed to n_B (the direction of a circle's lowest
+// point), and the length of n_B's projection on that plane. A circle lying flat on the plane
+// (projection zero) touches along all of its rim: x is returned, a face contact this surface
+// model does not resolve.
+Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length) {
+  const Vec3 projected(n_B.x(), n_B.y(), 0.0);
+  projected_length = projected.norm();
+  if (projected_length == 0.0) return Vec3::UnitX();
+  return -projected / projected_length;
+}
+
+}  // namespace
+
+double contact_size(const ContactSurface& surface) {
+  return surface.radius;
+}
+
+SupportPoint support_point(const PlaneContact& contact, const Vec3& r_G_W, const Mat3& R_WB) {
+  const Vec3 n_B = R_WB.transpose() * contact.normal_W;
+  const ContactSurface& s = contact.surface;
+  SupportPoint support;
+  switch (s.kind) {
+    case ContactSurface::Kind::Sphere:
+      support.p_GC_B = -s.radius * n_B;
+      break;
+    case ContactSurface::Kind::Circle:
+    case ContactSurface::Kind::Cylinder: {
+      double projected = 0.0;
+      support.p_GC_B = s.radius * lowest_in_plane(n_B, projected);
+      if (s.kind == ContactSurface::Kind::Cylinder && std::abs(n_B.z()) > kLineContactTilt) {
+        // The end rim nearer the plane: z against the normal.
+        support.p_GC_B.z() = n_B.z() > 0.0 ? -s.half_length : s.half_length;
+      }
+      break;
+    }
+  }
+  support.height = (r_G_W + R_WB * support.p_GC_B - contact.point_W).dot(contact.normal_W);
+  return support;
+}
+
+Vec3 support_rate_B(const PlaneContact& contact, const Vec3& n_B, const Vec3& omega_B) {
+  const Vec3 n_rate_B = n_B.cross(omega_B);
+  const ContactSurface& s = contact.surface;
+  switch (s.kind) {
+    case ContactSurface::Kind::Sphere:
+      return -s.radius * n_rate_B;
+    case ContactSurface::Kind::Circle:
+    case ContactSurface::Kind::Cylinder: {
+      double projected = 0.0;
+      const Vec3 u = lowest_in_plane(n_B, projected);
+      if (projected == 0.0) return Vec3::Zero();
+      // u = -P n / |P n| with P the projection on x-y: u' = -(1 - u u^T) P n' / |P n|.
+      const Vec3 projected_rate(n_rate_B.x(), n_rate_B.y(), 0.0);
+      const Vec3 u_rate = -(projected_rate - u * u.dot(projected_rate)) / projected;
+      return s.radius * u_rate;
+    }
+  }
+  return Vec3::Zero();
+}
+
+}  // namespace tumble

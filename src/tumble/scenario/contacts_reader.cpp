@@ -1,0 +1,99 @@
+// `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
+// The body must be free (in no joint) and of a shape whose lowest point is one point that moves
+// smoothly over it (docs/scenario.md, Contacts).
+#include <fmt/format.h>
+#include <algorithm>
+
+#include "tumble/scenario/readers.hpp"
+
+namespace tumble::scenario_reading {
+namespace {
+
+bool rolls_on_a_plane(ShapeKind kind) {
+  return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
+         kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube;
+}
+
+ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scenario& scenario) {
+  ContactSpec contact;
+  const Field type = map.require("type", "plane");
+  if (reader.text(type) != "plane") {
+    reader.fail_at_value(type, "unknown contact type '" + reader.text(type) +
+                                   "'; the one type is plane (a fixed plane: ground, a ramp)");
+  }
+  const Field body_field = map.require("body", "the body that touches the plane");
+  contact.body = read_body_or_ground(reader, body_field, scenario.bodies, false);
+  const auto joined = std::find_if(
+      scenario.joints.begin(), scenario.joints.end(),
+      [&](const JointSpec& j) { return j.body_a == contact.body || j.body_b == contact.body; });
+  if (joined != scenario.joints.end()) {
+    reader.fail_at_value(body_field, "body '" + contact.body + "' is in joint '" + joined->name +
+                                         "'; a body in contact must be free (in no joint)");
+  }
+  const BodySpec& body = *std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
+                                       [&](const BodySpec& b) { return b.name == contact.body; });
+  if (!body.parts.empty() || !rolls_on_a_plane(body.shape.kind)) {
+    const std::string shape =
+        body.parts.empty() ? std::string(shape_name(body.shape.kind)) : std::string("composite");
+    reader.fail_at_value(body_field,
+                         "body '" + contact.body + "' is a " + shape +
+                             "; contact with a plane is for a sphere, shell, disk, ring, "
+                             "cylinder or tube (box, cone and mesh contact are not supported "
+                             "yet)");
+  }
+
+  const Field plane = map.require("plane", "{point: [x, y, z], normal: [x, y, z]}");
+  const MapReader plane_map(reader, plane, "a plane {point: [x, y, z], normal: [x, y, z]}");
+  plane_map.allow_only({"point", "normal"}, "a plane");
+  contact.plane_point_W = reader.vec3(plane_map.require("point", "a point of the plane, m"));
+  const Field normal = plane_map.require("normal", "out of the plane, towards the body");
+  const Vec3 n = reader.vec3(normal);
+  if (!(n.norm() > 0.0)) reader.fail_at_value(normal, "the normal must not be zero");
+  contact.plane_normal_W = n.normalized();
+
+  const Field friction = map.require("friction", "Coulomb's mu >= 0; 0 is frictionless");
+  contact.friction = reader.number(friction);
+  if (!(contact.friction >= 0.0)) {
+    reader.fail_at_value(
+        friction, fmt::format("friction must be >= 0; got {}", format_number(contact.friction)));
+  }
+  if (const auto f = map.find("restitution")) {
+    contact.restitution = reader.number(*f);
+    if (!(contact.restitution >= 0.0 && contact.restitution <= 1.0)) {
+      reader.fail_at_value(*f, fmt::format("restitution must be in [0, 1]; got {}",
+                                           format_number(contact.restitution)));
+    }
+  }
+  return contact;
+}
+
+}  // namespace
+
+std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
+                                       const Scenario& scenario) {
+  std::vector<ContactSpec> contacts;
+  const std::vector<Field> items = reader.items(field, "of contacts, each {type: plane, ...}");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const MapReader map(reader, items[i],
+                        "a contact {type: plane, body:, plane: {point:, normal:}, friction:}");
+    map.allow_only({"type", "name", "body", "plane", "friction", "restitution"}, "a contact");
+    std::string name = "contact" + std::to_string(i + 1);
+    if (const auto f = map.find("name")) {
+      name = reader.text(*f);
+      check_name(reader, *f, name, "contact");
+    }
+    const bool taken = std::any_of(contacts.begin(), contacts.end(),
+                                   [&](const ContactSpec& c) { return c.name == name; });
+    if (taken) {
+      reader.fail_at_value(items[i], "two contacts are named '" + name +
+                                         "'; give each its own name (it heads CSV columns)");
+    }
+    ContactSpec contact = read_contact(reader, map, scenario);
+    contact.name = name;
+    contact.where = reader.location(items[i].key_mark);
+    contacts.push_back(std::move(contact));
+  }
+  return contacts;
+}
+
+}  // namespace tumble::scenario_reading

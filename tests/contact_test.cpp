@@ -1,0 +1,393 @@
+// Contact with a plane against the chapter's worked examples (equations.md, 6.8: 1, 2 and 4) and
+// exact solutions: rolling down a ramp, the critical friction and sliding, the disk thrown with
+// backspin, a coin rolling on its rim in a circle; impacts that never add energy and a bouncing
+// ball that settles. Every run asks rtol 1e-10: in a mode the motion is smooth and each step's
+// error is below ~1e-10 of the state, so over the ~100 steps of a run the checks hold at 1e-8
+// relative, and event times (located to a few ulps of t on the dense output) at 1e-9.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "run_tumble.hpp"
+#include "scenario_run.hpp"
+
+namespace tumble {
+namespace {
+
+using test::Row;
+using test::run_inline_scenario;
+constexpr double kG = 9.81;
+constexpr double kDeg = std::numbers::pi / 180;
+
+// A round body's I_G / (M R^2) about its rolling axis, and the scenario text of its shape.
+struct Roller {
+  const char* name;
+  double inertia_ratio;
+  const char* shape;  // the shape's keys, with {R} for the radius
+};
+const Roller kRollers[] = {
+    {"sphere", 2.0 / 5.0, "shape: sphere, radius: {R}"},
+    {"shell", 2.0 / 3.0, "shape: shell, radius: {R}"},
+    {"cylinder", 1.0 / 2.0, "shape: cylinder, radius: {R}, length: 0.05"},
+    {"disk", 1.0 / 2.0, "shape: disk, radius: {R}"},
+    {"ring", 1.0, "shape: ring, radius: {R}"},
+};
+
+// The roller on a ramp of slope theta descending towards +x, its axis (body z) across the slope
+// along y, starting at rest touching the ramp at the origin.
+std::string ramp_scenario(const Roller& roller, double radius, double theta, double mu,
+                          double duration) {
+  const std::string shape = fmt::format(fmt::runtime(roller.shape), fmt::arg("R", radius));
+  return fmt::format(
+      "tumble: 1\n"
+      "parameters: {{theta: {}}}\n"
+      "bodies:\n"
+      "  body: {{{}, mass: 1.5, position: [{} * sin(theta), 0, {} * cos(theta)],\n"
+      "          orientation: {{axis: [1, 0, 0], angle: 90 deg}}}}\n"
+      "contacts:\n"
+      "  - {{name: ramp, type: plane, body: body, plane: {{point: [0, 0, 0],\n"
+      "      normal: [sin(theta), 0, cos(theta)]}}, friction: {}}}\n"
+      "simulate: {{duration: {}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
+      "output_every: {}}}\n",
+      theta, shape, radius, radius, mu, duration, duration / 50);
+}
+
+double speed(const Row& row) {
+  return row.states[0].v_G.norm();
+}
+
+TEST(Ramp, RollingSpeedAfterADropIsTheChaptersFormula) {
+  // v = sqrt(2 g h / (1 + I_G / (M R^2))) at every row, h the COM's drop; rolling throughout with
+  // no slip (projected to round-off at every step), and N = M g cos(theta).
+  for (const Roller& roller : kRollers) {
+    for (const double theta : {10 * kDeg, 30 * kDeg}) {
+      for (const double radius : {0.05, 0.3}) {
+        const auto run = run_inline_scenario(ramp_scenario(roller, radius, theta, 0.9, 1.5),
+                                             fmt::format("ramp_{}", roller.name));
+        const double z0 = run.rows.front().states[0].r_G.z();
+        for (const Row& row : run.rows) {
+          const double drop = z0 - row.states[0].r_G.z();
+          const double v = std::sqrt(2 * kG * drop / (1 + roller.inertia_ratio));
+          EXPECT_NEAR(speed(row), v, 1e-8 * (1 + v)) << roller.name << " t " << row.t;
+          EXPECT_EQ(row.extras.contacts[0].mode, 2) << roller.name << " t " << row.t;
+          EXPECT_LT(row.extras.contacts[0].slip_speed, 1e-9 * (1 + v)) << roller.name;
+          EXPECT_NEAR(row.extras.contacts[0].normal_force, 1.5 * kG * std::cos(theta),
+                      1e-9 * 1.5 * kG);
+        }
+        EXPECT_LT(run.result.conservation.max_relative_energy_drift, 1e-9) << roller.name;
+      }
+    }
+  }
+}
+
+TEST(Ramp, ItSlidesIffFrictionIsBelowTheCriticalValue) {
+  // mu_crit = tan(theta) I_G / (I_G + M R^2): just below it the body slides with
+  // a = g (sin - mu cos); just above it rolls with a = g sin / (1 + I_G / (M R^2)).
+  for (const Roller& roller : kRollers) {
+    for (const double theta : {20 * kDeg, 40 * kDeg}) {
+      const double k = roller.inertia_ratio;
+      const double mu_crit = std::tan(theta) * k / (1 + k);
+      for (const double factor : {0.98, 1.02}) {
+        const double mu = factor * mu_crit;
+        const auto run = run_inline_scenario(ramp_scenario(roller, 0.1, theta, mu, 1.0),
+                                             fmt::format("slide_{}", roller.name));
+        const bool slides = factor < 1;
+        const double a =
+            slides ? kG * (std::sin(theta) - mu * std::cos(theta)) : kG * std::sin(theta) / (1 + k);
+        for (const Row& row : run.rows) {
+          EXPECT_NEAR(speed(row), a * row.t, 1e-8 * (1 + a * row.t)) << roller.name;
+          if (row.t > 0) {
+            EXPECT_EQ(row.extras.contacts[0].mode, slides ? 1 : 2) << roller.name;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(Ramp, TheEnergyLostIsTheWorkOfFriction) {
+  // Sliding: E0 - E = -W_friction at every row (the ledger integrates F . v_slip).
+  for (const Roller& roller : kRollers) {
+    const double theta = 35 * kDeg;
+    const double mu = 0.5 * std::tan(theta) * roller.inertia_ratio / (1 + roller.inertia_ratio);
+    const auto run =
+        run_inline_scenario(ramp_scenario(roller, 0.1, theta, mu, 1.0), "friction_work");
+    const double E0 = run.rows.front().quantities.total_energy;
+    double lost = 0.0;
+    for (const Row& row : run.rows) {
+      const double work = row.extras.elements.back().work;
+      lost = E0 - row.quantities.total_energy;
+      EXPECT_NEAR(lost, -work, 1e-9 * (1 + row.quantities.kinetic_energy)) << roller.name;
+      EXPECT_LE(row.extras.elements.back().power, 0.0) << roller.name;
+    }
+    EXPECT_GT(lost, 0.1) << roller.name;  // it did slide and lose energy
+  }
+}
+
+// The chapter's thin disk (radius R, axis along y) rolling on its rim in the x-z plane, thrown
+// along +x at v0 with backspin w0 (omega = -w0 about y).
+struct Backspin {
+  double v0, w0, radius, mu;
+  double reversal_time() const { return v0 / (mu * kG); }
+  double rolling_time() const { return (v0 + w0 * radius) / (3 * mu * kG); }
+  double final_speed() const { return (2 * v0 - w0 * radius) / 3; }
+};
+
+std::string backspin_scenario(const Backspin& b, double duration) {
+  return fmt::format(
+      "tumble: 1\n"
+      "bodies:\n"
+      "  disk: {{shape: disk, radius: {R}, mass: 0.2, position: [0, 0, {R}],\n"
+      "          orientation: {{axis: [1, 0, 0], angle: 90 deg}},\n"
+      "          velocity: [{v0}, 0, 0], angular_velocity: [0, {w}, 0]}}\n"
+      "contacts:\n"
+      "  - {{name: floor, type: plane, body: disk, plane: {{point: [0, 0, 0], normal: [0, 0, "
+      "1]}},\n"
+      "      friction: {mu}}}\n"
+      "simulate: {{duration: {T}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
+      "output_every: {dt}}}\n",
+      fmt::arg("R", b.radius), fmt::arg("v0", b.v0), fmt::arg("w", -b.w0), fmt::arg("mu", b.mu),
+      fmt::arg("T", duration), fmt::arg("dt", duration / 200));
+}
+
+TEST(BackspinDisk, ReversesAndRollsBackAtTheChaptersTimesAndSpeed) {
+  for (const Backspin& b : {Backspin{2.0, 60.0, 0.1, 0.2}, Backspin{1.0, 50.0, 0.05, 0.35},
+                            Backspin{3.0, 200.0, 0.04, 0.1}}) {
+    ASSERT_GT(b.w0 * b.radius, 2 * b.v0);  // it comes back
+    const double duration = 1.5 * b.rolling_time();
+    const auto run = run_inline_scenario(backspin_scenario(b, duration), "backspin");
+    // Rolling starts at the located slip-stop event.
+    double t_roll = -1;
+    for (const auto& event : run.contact_events) {
+      if (event.what == "slip stops") t_roll = event.t;
+    }
+    EXPECT_NEAR(t_roll, b.rolling_time(), 1e-9 * b.rolling_time());
+    // While sliding v = v0 - mu g t exactly, so the rows' sign change of v, interpolated, is the
+    // reversal.
+    double t_reverse = -1;
+    for (std::size_t i = 1; i < run.rows.size(); ++i) {
+      const double v_a = run.rows[i - 1].states[0].v_G.x(), v_b = run.rows[i].states[0].v_G.x();
+      if (v_a > 0 && v_b <= 0) {
+        const double t_a = run.rows[i - 1].t, t_b = run.rows[i].t;
+        t_reverse = t_a + v_a * (t_b - t_a) / (v_a - v_b);
+      }
+    }
+    EXPECT_NEAR(t_reverse, b.reversal_time(), 1e-9 * b.reversal_time());
+    for (const Row& row : run.rows) {
+      const double v = row.states[0].v_G.x();
+      if (row.t < b.rolling_time()) {
+        EXPECT_NEAR(v, b.v0 - b.mu * kG * row.t, 1e-9 * b.v0);
+        EXPECT_NEAR(row.states[0].omega_W.y(), -b.w0 + 2 * b.mu * kG * row.t / b.radius,
+                    1e-9 * b.w0);
+      } else {
+        EXPECT_NEAR(v, b.final_speed(), 1e-9 * b.v0);
+        EXPECT_EQ(row.extras.contacts[0].mode, 2);
+        // No creep: the slip stays zero to round-off of the contact point's speed scale.
+        EXPECT_LT(row.extras.contacts[0].slip_speed, 1e-12 * (b.v0 + b.w0 * b.radius));
+      }
+    }
+  }
+}
+
+TEST(BackspinDisk, WithLittleBackspinItNeverComesBack) {
+  // w0 R < 2 v0: the final rolling speed (2 v0 - w0 R) / 3 is forward and v never reverses.
+  for (const Backspin& b : {Backspin{2.0, 30.0, 0.1, 0.2}, Backspin{1.0, 10.0, 0.05, 0.5}}) {
+    ASSERT_LT(b.w0 * b.radius, 2 * b.v0);
+    const auto run = run_inline_scenario(backspin_scenario(b, 2 * b.rolling_time()), "forward");
+    for (const Row& row : run.rows) EXPECT_GT(row.states[0].v_G.x(), 0.0);
+    EXPECT_NEAR(run.rows.back().states[0].v_G.x(), b.final_speed(), 1e-9 * b.v0);
+  }
+}
+
+// A thin coin (radius r) rolling on its rim in steady motion: its COM on a circle of radius rho
+// at height r cos(theta), leaning in by theta. From the Newton-Euler equations about the COM
+// (I_axis = m r^2 / 2, I_diameter = m r^2 / 4) and the rolling constraint:
+//   Omega^2 = g tan(theta) / (3 rho / 2 + r sin(theta) / 4),  spin s = -Omega (rho + r sin) / r.
+TEST(Coin, RollsOnItsRimInASteadyCircle) {
+  for (const double theta : {10 * kDeg, 25 * kDeg}) {
+    for (const double rho : {0.08, 0.2}) {
+      const double r = 0.0125;
+      const double Omega =
+          std::sqrt(kG * std::tan(theta) / (1.5 * rho + 0.25 * r * std::sin(theta)));
+      const double s = -Omega * (rho + r * std::sin(theta)) / r;
+      const double period = 2 * std::numbers::pi / Omega;
+      const std::string yaml = fmt::format(
+          "tumble: 1\n"
+          "parameters: {{theta: {theta}}}\n"
+          "bodies:\n"
+          "  coin: {{shape: disk, radius: {r}, mass: 0.0075, position: [{rho}, 0, {r} * "
+          "cos(theta)],\n"
+          "          orientation: {{axis: [0, 1, 0], angle: 90 deg - theta}},\n"
+          "          velocity: [0, {v}, 0],\n"
+          "          angular_velocity: [{s} * cos(theta), 0, {Omega} + {s} * sin(theta)]}}\n"
+          "contacts:\n"
+          "  - {{type: plane, body: coin, plane: {{point: [0, 0, 0], normal: [0, 0, 1]}}, "
+          "friction: 0.6}}\n"
+          "simulate: {{duration: {T}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
+          "output_every: {dt}}}\n",
+          fmt::arg("theta", theta), fmt::arg("r", r), fmt::arg("rho", rho),
+          fmt::arg("v", Omega * rho), fmt::arg("s", s), fmt::arg("Omega", Omega),
+          fmt::arg("T", 2 * period), fmt::arg("dt", period / 50));
+      const auto run = run_inline_scenario(yaml, "coin");
+      for (const Row& row : run.rows) {
+        const Vec3& r_G = row.states[0].r_G;
+        EXPECT_NEAR(std::hypot(r_G.x(), r_G.y()), rho, 1e-9 * rho);
+        EXPECT_NEAR(r_G.z(), r * std::cos(theta), 1e-9 * r);
+        const double azimuth = std::atan2(r_G.y(), r_G.x());
+        EXPECT_NEAR(std::remainder(azimuth - Omega * row.t, 2 * std::numbers::pi), 0.0, 1e-8);
+        EXPECT_EQ(row.extras.contacts[0].mode, 2);
+      }
+      // Rolling without slip does no work: E is conserved.
+      EXPECT_LT(run.result.conservation.max_relative_energy_drift, 1e-10);
+    }
+  }
+}
+
+// A ball dropped from height h onto the floor with restitution e, thrown sideways with backspin
+// so that friction acts at every impact.
+std::string bounce_scenario(double e, double mu, double h, double spin) {
+  return fmt::format(
+      "tumble: 1\n"
+      "bodies:\n"
+      "  ball: {{shape: sphere, radius: 0.05, mass: 0.06, position: [0, 0, {}],\n"
+      "          velocity: [1, 0, 0], angular_velocity: [0, {}, 0]}}\n"
+      "contacts:\n"
+      "  - {{name: floor, type: plane, body: ball, plane: {{point: [0, 0, 0], normal: [0, 0, "
+      "1]}},\n"
+      "      friction: {}, restitution: {}}}\n"
+      "simulate: {{duration: 8, integrator: dop853, rtol: 1e-10, atol: 1e-13, output_every: "
+      "0.01}}\n",
+      h + 0.05, spin, mu, e);
+}
+
+TEST(Bounce, ImpactsNeverAddEnergyAndTheBallSettles) {
+  for (const double e : {0.5, 0.8}) {
+    for (const double mu : {0.1, 0.4}) {
+      for (const double spin : {-40.0, 0.0, 60.0}) {
+        const auto run = run_inline_scenario(bounce_scenario(e, mu, 1.0, spin), "bounce");
+        // The ledger's contact entry jumps by each impact's work, P . (v- + v+) / 2: never > 0,
+        // so E never rises. Between impacts (flight, and rolling after the ball settles) the
+        // contact does no work and E is conserved, to the run's accuracy (1e-8 of E0).
+        const double E0 = run.rows.front().quantities.total_energy;
+        double previous_work = 0.0, previous_E = E0;
+        for (const Row& row : run.rows) {
+          const double work = row.extras.elements.back().work;
+          EXPECT_LE(work, previous_work + 1e-8 * E0);
+          EXPECT_LE(row.quantities.total_energy, previous_E + 1e-8 * E0);
+          previous_work = work;
+          previous_E = row.quantities.total_energy;
+        }
+        // Each impact sends the ball up at e times its landing speed: the first one exactly.
+        ASSERT_FALSE(run.contact_events.empty());
+        const std::string& first = run.contact_events.front().what;
+        const double v1 = std::sqrt(2 * kG * 1.0);
+        EXPECT_NE(first.find(fmt::format("normal speed {:.4g} -> {:.4g} m/s", v1, e * v1)),
+                  std::string::npos)
+            << first;
+        // The bounces end at the Zeno time t1 + (2 e v1 / g) / (1 - e) and the ball rests on
+        // the floor, touching it, from then on.
+        const double t1 = std::sqrt(2 * 1.0 / kG);
+        const double t_zeno = t1 + 2 * e * v1 / (kG * (1 - e));
+        const auto& last = run.contact_events.back();
+        EXPECT_NEAR(last.t, t_zeno, 1e-3 * t_zeno) << last.what;
+        const Row& end = run.rows.back();
+        EXPECT_NE(end.extras.contacts[0].mode, 0);
+        EXPECT_NEAR(end.states[0].r_G.z(), 0.05, 1e-9);
+        EXPECT_NEAR(end.extras.contacts[0].normal_force, 0.06 * kG, 1e-9);
+      }
+    }
+  }
+}
+
+TEST(ContactScenario, BadContactsAreRefusedWithWhereAndWhy) {
+  const std::string head =
+      "tumble: 1\n"                                                                // 1
+      "bodies:\n"                                                                  // 2
+      "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}\n"     // 3
+      "  crate: {shape: box, size: [1, 1, 1], mass: 1, position: [3, 0, 0.5]}\n";  // 4
+  const std::string simulate = "simulate: {duration: 1}\n";
+  using test::expect_error;
+  expect_error(head +
+                   "contacts:\n  - {type: plane, body: crate, plane: {point: [0, 0, 0], normal: "
+                   "[0, 0, 1]}, friction: 0.3}\n" +
+                   simulate,
+               6, 25, "contacts[0].body", "box, cone and mesh contact are not supported yet");
+  expect_error(head +
+                   "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
+                   "[0, 0, 0]}, friction: 0.3}\n" +
+                   simulate,
+               6, 65, "contacts[0].plane.normal", "the normal must not be zero");
+  expect_error(head +
+                   "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
+                   "[0, 0, 1]}}\n" +
+                   simulate,
+               6, 5, "contacts[0].friction", "missing required key 'friction'");
+  expect_error(head +
+                   "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
+                   "[0, 0, 1]}, friction: 0.3, restitution: 1.5}\n" +
+                   simulate,
+               6, 105, "contacts[0].restitution", "restitution must be in [0, 1]");
+  expect_error(head +
+                   "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0.15], normal: "
+                   "[0, 0, 1]}, friction: 0.3}\n" +
+                   simulate,
+               6, 5, "contacts[0]", "body 'ball' starts 0.15 m inside the plane");
+  expect_error(head +
+                   "joints:\n  pin: {type: ball, body: ball, at: [0, 0, 1]}\n"
+                   "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
+                   "[0, 0, 1]}, friction: 0.3}\n" +
+                   simulate,
+               8, 25, "contacts[0].body", "is in joint 'pin'; a body in contact must be free");
+}
+
+TEST(ContactScenario, StartingOnThePlaneAndMovingIntoItIsRefused) {
+  test::expect_error(
+      "tumble: 1\n"
+      "bodies:\n"
+      "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1], velocity: [0, 0, -1]}\n"
+      "contacts:\n"
+      "  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: 0.3}\n"
+      "simulate: {duration: 1}\n",
+      5, 5, "contacts[0]", "starts touching the plane and moving into it at 1 m/s");
+}
+
+TEST(ContactScenario, TheBackspinExampleWritesContactColumnsAndEvents) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "tumble_contact_cli_columns";
+  std::filesystem::create_directories(dir);
+  const auto result = test::run_tumble(
+      "run " +
+      test::quote_for_shell(std::string(TUMBLE_SOURCE_DIR) + "/examples/backspin_disk.yaml") +
+      " --out " + test::quote_for_shell(dir.string()));
+  ASSERT_EQ(result.status, 0) << result.out;
+  EXPECT_NE(result.out.find("t = 1.3591573  floor: slip stops"), std::string::npos) << result.out;
+  std::ifstream csv(dir / "backspin_disk.csv");
+  std::string header, row, last;
+  std::getline(csv, header);
+  EXPECT_NE(header.find(",Lz,floor.N,floor.Fx,floor.Fy,floor.Fz,floor.slip,floor.mode,floor.P,"
+                        "floor.W"),
+            std::string::npos)
+      << header;
+  while (std::getline(csv, row)) last = row;
+  // The last row's floor.mode: 2, rolling.
+  const auto field = [](const std::string& line, std::size_t index) {
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i < index; ++i) begin = line.find(',', begin) + 1;
+    return line.substr(begin, line.find(',', begin) - begin);
+  };
+  const auto columns_before = [&](const std::string& name) {
+    const std::string prefix = header.substr(0, header.find("," + name + ","));
+    return static_cast<std::size_t>(std::count(prefix.begin(), prefix.end(), ',')) + 1;
+  };
+  EXPECT_EQ(field(last, columns_before("floor.mode")), "2") << last;
+}
+
+}  // namespace
+}  // namespace tumble

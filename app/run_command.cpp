@@ -47,17 +47,22 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   fmt::print("  evaluations    {} of the right-hand side\n", stats.rhs_evaluations);
   fmt::print("  wall time      {:.3f} ms (integration and output)\n", 1e3 * result.wall_seconds);
   const bool forces_act = energy_changes(scenario);
-  const bool gravity_acts = scenario.gravity_W.squaredNorm() > 0.0;
-  fmt::print(
-      "  energy E       max relative drift {:.3e}{}\n",
-      result.conservation.max_relative_energy_drift,
-      forces_act
-          ? " (forces, motors, dampers, impulses, locks, friction or impacts do work: E is not "
-            "conserved)"
-          : "");
-  fmt::print("  |L| (origin)   max relative drift {:.3e}{}\n",
-             result.conservation.max_relative_angular_momentum_drift,
-             forces_act || gravity_acts ? " (external moments act: |L| is not conserved)" : "");
+  const ConservationReport& c = result.conservation;
+  // A relative drift needs a nonzero start; from E0 = 0 or L0 = 0 the change itself is shown.
+  const std::string energy_drift =
+      c.initial_energy != 0.0
+          ? fmt::format("max relative drift {:.3e}", c.max_relative_energy_drift)
+          : fmt::format("max |E - E0| {:.3e} J (E0 = 0)", c.max_energy_change);
+  const std::string momentum_drift =
+      c.initial_angular_momentum != 0.0
+          ? fmt::format("max relative drift {:.3e}", c.max_relative_angular_momentum_drift)
+          : fmt::format("max |L| {:.3e} kg m^2/s (L0 = 0)", c.max_angular_momentum_change);
+  fmt::print("  energy E       {}{}\n", energy_drift,
+             forces_act ? " (forces, motors, dampers, impulses, locks, friction or impacts do "
+                          "work: E is not conserved)"
+                        : "");
+  fmt::print("  |L| (origin)   {}{}\n", momentum_drift,
+             external_moments_act(scenario) ? " (external moments act: |L| is not conserved)" : "");
   fmt::print("  |R^T R - I|    max {:.3e}\n", result.conservation.max_orthonormality_error);
   print_system_summary(scenario, simulation, result);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,

@@ -23,6 +23,26 @@ bool energy_changes(const Scenario& scenario) {
   return false;
 }
 
+bool external_moments_act(const Scenario& scenario) {
+  if (scenario.gravity_W.squaredNorm() > 0.0 || !scenario.loads.empty() ||
+      !scenario.impulses.empty() || !scenario.contacts.empty()) {
+    return true;
+  }
+  const auto grounded = [](const std::string& a, const std::string& b) {
+    return a == kGroundName || b == kGroundName;
+  };
+  for (const JointSpec& j : scenario.joints) {
+    if (grounded(j.body_a, j.body_b)) return true;
+  }
+  for (const SpringSpec& s : scenario.springs) {
+    if (grounded(s.body_a, s.body_b)) return true;
+  }
+  for (const TorsionalSpringSpec& s : scenario.torsional_springs) {
+    if (grounded(s.body_a, s.body_b)) return true;
+  }
+  return false;
+}
+
 void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                           const SimulationResult& result) {
   const std::vector<std::string> names = simulation.formulation->element_names();

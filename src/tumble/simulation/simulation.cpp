@@ -135,6 +135,10 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObs
     c.max_work_energy_residual =
         std::max(c.max_work_energy_residual, std::abs(q.kinetic_energy - KE0 - work));
     c.max_kinetic_energy = std::max(c.max_kinetic_energy, q.kinetic_energy);
+    c.initial_energy = E0;
+    c.initial_angular_momentum = L0;
+    c.max_energy_change = std::max(c.max_energy_change, std::abs(q.total_energy - E0));
+    c.max_angular_momentum_change = std::max(c.max_angular_momentum_change, std::abs(L - L0));
     if (E0 != 0.0) {
       c.max_relative_energy_drift =
           std::max(c.max_relative_energy_drift, std::abs(q.total_energy - E0) / std::abs(E0));

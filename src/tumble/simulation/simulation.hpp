@@ -35,6 +35,10 @@ struct ConservationReport {
   double max_relative_energy_drift = 0.0;            // max |E - E0| / |E0|
   double max_relative_angular_momentum_drift = 0.0;  // max | |L| - |L0| | / |L0|, L about origin
   double max_orthonormality_error = 0.0;             // max |R^T R - I| over bodies and rows
+  // The same drifts in absolute terms, for runs that start with E0 = 0 or L0 = 0 (where a
+  // relative drift means nothing): max |E - E0| in J, max | |L| - |L0| | in kg m^2/s.
+  double initial_energy = 0.0, max_energy_change = 0.0;
+  double initial_angular_momentum = 0.0, max_angular_momentum_change = 0.0;
   // Work-energy theorem: KE - KE0 = W_gravity + sum of the elements' work (ideal joints do none);
   // the largest departure over the rows, in J, and the largest KE it compares with.
   double max_work_energy_residual = 0.0;

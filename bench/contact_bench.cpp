@@ -9,18 +9,15 @@
 #include <cmath>
 #include <string>
 
+#include "example_timing.hpp"
 #include "tumble/multibody/articulated_formulation.hpp"
 #include "tumble/simulation/simulation.hpp"
 
 namespace tumble {
 namespace {
 
-std::string example_file(const char* stem) {
-  return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + stem + ".yaml";
-}
-
 void BM_BackspinDiskSlide(benchmark::State& state, const char* integrator, double rtol) {
-  Scenario scenario = load_scenario(example_file("backspin_disk"), {});
+  Scenario scenario = load_scenario(example_path("backspin_disk"), {});
   const double v0 = 2, w0 = 60, R = 0.1, mu = 0.2, g = 9.81;  // the example's parameters
   const double t_roll = (v0 + w0 * R) / (3 * mu * g);
   scenario.simulate.integrator = integrator;
@@ -58,18 +55,7 @@ BENCHMARK_CAPTURE(BM_BackspinDiskSlide, dopri5_rtol_1e - 8, "dopri5", 1e-8)
     ->Unit(benchmark::kMicrosecond);
 
 void BM_ContactExample(benchmark::State& state, const char* stem) {
-  Scenario scenario = load_scenario(example_file(stem), {});
-  PreparedSimulation simulation = prepare_simulation(scenario);
-  simulation.options.output_every = simulation.t_end - simulation.t0;
-  const RowObserver ignore = [](double, std::span<const BodyState>, const SystemQuantities&) {};
-  SimulationResult result;
-  for (auto _ : state) {
-    result = run_simulation(simulation, ignore);
-    benchmark::DoNotOptimize(result.rows);
-  }
-  state.counters["steps"] = static_cast<double>(result.report.stats.accepted_steps);
-  state.counters["evaluations"] = static_cast<double>(result.report.stats.rhs_evaluations);
-  if (!result.report.completed) state.SkipWithError(result.report.failure.c_str());
+  time_example(state, stem, false);
 }
 
 BENCHMARK_CAPTURE(BM_ContactExample, backspin_disk, "backspin_disk")->Unit(benchmark::kMillisecond);

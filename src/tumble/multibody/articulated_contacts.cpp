@@ -60,15 +60,11 @@ constexpr double kSlipZero = 1e-9;
 // (restitution 0): the cascade of ever smaller bounces ends after finitely many.
 constexpr double kSettleHeight = 1e-6;
 
-const char* mode_name(int mode) {
-  switch (mode) {
-    case 1:
-      return "slides";
-    case 2:
-      return "rolls";
-    default:
-      return "apart";
-  }
+// Where a contact slides when the friction rolling needs does not fit in the cone: the way it is
+// pushed, against that friction (which then saturates at mu N).
+Vec3 pushed_direction(const Vec3& friction_needed_W, const Vec3& otherwise_W) {
+  const double size = friction_needed_W.norm();
+  return size > 0.0 ? Vec3(-friction_needed_W / size) : otherwise_W;
 }
 
 }  // namespace
@@ -112,6 +108,7 @@ void ArticulatedFormulation::calc_contact_points() const {
     now.velocity_W = w.R_WC * (w.velocity.tail<3>() + omega_B.cross(now.support.p_GC_B));
     now.slip_W = now.velocity_W - contact.normal_W * contact.normal_W.dot(now.velocity_W);
     now.force_W.setZero();
+    now.friction_W.setZero();
     now.normal_force = 0.0;
   }
 }
@@ -223,7 +220,10 @@ void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
     now.force_W += F_W;
   }
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    contact_now_[c].normal_force = contact_now_[c].force_W.dot(model_.contacts[c].normal_W);
+    ContactNow& now = contact_now_[c];
+    const Vec3& n = model_.contacts[c].normal_W;
+    now.normal_force = now.force_W.dot(n);
+    now.friction_W = now.force_W - now.normal_force * n;
   }
   solve(mode_time, false);
 }
@@ -250,6 +250,12 @@ void ArticulatedFormulation::write_contact_powers(VecX& rates, Eigen::Index offs
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     rates(offset + contact_entry(c)) = contact_now_[c].force_W.dot(contact_now_[c].velocity_W);
   }
+}
+
+void ArticulatedFormulation::solve_contacts_at(const VecX& y) const {
+  calc_kinematics(y, true);
+  accumulate_element_loads(y, schedule_time_, rates_, 0, nullptr);
+  solve_with_contacts(schedule_time_);
 }
 
 void ArticulatedFormulation::project(double t, VecX& y) const {
@@ -282,14 +288,13 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
 }
 
 void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& g) const {
-  calc_kinematics(y, true);
   const bool touching =
       std::any_of(contact_status_.begin(), contact_status_.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (touching) {
-    accumulate_element_loads(y, schedule_time_, rates_, 0, nullptr);
-    solve_with_contacts(schedule_time_);
+    solve_contacts_at(y);
   } else {
+    calc_kinematics(y, true);
     calc_contact_points();
   }
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
@@ -313,12 +318,10 @@ void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& 
         g(base + 1) = now.normal_force;
         if (contact.friction > 0.0) g(base + 2) = now.slip_W.dot(status.slide_direction_W);
         break;
-      case ContactMode::Rolling: {
+      case ContactMode::Rolling:
         g(base + 1) = now.normal_force;
-        const Vec3 friction = now.force_W - now.normal_force * contact.normal_W;
-        g(base + 2) = contact.friction * now.normal_force - friction.norm();
+        g(base + 2) = contact.friction * now.normal_force - now.friction_W.norm();
         break;
-      }
     }
   }
 }
@@ -350,27 +353,26 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
   const PlaneContact& contact = model_.contacts[c];
   const ContactMode before = status.mode;
   status.mode = ContactMode::Rolling;
-  calc_kinematics(y, true);
-  accumulate_element_loads(y, schedule_time_, rates_, 0, nullptr);
-  solve_with_contacts(schedule_time_);
+  solve_contacts_at(y);
   const ContactNow& now = contact_now_[c];
-  const Vec3 friction = now.force_W - now.normal_force * contact.normal_W;
   const double slip = now.slip_W.norm();
   if (!(now.normal_force > 0.0)) {
     status.mode = ContactMode::Apart;
   } else if (slip > status.slip_zero) {
     status.mode = ContactMode::Sliding;
     status.slide_direction_W = now.slip_W / slip;
-  } else if (contact.friction > 0.0 && friction.norm() <= contact.friction * now.normal_force) {
+  } else if (contact.friction > 0.0 &&
+             now.friction_W.norm() <= contact.friction * now.normal_force) {
     project(t, y);  // no slip at all from here
   } else {
-    // The friction rolling needs is outside the cone: the contact slides the way it is pushed,
-    // against that friction, which saturates at mu N.
     status.mode = ContactMode::Sliding;
-    if (friction.norm() > 0.0) status.slide_direction_W = -friction / friction.norm();
+    status.slide_direction_W = pushed_direction(now.friction_W, status.slide_direction_W);
   }
   if (status.mode != before) {
-    note_contact(t, c, mode_name(static_cast<int>(status.mode)));
+    note_contact(t, c,
+                 status.mode == ContactMode::Apart     ? "apart"
+                 : status.mode == ContactMode::Sliding ? "slides"
+                                                       : "rolls");
   }
 }
 
@@ -449,13 +451,10 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
         note_contact(t, c, "slip stops");
         classify_contact(c, t, y);
       } else {
-        calc_kinematics(y, true);
-        accumulate_element_loads(y, schedule_time_, rates_, 0, nullptr);
-        solve_with_contacts(schedule_time_);
-        const ContactNow& now = contact_now_[c];
-        const Vec3 friction = now.force_W - now.normal_force * model_.contacts[c].normal_W;
+        solve_contacts_at(y);
         status.mode = ContactMode::Sliding;
-        if (friction.norm() > 0.0) status.slide_direction_W = -friction / friction.norm();
+        status.slide_direction_W =
+            pushed_direction(contact_now_[c].friction_W, status.slide_direction_W);
         note_contact(t, c, "slides: the friction rolling needs leaves the cone");
       }
       break;
@@ -512,15 +511,13 @@ ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
 void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
   contact_events_.clear();
   if (model_.contacts.empty()) return;
-  calc_kinematics(y, true);
-  calc_contact_points();
-  VecX y_start = y;  // classifying may project it; the run starts from y itself
+  calc_kinematics(y, true);  // the bodies' states set the scales
+  VecX y_start = y;          // classifying may project it; the run starts from y itself
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const PlaneContact& contact = model_.contacts[c];
     const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
     ContactStatus& status = contact_status_[c];
     status = ContactStatus{};
-    status.speed_scale = scales.speed;
     status.slip_zero = scales.slip_zero;
     status.settle_speed = scales.settle_speed;
     status.touching_height = scales.touching_height;

@@ -444,11 +444,10 @@ void ArticulatedFormulation::calc_row_extras(double /*t*/, const VecX& y, RowExt
   extras.contacts.resize(model_.contacts.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const ContactNow& now = contact_now_[c];
-    const Vec3& n = model_.contacts[c].normal_W;
     ContactOutput& out = extras.contacts[c];
     out.mode = static_cast<int>(contact_status_[c].mode);
     out.normal_force = now.normal_force;
-    out.friction_W = now.force_W - now.normal_force * n;
+    out.friction_W = now.friction_W;
     out.slip_speed = now.slip_W.norm();
   }
   write_joint_powers(y, rates_, 0);

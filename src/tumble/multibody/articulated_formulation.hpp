@@ -124,7 +124,6 @@ class ArticulatedFormulation final : public Formulation {
   struct ContactStatus {
     ContactMode mode = ContactMode::Apart;
     Vec3 slide_direction_W = Vec3::UnitX();  // slip direction while the slip speed is ~0
-    double speed_scale = 1.0;                // m/s: scales the tolerances below
     double slip_zero = 0.0;                  // m/s: slower slip counts as none
     double settle_speed = 0.0;               // m/s: slower touchdowns settle instead of bouncing
     double touching_height = 0.0;            // m: nearer the plane counts as touching
@@ -137,7 +136,8 @@ class ArticulatedFormulation final : public Formulation {
     Vec3 velocity_W = Vec3::Zero();      // of the body's material point at the contact
     Vec3 slip_W = Vec3::Zero();          // its tangential part
     Vec3 force_W = Vec3::Zero();         // on the body at the contact
-    double normal_force = 0.0;
+    double normal_force = 0.0;           // force_W's component along the plane's normal
+    Vec3 friction_W = Vec3::Zero();      // force_W's tangential part
   };
   // One unknown of the contact forces and the constraint row that goes with it.
   struct ContactUnknown {
@@ -179,6 +179,8 @@ class ArticulatedFormulation final : public Formulation {
   // solve() with the contact forces of the current modes, after calc_kinematics and
   // accumulate_element_loads; fills contact_now_.
   void solve_with_contacts(double mode_time) const;
+  // Kinematics, loads and solve_with_contacts at y, in the current modes.
+  void solve_contacts_at(const VecX& y) const;
   // The unknowns of the touching contacts' forces: their constraints in each mode (Motion) or
   // the velocity constraints with normal impulses for sliding contacts (Projection). Returns
   // their count.

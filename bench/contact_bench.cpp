@@ -64,6 +64,10 @@ BENCHMARK_CAPTURE(BM_ContactExample, ramp_too_steep, "ramp_too_steep")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ContactExample, bouncing_ball, "bouncing_ball")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ContactExample, rolling_coin, "rolling_coin")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ContactExample, box_slides_to_rest, "box_slides_to_rest")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ContactExample, boxes_on_ramps, "boxes_on_ramps")
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace tumble

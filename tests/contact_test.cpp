@@ -308,17 +308,17 @@ TEST(Bounce, ImpactsNeverAddEnergyAndTheBallSettles) {
 
 TEST(ContactScenario, BadContactsAreRefusedWithWhereAndWhy) {
   const std::string head =
-      "tumble: 1\n"                                                                // 1
-      "bodies:\n"                                                                  // 2
-      "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}\n"     // 3
-      "  crate: {shape: box, size: [1, 1, 1], mass: 1, position: [3, 0, 0.5]}\n";  // 4
+      "tumble: 1\n"                                                                     // 1
+      "bodies:\n"                                                                       // 2
+      "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}\n"          // 3
+      "  cone: {shape: cone, radius: 1, height: 1, mass: 1, position: [3, 0, 0.5]}\n";  // 4
   const std::string simulate = "simulate: {duration: 1}\n";
   using test::expect_error;
   expect_error(head +
-                   "contacts:\n  - {type: plane, body: crate, plane: {point: [0, 0, 0], normal: "
+                   "contacts:\n  - {type: plane, body: cone, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 1]}, friction: 0.3}\n" +
                    simulate,
-               6, 25, "contacts[0].body", "box, cone and mesh contact are not supported yet");
+               6, 25, "contacts[0].body", "(not yet a cone or a composite)");
   expect_error(head +
                    "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 0]}, friction: 0.3}\n" +

@@ -117,23 +117,35 @@ TEST(NoAllocation, StepsOfAJointedSystem) {
   }
 }
 
-// A sphere rolling down a ramp and a disk sliding on the floor: both contact modes, whose steps
-// solve for the contact forces, project onto the constraints and evaluate the events.
+// A sphere rolling down a ramp, a disk sliding on the floor and a box sliding and spinning on its
+// face: both contact modes, whose steps solve for the contact forces, project onto the
+// constraints and evaluate the events.
 TEST(NoAllocation, StepsOfBodiesInContact) {
   Model m;
   m.bodies.push_back(RigidBody::make("ball", 1.0, Vec3(0.004, 0.004, 0.004).asDiagonal()));
   m.bodies.push_back(RigidBody::make("disk", 0.2, Vec3(0.0005, 0.0005, 0.001).asDiagonal()));
+  m.bodies.push_back(RigidBody::make("box", 1.0, Vec3(0.002, 0.004, 0.004).asDiagonal()));
   PlaneContact ramp;
   ramp.body = 0;
-  ramp.surface = {ContactSurface::Kind::Sphere, 0.1, 0.0};
+  ramp.surface = {ContactSurface::Kind::Sphere, 0.1, 0.0, {}};
   ramp.normal_W = Vec3(0.5, 0.0, std::sqrt(0.75));
   ramp.friction = 0.9;
   PlaneContact floor;
   floor.body = 1;
-  floor.surface = {ContactSurface::Kind::Circle, 0.1, 0.0};
+  floor.surface = {ContactSurface::Kind::Circle, 0.1, 0.0, {}};
   floor.point_W = Vec3(0.0, 0.0, -1.0);
   floor.friction = 0.2;
-  m.contacts = {ramp, floor};
+  PlaneContact box_floor;
+  box_floor.body = 2;
+  box_floor.surface.kind = ContactSurface::Kind::Polyhedron;
+  for (const double z : {-0.05, 0.05}) {
+    for (const double y : {-0.05, 0.05}) {
+      for (const double x : {-0.1, 0.1}) box_floor.surface.vertices.emplace_back(x, y, z);
+    }
+  }
+  box_floor.point_W = Vec3(0.0, 0.0, -3.0);
+  box_floor.friction = 0.3;
+  m.contacts = {ramp, floor, box_floor};
   for (const std::string method : {"dopri5", "dop853", "rk4", "rkmk4"}) {
     auto system = make_formulation("body", m);
     StepControl control;
@@ -141,12 +153,15 @@ TEST(NoAllocation, StepsOfBodiesInContact) {
     control.atol = 1e-12;
     control.fixed_step = 0.01;
     auto integrator = make_integrator(method, control);
-    std::vector<BodyState> states(2);
+    std::vector<BodyState> states(3);
     states[0].r_G = 0.1 * ramp.normal_W;
     states[1].r_G = Vec3(0.0, 0.0, -0.9);
     states[1].R_WB = rotation_from_axis_angle(Vec3::UnitX(), 1.5707963267948966);
     states[1].v_G = Vec3(2.0, 0.0, 0.0);
     states[1].omega_W = Vec3(0.0, -60.0, 0.0);
+    states[2].r_G = Vec3(0.0, 0.0, -2.95);
+    states[2].v_G = Vec3(3.0, 0.0, 0.0);
+    states[2].omega_W = Vec3(0.0, 0.0, 2.0);
     VecX y0(system->dimension()), y_dense(system->dimension());
     VecX g(static_cast<Eigen::Index>(system->events().size()));
     system->pack(states, y0);

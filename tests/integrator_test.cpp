@@ -61,6 +61,18 @@ class NanAfter : public OdeSystem {
   }
 };
 
+// y' = -50 y, whose solution stays positive, with f NaN for y < 0 (a model outside its domain):
+// a step near the explicit methods' stability limit has stages that overshoot below 0.
+class NanBelowZero : public OdeSystem {
+ public:
+  mutable int nan_evaluations = 0;
+  Eigen::Index dimension() const override { return 1; }
+  void derivative(double /*t*/, const VecX& y, VecX& dydt) const override {
+    if (y[0] < 0.0) ++nan_evaluations;
+    dydt[0] = y[0] < 0.0 ? std::numeric_limits<double>::quiet_NaN() : -50.0 * y[0];
+  }
+};
+
 Quat quaternion_at(const VecX& y, Eigen::Index offset) {
   return Quat(y[offset], y[offset + 1], y[offset + 2], y[offset + 3]);
 }
@@ -734,6 +746,24 @@ TEST(Failures, NanFromTheSystemIsReportedAsNonFiniteState) {
     // The state stays at the last good step, before f turned NaN.
     EXPECT_LE(integrator->t(), NanAfter::kTBad) << method;
     EXPECT_TRUE(integrator->y().allFinite()) << method;
+  }
+}
+
+TEST(Failures, AStepWhoseStagesGoNonFiniteIsRetriedShorter) {
+  // The run goes on past the steps whose stages left the domain, and stays accurate.
+  for (const std::string method : {"dopri5", "dop853"}) {
+    NanBelowZero system;
+    auto integrator = make_integrator(method, StepControl{});
+    integrator->start(system, 0.0, VecX::Constant(1, 1.0), 1.0);
+    StepOutcome outcome = StepOutcome::Ok;
+    for (int i = 0; i < 100000 && integrator->t() < 1.0 && outcome == StepOutcome::Ok; ++i) {
+      outcome = integrator->step(1.0);
+    }
+    EXPECT_EQ(outcome, StepOutcome::Ok) << method;
+    EXPECT_EQ(integrator->t(), 1.0) << method;
+    EXPECT_GT(system.nan_evaluations, 0) << method;
+    // Default tolerances (rtol 1e-3, atol 1e-6): the decayed solution is within atol of 0.
+    EXPECT_NEAR(integrator->y()[0], std::exp(-50.0), 1e-5) << method;
   }
 }
 

@@ -1,5 +1,6 @@
 #include "tumble/contact/plane_contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tumble {
@@ -24,7 +25,21 @@ Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length) {
 }  // namespace
 
 double contact_size(const ContactSurface& surface) {
-  return surface.radius;
+  if (surface.kind != ContactSurface::Kind::Polyhedron) return surface.radius;
+  double size = 0.0;
+  for (const Vec3& p : surface.vertices) size = std::max(size, p.norm());
+  return size;
+}
+
+int lowest_vertex(const ContactSurface& surface, const Vec3& n_B) {
+  int lowest = 0;
+  for (std::size_t i = 1; i < surface.vertices.size(); ++i) {
+    if (surface.vertices[i].dot(n_B) <
+        surface.vertices[static_cast<std::size_t>(lowest)].dot(n_B)) {
+      lowest = static_cast<int>(i);
+    }
+  }
+  return lowest;
 }
 
 SupportPoint support_point(const PlaneContact& contact, const Vec3& r_G_W, const Mat3& R_WB) {
@@ -45,6 +60,9 @@ SupportPoint support_point(const PlaneContact& contact, const Vec3& r_G_W, const
       }
       break;
     }
+    case ContactSurface::Kind::Polyhedron:
+      support.p_GC_B = s.vertices[static_cast<std::size_t>(lowest_vertex(s, n_B))];
+      break;
   }
   support.height = (r_G_W + R_WB * support.p_GC_B - contact.point_W).dot(contact.normal_W);
   return support;
@@ -66,6 +84,8 @@ Vec3 support_rate_B(const PlaneContact& contact, const Vec3& n_B, const Vec3& om
       const Vec3 u_rate = -(projected_rate - u * u.dot(projected_rate)) / projected;
       return s.radius * u_rate;
     }
+    case ContactSurface::Kind::Polyhedron:
+      return Vec3::Zero();  // a vertex: fixed in the body
   }
   return Vec3::Zero();
 }

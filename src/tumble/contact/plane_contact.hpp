@@ -10,15 +10,19 @@
 // For each the contact point is the lowest point of the surface (its support point in -n), and
 // it moves over the body at a rate that the rolling constraint needs (see support_rate_B).
 #include <string>
+#include <vector>
 
 #include "tumble/math/types.hpp"
 
 namespace tumble {
 
+// A polyhedron (a box, a plate, a mesh) touches a plane at its vertices: at one, along an edge
+// between two, or on a face (contact_feature.hpp); its support point is its lowest vertex.
 struct ContactSurface {
-  enum class Kind { Sphere, Circle, Cylinder } kind = Kind::Sphere;
-  double radius = 0.0;       // m
-  double half_length = 0.0;  // m, cylinder: the end rims are at z = +-half_length
+  enum class Kind { Sphere, Circle, Cylinder, Polyhedron } kind = Kind::Sphere;
+  double radius = 0.0;         // m
+  double half_length = 0.0;    // m, cylinder: the end rims are at z = +-half_length
+  std::vector<Vec3> vertices;  // m, polyhedron: from the COM, body axes
 };
 
 struct PlaneContact {
@@ -45,7 +49,11 @@ SupportPoint support_point(const PlaneContact& contact, const Vec3& r_G_W, const
 // follows it.
 Vec3 support_rate_B(const PlaneContact& contact, const Vec3& n_B, const Vec3& omega_B);
 
-// A length that sets the scale of the contact's tolerances: the surface's radius.
+// The vertex of a polyhedron lowest along -n_B (the first of equals).
+int lowest_vertex(const ContactSurface& surface, const Vec3& n_B);
+
+// A length that sets the scale of the contact's tolerances: the surface's radius, or a
+// polyhedron's farthest vertex from the COM.
 double contact_size(const ContactSurface& surface);
 
 }  // namespace tumble

@@ -321,8 +321,13 @@ StepOutcome Dop853::step(double t_stop) {
     const double err =
         step_control::dop853_error(error5_, error3_, y_, y_new_, control_.atol, control_.rtol, h);
     if (!std::isfinite(err) || !y_new_.allFinite()) {
-      h_ = h_abs;
-      return StepOutcome::NonFiniteState;
+      ++stats_.rejected_steps;
+      if (!step_control::shorten_after_blow_up(h_abs, h_min)) {
+        h_ = h_abs;
+        return StepOutcome::NonFiniteState;
+      }
+      rejected_before = true;
+      continue;
     }
 
     // h_new = h / fac with fac = err^(1/8) / 0.9 kept in [1/6, 1/0.333].

@@ -115,8 +115,13 @@ StepOutcome Dopri5::step(double t_stop) {
     error_ = h * (e1 * k[0] + e3 * k[2] + e4 * k[3] + e5 * k[4] + e6 * k[5] + e7 * k[6]);
     const double err = step_control::max_norm_error(error_, y_, y_new_, threshold);
     if (!std::isfinite(err) || !y_new_.allFinite()) {
-      h_ = h_abs;
-      return StepOutcome::NonFiniteState;
+      ++stats_.rejected_steps;
+      if (!step_control::shorten_after_blow_up(h_abs, h_min)) {
+        h_ = h_abs;
+        return StepOutcome::NonFiniteState;
+      }
+      rejected_before = true;
+      continue;
     }
 
     if (err > rtol) {

@@ -70,6 +70,12 @@ double ode45_initial_step(const VecX& y0, const VecX& f0, double rtol, double at
   return std::max(h, minimum_step(t0));
 }
 
+bool shorten_after_blow_up(double& h_abs, double h_min) {
+  if (h_abs <= h_min) return false;
+  h_abs = std::max(h_min, 0.1 * h_abs);
+  return true;
+}
+
 ClippedStep clip_to_stop(double t, double h_abs, double t_stop, double direction, double stretch) {
   const double distance = (t_stop - t) * direction;
   if (stretch * h_abs >= distance) return {distance, t_stop, true};

@@ -39,6 +39,11 @@ double minimum_step(double t);
 double ode45_initial_step(const VecX& y0, const VecX& f0, double rtol, double atol, double h_max,
                           double span, double t0);
 
+// A step too long for the solution can blow its stages up (a fast mode, a contact's friction
+// turning over): a rejection, retried ten times shorter. Shortens h_abs (not below h_min) and
+// returns true; false when h_abs is already h_min: then the state itself is non-finite.
+bool shorten_after_blow_up(double& h_abs, double h_min);
+
 // A step of magnitude h_abs from t towards t_stop (direction +1 or -1). If it would reach past
 // t_stop, or fall short of it by less than (stretch - 1) h_abs, the step is stretched or shortened
 // to land on t_stop exactly, so no sliver of a step is left over.

@@ -1,17 +1,21 @@
-// Contacts with planes in the articulated formulation: a hybrid system whose modes change only at
-// located events (docs/design.md, "Contact").
+// Contacts with planes in the articulated formulation: their forces in each mode and the
+// projection onto their constraints (docs/design.md, "Contact"). The modes, events and impacts
+// are in articulated_contact_modes.cpp.
 //
 // In each mode a touching contact's force is the one that keeps its constraints' accelerations at
-// zero. With psi = d/dt of the velocity of the body's material point at the contact (the point
-// itself moves over the body as it rolls, so psi is not the material point's acceleration; see
-// constraint_acceleration_W), the force is found from
+// zero. A constraint row is linear . (velocity of the body's material point at a point P) +
+// angular . omega; with psi its time derivative (P itself may move over the body as it rolls, so
+// psi is not the material point's acceleration; see solve_with_contacts), the forces are found
+// from
 //     rows . (psi_0 + A x) = 0,
 // psi_0 from the accelerations without contact forces and A from the articulated-body
-// algorithm's linear response to unit forces at the contacts (its impulsive form: no velocity
-// terms, no gravity). Sliding: one row, the normal, and the force N (n - mu s) with s the slip
-// direction (Coulomb). Rolling: three rows, the whole contact-point acceleration, and a free
-// force whose tangential part the stick-slip event keeps inside the cone.
-#include <fmt/format.h>
+// algorithm's linear response to unit wrenches at the contacts (its impulsive form: no velocity
+// terms, no gravity). Per mode:
+//  - sliding: the normal motion (one row per normal point: the contact point, an edge's ends,
+//    three corners of a face), each normal force carrying Coulomb's friction mu N against the
+//    slip at the reference point O;
+//  - rolling or sticking: all the motion the feature allows none of: a point's velocity (3 rows),
+//    an edge's (5: it may still turn about the edge), a face's (6: the body is held).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -51,26 +55,20 @@ void solve_in_place(MatX& A, VecX& b, Eigen::Index n) {
   }
 }
 
-// Touching contacts are at the plane within this fraction of their size.
-constexpr double kTouchingHeight = 1e-9;
-// Slip slower than this fraction of the contact's speed scale counts as none: events locate the
-// slip's zero to a few ulps of t, leaving ~1e-15 of the scale.
-constexpr double kSlipZero = 1e-9;
-// Touchdowns whose bounce would rise less than this fraction of the contact's size settle
-// (restitution 0): the cascade of ever smaller bounces ends after finitely many.
-constexpr double kSettleHeight = 1e-6;
-
-// Where a contact slides when the friction rolling needs does not fit in the cone: the way it is
-// pushed, against that friction (which then saturates at mu N).
-Vec3 pushed_direction(const Vec3& friction_needed_W, const Vec3& otherwise_W) {
-  const double size = friction_needed_W.norm();
-  return size > 0.0 ? Vec3(-friction_needed_W / size) : otherwise_W;
+// A wrench (moment about the COM; force) in the body's axes, of a force F_W at P and a pure
+// moment M_W.
+Vec6 wrench_at(const Mat3& R_WB, const Vec3& p_B, const Vec3& F_W, const Vec3& M_W) {
+  const Vec3 F_B = R_WB.transpose() * F_W;
+  Vec6 wrench;
+  wrench << p_B.cross(F_B) + R_WB.transpose() * M_W, F_B;
+  return wrench;
 }
 
 }  // namespace
 
 void ArticulatedFormulation::set_up_contacts() {
   const std::size_t count = model_.contacts.size();
+  std::size_t most_vertices = 0;
   for (const PlaneContact& contact : model_.contacts) {
     if (tree_[slot_of_body_[contact.body]].type != TreeJoint::Type::Free) {
       throw std::invalid_argument("contact '" + contact.name + "': body '" +
@@ -80,11 +78,16 @@ void ArticulatedFormulation::set_up_contacts() {
     event_specs_.push_back({contact.name + " touchdown", EventDirection::Falling});
     event_specs_.push_back({contact.name + " lift-off", EventDirection::Falling});
     event_specs_.push_back({contact.name + " stick-slip", EventDirection::Falling});
+    most_vertices = std::max(most_vertices, contact.surface.vertices.size());
   }
   contact_status_.resize(count);
+  for (std::size_t c = 0; c < count; ++c) {
+    reserve_feature(contact_status_[c].feature, model_.contacts[c].surface.vertices.size());
+  }
+  touching_.reserve(most_vertices);
   contact_now_.resize(count);
-  unknowns_.resize(3 * count);
-  const auto rows = static_cast<Eigen::Index>(3 * count);
+  unknowns_.resize(6 * count);
+  const auto rows = static_cast<Eigen::Index>(6 * count);
   contact_matrix_.resize(rows, rows);
   contact_rhs_.resize(rows);
   contact_x_.resize(rows);
@@ -99,16 +102,64 @@ Eigen::Index ArticulatedFormulation::contact_entry(std::size_t contact) const {
 void ArticulatedFormulation::calc_contact_points() const {
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const PlaneContact& contact = model_.contacts[c];
+    const ContactStatus& status = contact_status_[c];
     const Workspace& w = work_[slot_of_body_[contact.body]];
+    const Vec3& n = contact.normal_W;
     ContactNow& now = contact_now_[c];
-    now.support = support_point(contact, w.r_G_W, w.R_WC);
-    now.n_B = w.R_WC.transpose() * contact.normal_W;
+    now.n_B = w.R_WC.transpose() * n;
     const Vec3 omega_B = w.velocity.head<3>();
-    now.support_rate_B = support_rate_B(contact, now.n_B, omega_B);
-    now.velocity_W = w.R_WC * (w.velocity.tail<3>() + omega_B.cross(now.support.p_GC_B));
-    now.slip_W = now.velocity_W - contact.normal_W * contact.normal_W.dot(now.velocity_W);
+    const Vec3 v_G_B = w.velocity.tail<3>();
+    const auto normal_speed = [&](const Vec3& p_B) {
+      return n.dot(w.R_WC * (v_G_B + omega_B.cross(p_B)));
+    };
+    const ContactSurface& surface = contact.surface;
+    if (surface.kind != ContactSurface::Kind::Polyhedron) {
+      now.support = support_point(contact, w.r_G_W, w.R_WC);
+      now.reference_B = now.support.p_GC_B;
+      now.reference_rate_B = support_rate_B(contact, now.n_B, omega_B);
+      now.normal_points_B[0] = now.reference_B;
+      now.normal_point_count = 1;
+    } else {
+      // Touchdown watches the lowest vertex not already touching.
+      const ContactFeature& feature = status.feature;
+      int lowest = -1;
+      double lowest_depth = 0.0;
+      for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
+        if (feature.contains(static_cast<int>(i))) continue;
+        const double depth = surface.vertices[i].dot(now.n_B);
+        if (lowest < 0 || depth < lowest_depth) {
+          lowest = static_cast<int>(i);
+          lowest_depth = depth;
+        }
+      }
+      now.support.p_GC_B =
+          lowest >= 0 ? surface.vertices[static_cast<std::size_t>(lowest)] : Vec3::Zero();
+      now.support.height = lowest >= 0
+                               ? (w.r_G_W + w.R_WC * now.support.p_GC_B - contact.point_W).dot(n)
+                               : 1.0;  // every vertex touches: nothing left to land
+      now.reference_rate_B.setZero();
+      if (feature.size() == 0) {
+        now.reference_B = now.support.p_GC_B;
+        now.normal_points_B[0] = now.reference_B;
+        now.normal_point_count = 1;
+      } else {
+        now.reference_B = feature.reference_B;
+        now.normal_point_count = feature.normal_point_count;
+        for (int k = 0; k < feature.normal_point_count; ++k) {
+          now.normal_points_B[static_cast<std::size_t>(k)] =
+              surface.vertices[static_cast<std::size_t>(
+                  feature.normal_points[static_cast<std::size_t>(k)])];
+        }
+      }
+    }
+    now.support_normal_speed = normal_speed(now.support.p_GC_B);
+    now.velocity_W = w.R_WC * (v_G_B + omega_B.cross(now.reference_B));
+    const double spin = (w.R_WC * omega_B).dot(n);
+    now.slip_W = now.velocity_W - n * n.dot(now.velocity_W) + status.feature.spin_radius * spin * n;
+    now.wrench_B.setZero();
     now.force_W.setZero();
     now.friction_W.setZero();
+    now.moment_about_O_B.setZero();
     now.normal_force = 0.0;
   }
 }
@@ -119,43 +170,91 @@ Vec3 ArticulatedFormulation::slide_direction(std::size_t c) const {
   return contact_status_[c].slide_direction_W;
 }
 
-Eigen::Index ArticulatedFormulation::gather_contact_unknowns(ContactRows rows) const {
-  Eigen::Index count = 0;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const Vec3& n = model_.contacts[c].normal_W;
-    switch (contact_status_[c].mode) {
-      case ContactMode::Apart:
-        break;
-      case ContactMode::Sliding: {
-        const Vec3 force = rows == ContactRows::Motion
-                               ? Vec3(n - model_.contacts[c].friction * slide_direction(c))
-                               : n;
-        unknowns_[static_cast<std::size_t>(count++)] = {c, n, force};
-        break;
-      }
-      case ContactMode::Rolling:
-        for (int axis = 0; axis < 3; ++axis) {
-          const Vec3 e = Vec3::Unit(axis);
-          unknowns_[static_cast<std::size_t>(count++)] = {c, e, e};
-        }
-        break;
+Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, ContactMode mode,
+                                                             ContactRows rows, const Vec3& slide_W,
+                                                             Eigen::Index count) const {
+  const PlaneContact& contact = model_.contacts[c];
+  const ContactNow& now = contact_now_[c];
+  const Mat3& R = work_[slot_of_body_[contact.body]].R_WC;
+  const Vec3& n = contact.normal_W;
+  const Vec3 zero = Vec3::Zero();
+  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
+  const auto add = [&](const Vec3& p_B, const Vec3& rate_B, const Vec3& linear_W,
+                       const Vec3& angular_W, bool normal, const Vec6& wrench_B, int anchor) {
+    unknowns_[static_cast<std::size_t>(count++)] = {
+        c, p_B, rate_B, linear_W, angular_W, normal, polyhedron ? anchor : -1, wrench_B};
+  };
+  const bool points_only =
+      mode == ContactMode::Sliding || (rows == ContactRows::Position && !polyhedron);
+  if (mode == ContactMode::Apart) return count;
+  if (points_only) {
+    // Coulomb: each normal force N carries -mu N along the slip's tangential part at O and, for
+    // a face or an edge, a moment -mu N rho along its spin part (an ellipsoidal limit surface:
+    // exact for sliding without spin).
+    const bool with_friction = rows == ContactRows::Motion && mode == ContactMode::Sliding;
+    const double mu = with_friction ? contact.friction : 0.0;
+    const Vec3 slide_tangential_W = slide_W - n * n.dot(slide_W);
+    const Vec3 spin_moment_W = -mu * contact_status_[c].feature.spin_radius * n.dot(slide_W) * n;
+    for (int k = 0; k < now.normal_point_count; ++k) {
+      const Vec3& p = now.normal_points_B[static_cast<std::size_t>(k)];
+      const Vec3 rate = now.normal_point_count == 1 ? now.reference_rate_B : zero;
+      // One point (a curved surface, a vertex) is its own reference point: one wrench.
+      const Vec6 wrench =
+          now.normal_point_count == 1
+              ? wrench_at(R, p, n - mu * slide_tangential_W, spin_moment_W)
+              : Vec6(wrench_at(R, p, n, zero) +
+                     wrench_at(R, now.reference_B, -mu * slide_tangential_W, spin_moment_W));
+      add(p, rate, n, zero, true, wrench, -1);
+    }
+    return count;
+  }
+  // Rolling or sticking: the reference point's velocity (for a vertex or a curved surface that
+  // is all); an edge's other end may not move across the edge or off the plane; a face may not
+  // turn at all.
+  Vec3 t1, t2;
+  plane_basis(n, t1, t2);
+  const Vec3& O = now.reference_B;
+  const Vec3* lin[3] = {&n, &t1, &t2};
+  if (now.normal_point_count == 2) {
+    const Vec3& A = now.normal_points_B[0];
+    const Vec3& B = now.normal_points_B[1];
+    for (int a = 0; a < 3; ++a) {
+      add(A, zero, *lin[a], zero, a == 0, wrench_at(R, A, *lin[a], zero), 0);
+    }
+    const Vec3 across_W = n.cross(R * (B - A)).normalized();
+    add(B, zero, n, zero, true, wrench_at(R, B, n, zero), 1);
+    add(B, zero, across_W, zero, false, wrench_at(R, B, across_W, zero), 1);
+    return count;
+  }
+  for (int a = 0; a < 3; ++a) {
+    add(O, now.reference_rate_B, *lin[a], zero, a == 0, wrench_at(R, O, *lin[a], zero), 0);
+  }
+  if (now.normal_point_count == 3) {
+    for (int a = 0; a < 3; ++a) {
+      add(O, zero, zero, *lin[a], a != 0, wrench_at(R, O, zero, *lin[a]), 0);
     }
   }
   return count;
 }
 
-namespace {
-
-// A force at a contact point on its body's workspace entry: (moment about the COM; force), the
-// body's axes.
-template <typename Work>
-void add_force_at(Work& w, const Vec3& p_GC_B, const Vec3& F_W) {
-  const Vec3 F_B = w.R_WC.transpose() * F_W;
-  w.external.template head<3>() += p_GC_B.cross(F_B);
-  w.external.template tail<3>() += F_B;
+Eigen::Index ArticulatedFormulation::gather_contact_unknowns(ContactRows rows) const {
+  Eigen::Index count = 0;
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const ContactMode mode = contact_status_[c].mode;
+    const Vec3 slide = mode == ContactMode::Sliding && rows == ContactRows::Motion
+                           ? slide_direction(c)
+                           : Vec3::Zero();
+    count = append_contact_unknowns(c, mode, rows, slide, count);
+  }
+  return count;
 }
 
-}  // namespace
+double ArticulatedFormulation::row_velocity(const ContactUnknown& row) const {
+  const Workspace& w = work_[slot_of_body_[model_.contacts[row.contact].body]];
+  const Vec3 omega_B = w.velocity.head<3>();
+  return row.linear_W.dot(w.R_WC * (w.velocity.tail<3>() + omega_B.cross(row.point_B))) +
+         row.angular_W.dot(w.R_WC * omega_B);
+}
 
 void ArticulatedFormulation::calc_contact_matrix(Eigen::Index count, double mode_time) const {
   for (Eigen::Index j = 0; j < count; ++j) {
@@ -164,18 +263,16 @@ void ArticulatedFormulation::calc_contact_matrix(Eigen::Index count, double mode
       w.qdd.setZero();
     }
     const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
-    const PlaneContact& contact = model_.contacts[u.contact];
-    add_force_at(work_[slot_of_body_[contact.body]], contact_now_[u.contact].support.p_GC_B,
-                 u.force_W);
+    work_[slot_of_body_[model_.contacts[u.contact].body]].external += u.wrench_B;
     solve(mode_time, true);
     for (Eigen::Index i = 0; i < count; ++i) {
       const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
       const Workspace& w = work_[slot_of_body_[model_.contacts[row.contact].body]];
-      const Vec3& p = contact_now_[row.contact].support.p_GC_B;
-      // The linear response of the contact point: no velocity terms in the impulsive passes.
-      const Vec3 response_W =
-          w.R_WC * (w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p));
-      contact_matrix_(i, j) = row.row_W.dot(response_W);
+      // The linear response of the row: no velocity terms in the impulsive passes.
+      const Vec3 alpha_B = w.acceleration.head<3>();
+      contact_matrix_(i, j) =
+          row.linear_W.dot(w.R_WC * (w.acceleration.tail<3>() + alpha_B.cross(row.point_B))) +
+          row.angular_W.dot(w.R_WC * alpha_B);
     }
   }
   for (Workspace& w : work_) w.external.setZero();
@@ -192,54 +289,72 @@ void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Motion);
   if (count == 0) return;
 
-  // psi_0 for each row: d/dt (v_G + omega x p) with p the contact point's offset, which turns
-  // with the body and also moves over it (p' = omega x p + R p'_B):
+  // psi_0 for each row: d/dt (v_G + omega x p) with p the row's point, which turns with the
+  // body and may also move over it (p' = omega x p + R p'_B):
   //   psi = a_G + alpha x p + omega x (omega x p + R p'_B),
   // in the body's axes from the spatial acceleration (alpha; a_O), whose classical value at the
-  // COM is a_O + omega x v_G, and the -g that ground's acceleration carries.
+  // COM is a_O + omega x v_G, and the -g that ground's acceleration carries; an angular row's is
+  // alpha (its direction is fixed in the world).
   for (Eigen::Index i = 0; i < count; ++i) {
     const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
-    const ContactNow& now = contact_now_[row.contact];
     const Workspace& w = work_[slot_of_body_[model_.contacts[row.contact].body]];
     const Vec3 omega_B = w.velocity.head<3>();
-    const Vec3& p = now.support.p_GC_B;
+    const Vec3 alpha_B = w.acceleration.head<3>();
+    const Vec3& p = row.point_B;
     const Vec3 v_P_B = w.velocity.tail<3>() + omega_B.cross(p);
-    const Vec3 psi_B = w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p) +
-                       omega_B.cross(v_P_B) + omega_B.cross(now.support_rate_B);
-    contact_rhs_(i) = -row.row_W.dot(w.R_WC * psi_B + model_.gravity_W);
+    const Vec3 psi_B = w.acceleration.tail<3>() + alpha_B.cross(p) + omega_B.cross(v_P_B) +
+                       omega_B.cross(row.point_rate_B);
+    contact_rhs_(i) =
+        -row.linear_W.dot(w.R_WC * psi_B + model_.gravity_W) - row.angular_W.dot(w.R_WC * alpha_B);
   }
   calc_contact_matrix(count, mode_time);
-  solve_in_place(contact_matrix_, contact_rhs_, count);
-
+  solve_contact_system(count, contact_rhs_);
+  set_contact_resultants(count, contact_rhs_);
   for (Workspace& w : work_) w.external = w.applied;
-  for (Eigen::Index j = 0; j < count; ++j) {
-    const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
-    const Vec3 F_W = contact_rhs_(j) * u.force_W;
-    ContactNow& now = contact_now_[u.contact];
-    add_force_at(work_[slot_of_body_[model_.contacts[u.contact].body]], now.support.p_GC_B, F_W);
-    now.force_W += F_W;
-  }
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    ContactNow& now = contact_now_[c];
-    const Vec3& n = model_.contacts[c].normal_W;
-    now.normal_force = now.force_W.dot(n);
-    now.friction_W = now.force_W - now.normal_force * n;
+    work_[slot_of_body_[model_.contacts[c].body]].external += contact_now_[c].wrench_B;
   }
   solve(mode_time, false);
 }
 
-void ArticulatedFormulation::apply_contact_impulses(Eigen::Index count, const VecX& impulses,
-                                                    double mode_time, VecX& y) const {
+void ArticulatedFormulation::solve_contact_system(Eigen::Index count, VecX& x) const {
+  solve_in_place(contact_matrix_, x, count);
+}
+
+void ArticulatedFormulation::set_contact_resultants(Eigen::Index count, const VecX& x) const {
+  for (ContactNow& now : contact_now_) now.wrench_B.setZero();
+  for (Eigen::Index j = 0; j < count; ++j) {
+    const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
+    contact_now_[u.contact].wrench_B += x(j) * u.wrench_B;
+  }
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    ContactNow& now = contact_now_[c];
+    const Vec3& n = model_.contacts[c].normal_W;
+    const Mat3& R = work_[slot_of_body_[model_.contacts[c].body]].R_WC;
+    const Vec3 F_B = now.wrench_B.tail<3>();
+    now.force_W = R * F_B;
+    now.normal_force = now.force_W.dot(n);
+    now.friction_W = now.force_W - now.normal_force * n;
+    now.moment_about_O_B = now.wrench_B.head<3>() - now.reference_B.cross(F_B);
+  }
+}
+
+void ArticulatedFormulation::respond_to_contact_impulses(Eigen::Index count, const VecX& impulses,
+                                                         double mode_time) const {
   for (Workspace& w : work_) {
     w.external.setZero();
     w.qdd.setZero();
   }
   for (Eigen::Index j = 0; j < count; ++j) {
     const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
-    add_force_at(work_[slot_of_body_[model_.contacts[u.contact].body]],
-                 contact_now_[u.contact].support.p_GC_B, impulses(j) * u.force_W);
+    work_[slot_of_body_[model_.contacts[u.contact].body]].external += impulses(j) * u.wrench_B;
   }
   solve(mode_time, true);
+}
+
+void ArticulatedFormulation::apply_contact_impulses(Eigen::Index count, const VecX& impulses,
+                                                    double mode_time, VecX& y) const {
+  respond_to_contact_impulses(count, impulses, mode_time);
   for (std::size_t k = 0; k < tree_.size(); ++k) {
     const TreeJoint& joint = tree_[k];
     if (joint.nv > 0) y.segment(joint.v, joint.nv) += work_[k].qdd;
@@ -248,7 +363,8 @@ void ArticulatedFormulation::apply_contact_impulses(Eigen::Index count, const Ve
 
 void ArticulatedFormulation::write_contact_powers(VecX& rates, Eigen::Index offset) const {
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    rates(offset + contact_entry(c)) = contact_now_[c].force_W.dot(contact_now_[c].velocity_W);
+    const Workspace& w = work_[slot_of_body_[model_.contacts[c].body]];
+    rates(offset + contact_entry(c)) = contact_now_[c].wrench_B.dot(w.velocity);
   }
 }
 
@@ -258,286 +374,105 @@ void ArticulatedFormulation::solve_contacts_at(const VecX& y) const {
   solve_with_contacts(schedule_time_);
 }
 
+namespace {
+
+// Turns a joint's coordinates by the small motion dq of its speeds (a displacement, not a
+// rate): q (x) exp(dq_omega / 2) for a quaternion.
+void turn_quaternion(VecX& y, Eigen::Index o, const Vec3& angle_B) {
+  const double angle = angle_B.norm();
+  if (angle == 0.0) return;
+  Quat q(y(o), y(o + 1), y(o + 2), y(o + 3));
+  q = (q * Quat(Eigen::AngleAxisd(angle, angle_B / angle))).normalized();
+  y(o) = q.w();
+  y(o + 1) = q.x();
+  y(o + 2) = q.y();
+  y(o + 3) = q.z();
+}
+
+}  // namespace
+
+void ArticulatedFormulation::project_polyhedra_positions(VecX& y) const {
+  // The smallest move in the mass metric (the response to impulses along the rows) that puts the
+  // normal points back on their planes, to first order (a face or an edge turns back flat as well
+  // as moving), and a sticking polyhedron back on its anchor.
+  const Eigen::Index count = gather_contact_unknowns(ContactRows::Position);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
+    const PlaneContact& contact = model_.contacts[row.contact];
+    const ContactStatus& status = contact_status_[row.contact];
+    const Workspace& w = work_[slot_of_body_[contact.body]];
+    const Vec3 x_P = w.r_G_W + w.R_WC * row.point_B;
+    if (row.anchor < 0) {
+      contact_x_(i) = -(x_P - contact.point_W).dot(contact.normal_W);
+    } else {
+      // Off the anchor: the point's offset, and the small turn R_WB R_anchor^T as a vector.
+      const Eigen::AngleAxisd turn(w.R_WC * status.anchor_R_WB.transpose());
+      contact_x_(i) =
+          -row.linear_W.dot(x_P - status.anchor_W[static_cast<std::size_t>(row.anchor)]) -
+          row.angular_W.dot(turn.angle() * turn.axis());
+    }
+  }
+  calc_contact_matrix(count, schedule_time_);
+  solve_contact_system(count, contact_x_);
+  respond_to_contact_impulses(count, contact_x_, schedule_time_);
+  for (std::size_t k = 0; k < tree_.size(); ++k) {
+    const TreeJoint& joint = tree_[k];
+    const auto& move = work_[k].qdd;
+    switch (joint.type) {
+      case TreeJoint::Type::Free:
+        y.segment<3>(joint.q) += work_[k].R_WC * move.tail<3>();
+        turn_quaternion(y, joint.q + 3, move.head<3>());
+        break;
+      case TreeJoint::Type::Ball:
+        turn_quaternion(y, joint.q, move.head<3>());
+        break;
+      case TreeJoint::Type::Hinge:
+        y(joint.q) += move(0);
+        break;
+      case TreeJoint::Type::Fixed:
+        break;
+    }
+  }
+}
+
 void ArticulatedFormulation::project(double t, VecX& y) const {
   OdeSystem::project(t, y);
   const bool touching =
       std::any_of(contact_status_.begin(), contact_status_.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (!touching) return;
-  // Positions: each touching body back onto its plane along the normal (its free joint's COM).
-  calc_kinematics(y, false);
+  bool polyhedra = false;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    if (contact_status_[c].mode == ContactMode::Apart) continue;
-    const PlaneContact& contact = model_.contacts[c];
-    const Workspace& w = work_[slot_of_body_[contact.body]];
-    const double height = support_point(contact, w.r_G_W, w.R_WC).height;
-    y.segment<3>(tree_[slot_of_body_[contact.body]].q) -= height * contact.normal_W;
+    polyhedra |= model_.contacts[c].surface.kind == ContactSurface::Kind::Polyhedron &&
+                 contact_status_[c].mode != ContactMode::Apart;
+  }
+  if (polyhedra) {
+    calc_kinematics(y, true);
+    calc_contact_points();
+    project_polyhedra_positions(y);
+  } else {
+    // Positions: each touching body back onto its plane along the normal (its free joint's COM):
+    // one point's height is all a curved surface's contact constrains.
+    calc_kinematics(y, false);
+    for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+      if (contact_status_[c].mode == ContactMode::Apart) continue;
+      const PlaneContact& contact = model_.contacts[c];
+      const Workspace& w = work_[slot_of_body_[contact.body]];
+      const double height = support_point(contact, w.r_G_W, w.R_WC).height;
+      y.segment<3>(tree_[slot_of_body_[contact.body]].q) -= height * contact.normal_W;
+    }
   }
   // Velocities: the least kinetic-energy change (impulses at the contacts) that zeroes the
-  // normal velocity of sliding contacts and the whole contact velocity of rolling ones.
+  // velocity along each mode's constraints.
   calc_kinematics(y, true);
   calc_contact_points();
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Projection);
   for (Eigen::Index i = 0; i < count; ++i) {
-    const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
-    contact_x_(i) = -row.row_W.dot(contact_now_[row.contact].velocity_W);
+    contact_x_(i) = -row_velocity(unknowns_[static_cast<std::size_t>(i)]);
   }
   calc_contact_matrix(count, schedule_time_);
-  solve_in_place(contact_matrix_, contact_x_, count);
+  solve_contact_system(count, contact_x_);
   apply_contact_impulses(count, contact_x_, schedule_time_, y);
-}
-
-void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& g) const {
-  const bool touching =
-      std::any_of(contact_status_.begin(), contact_status_.end(),
-                  [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
-  if (touching) {
-    solve_contacts_at(y);
-  } else {
-    calc_kinematics(y, true);
-    calc_contact_points();
-  }
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const auto base = static_cast<Eigen::Index>(3 * c);
-    const ContactNow& now = contact_now_[c];
-    const ContactStatus& status = contact_status_[c];
-    const PlaneContact& contact = model_.contacts[c];
-    g(base) = g(base + 1) = g(base + 2) = 1.0;
-    switch (status.mode) {
-      case ContactMode::Apart: {
-        // Height, but kept positive while the contact point moves away from the plane: a bounce
-        // may rise and land again within one step (its flight is a parabola, which a high-order
-        // method steps over), and the height alone would not change sign between the impact
-        // (h = 0) and the landing (h < 0).
-        const double moving_away = now.velocity_W.dot(contact.normal_W);
-        g(base) = moving_away > 0.0 ? std::max(now.support.height, status.touching_height)
-                                    : now.support.height;
-        break;
-      }
-      case ContactMode::Sliding:
-        g(base + 1) = now.normal_force;
-        if (contact.friction > 0.0) g(base + 2) = now.slip_W.dot(status.slide_direction_W);
-        break;
-      case ContactMode::Rolling:
-        g(base + 1) = now.normal_force;
-        g(base + 2) = contact.friction * now.normal_force - now.friction_W.norm();
-        break;
-    }
-  }
-}
-
-bool ArticulatedFormulation::refresh_event_functions(double /*t*/, const VecX& y) {
-  bool sliding = false;
-  for (const ContactStatus& s : contact_status_) sliding |= s.mode == ContactMode::Sliding;
-  if (!sliding) return false;
-  // The slip-stop event watches the slip's component along the direction it had at the start of
-  // the step: in 3D the slip may turn, and it stops where that component first vanishes.
-  calc_kinematics(y, true);
-  calc_contact_points();
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    ContactStatus& status = contact_status_[c];
-    const double slip = contact_now_[c].slip_W.norm();
-    if (status.mode == ContactMode::Sliding && slip > status.slip_zero) {
-      status.slide_direction_W = contact_now_[c].slip_W / slip;
-    }
-  }
-  return true;
-}
-
-void ArticulatedFormulation::note_contact(double t, std::size_t contact, std::string what) {
-  contact_events_.push_back({t, contact, std::move(what)});
-}
-
-void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) {
-  ContactStatus& status = contact_status_[c];
-  const PlaneContact& contact = model_.contacts[c];
-  const ContactMode before = status.mode;
-  status.mode = ContactMode::Rolling;
-  solve_contacts_at(y);
-  const ContactNow& now = contact_now_[c];
-  const double slip = now.slip_W.norm();
-  if (!(now.normal_force > 0.0)) {
-    status.mode = ContactMode::Apart;
-  } else if (slip > status.slip_zero) {
-    status.mode = ContactMode::Sliding;
-    status.slide_direction_W = now.slip_W / slip;
-  } else if (contact.friction > 0.0 &&
-             now.friction_W.norm() <= contact.friction * now.normal_force) {
-    project(t, y);  // no slip at all from here
-  } else {
-    status.mode = ContactMode::Sliding;
-    status.slide_direction_W = pushed_direction(now.friction_W, status.slide_direction_W);
-  }
-  if (status.mode != before) {
-    note_contact(t, c,
-                 status.mode == ContactMode::Apart     ? "apart"
-                 : status.mode == ContactMode::Sliding ? "slides"
-                                                       : "rolls");
-  }
-}
-
-void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
-  const PlaneContact& contact = model_.contacts[c];
-  ContactStatus& status = contact_status_[c];
-  const Vec3& n = contact.normal_W;
-  calc_kinematics(y, true);
-  calc_contact_points();
-  // K: the contact point's velocity change per unit impulse there (3 x 3, world).
-  for (int axis = 0; axis < 3; ++axis) {
-    unknowns_[static_cast<std::size_t>(axis)] = {c, Vec3::Unit(axis), Vec3::Unit(axis)};
-  }
-  calc_contact_matrix(3, schedule_time_);
-  const Mat3 K = contact_matrix_.topLeftCorner<3, 3>();
-  const Vec3 v_before = contact_now_[c].velocity_W;
-  const double vn_before = n.dot(v_before);
-  const Vec3 slip_before = v_before - vn_before * n;
-  const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
-
-  // Newton's restitution on the normal velocity, Coulomb on the tangential impulse: the impulse
-  // that leaves no slip if it lies in the cone, else a sliding impulse P_n (n - mu s) against
-  // the slip. Should that add energy (it can, where rotation couples the two), the impact is
-  // taken as plastic (e = 0), which never does.
-  Vec3 P = Vec3::Zero();
-  double work = 0.0;
-  for (const double e : {settles ? 0.0 : contact.restitution, 0.0}) {
-    P = K.inverse() * (-e * vn_before * n - v_before);
-    const double Pn = P.dot(n);
-    const Vec3 Pt = P - Pn * n;
-    if (Pt.norm() > contact.friction * Pn) {
-      const double slip = slip_before.norm();
-      const Vec3 s = slip > 0.0 ? Vec3(slip_before / slip)
-                                : (Pt.norm() > 0.0 ? Vec3(-Pt / Pt.norm()) : Vec3::Zero());
-      const Vec3 d = n - contact.friction * s;
-      P = (-(1.0 + e) * vn_before / n.dot(K * d)) * d;
-    }
-    work = P.dot(v_before + 0.5 * (K * P));
-    if (work <= 0.0) break;
-  }
-  for (int axis = 0; axis < 3; ++axis) contact_x_(axis) = P(axis);
-  apply_contact_impulses(3, contact_x_, schedule_time_, y);
-  y(ledger_ + contact_entry(c)) += work;
-  const double vn_after = vn_before + n.dot(K * P);
-  if (settles) {
-    note_contact(t, c, fmt::format("touchdown at normal speed {:.3g} m/s: settles", -vn_before));
-    classify_contact(c, t, y);
-  } else {
-    note_contact(t, c,
-                 fmt::format("impact: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", -vn_before,
-                             vn_after, -work));
-  }
-}
-
-EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, VecX& y) {
-  const std::size_t c = event_index / 3;
-  ContactStatus& status = contact_status_[c];
-  switch (event_index % 3) {
-    case 0:  // touchdown
-      impact(c, t, y);
-      break;
-    case 1:  // lift-off
-      status.mode = ContactMode::Apart;
-      note_contact(t, c, "lifts off");
-      break;
-    default:
-      if (status.mode == ContactMode::Sliding) {
-        calc_kinematics(y, true);
-        calc_contact_points();
-        const double slip = contact_now_[c].slip_W.norm();
-        if (slip > status.slip_zero) {
-          // The slip turned away from the direction it had (3D); it did not stop.
-          status.slide_direction_W = contact_now_[c].slip_W / slip;
-          break;
-        }
-        note_contact(t, c, "slip stops");
-        classify_contact(c, t, y);
-      } else {
-        solve_contacts_at(y);
-        status.mode = ContactMode::Sliding;
-        status.slide_direction_W =
-            pushed_direction(contact_now_[c].friction_W, status.slide_direction_W);
-        note_contact(t, c, "slides: the friction rolling needs leaves the cone");
-      }
-      break;
-  }
-  return EventAction::Jump;
-}
-
-namespace {
-
-struct ContactScales {
-  double speed = 1.0, slip_zero = 0.0, settle_speed = 0.0, touching_height = 0.0;
-};
-
-ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
-                             const BodyState& s) {
-  const double size = std::max(contact_size(contact.surface), 1e-300);
-  ContactScales scales;
-  scales.speed = std::max(
-      {std::sqrt(gravity_W.norm() * size), s.v_G.norm() + s.omega_W.norm() * size, 1e-300});
-  scales.slip_zero = kSlipZero * scales.speed;
-  const double g_n = std::abs(gravity_W.dot(contact.normal_W));
-  scales.settle_speed =
-      g_n > 0.0 ? std::sqrt(2.0 * g_n * kSettleHeight * size) : kSettleHeight * scales.speed;
-  scales.touching_height = kTouchingHeight * size;
-  return scales;
-}
-
-}  // namespace
-
-std::optional<ArticulatedFormulation::ContactStartProblem>
-ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
-  calc_kinematics(y0, true);
-  calc_contact_points();
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const PlaneContact& contact = model_.contacts[c];
-    const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
-    const ContactNow& now = contact_now_[c];
-    if (now.support.height < -scales.touching_height) {
-      return ContactStartProblem{
-          c, fmt::format("body '{}' starts {:.6g} m inside the plane; place it on or above it",
-                         model_.bodies[contact.body].name, -now.support.height)};
-    }
-    const double vn = now.velocity_W.dot(contact.normal_W);
-    if (now.support.height <= scales.touching_height && vn < -scales.slip_zero) {
-      return ContactStartProblem{
-          c, fmt::format("body '{}' starts touching the plane and moving into it at {:.6g} m/s; "
-                         "start it above the plane, or without that speed",
-                         model_.bodies[contact.body].name, -vn)};
-    }
-  }
-  return std::nullopt;
-}
-
-void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
-  contact_events_.clear();
-  if (model_.contacts.empty()) return;
-  calc_kinematics(y, true);  // the bodies' states set the scales
-  VecX y_start = y;          // classifying may project it; the run starts from y itself
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const PlaneContact& contact = model_.contacts[c];
-    const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
-    ContactStatus& status = contact_status_[c];
-    status = ContactStatus{};
-    status.slip_zero = scales.slip_zero;
-    status.settle_speed = scales.settle_speed;
-    status.touching_height = scales.touching_height;
-  }
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    calc_kinematics(y_start, true);
-    calc_contact_points();
-    const ContactNow& now = contact_now_[c];
-    const PlaneContact& contact = model_.contacts[c];
-    if (now.support.height <= contact_status_[c].touching_height &&
-        now.velocity_W.dot(contact.normal_W) <= contact_status_[c].slip_zero) {
-      classify_contact(c, t0, y_start);
-    }
-  }
-}
-
-void ArticulatedFormulation::reclassify_contacts(double t, VecX& y) {
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    if (contact_status_[c].mode != ContactMode::Apart) classify_contact(c, t, y);
-  }
 }
 
 }  // namespace tumble

@@ -19,11 +19,13 @@
 // friction mu N against the slip; rolling: all three), found from the same algorithm's response
 // to unit forces; project() puts positions and velocities back on the constraints after every
 // step. Touchdowns are impacts (restitution and friction on the impulse).
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "tumble/contact/contact_feature.hpp"
 #include "tumble/contact/plane_contact.hpp"
 
 #include "tumble/dynamics/formulation.hpp"
@@ -70,9 +72,11 @@ class ArticulatedFormulation final : public Formulation {
   void begin(double t0, const VecX& y) override;
   void at_breakpoint(double t, VecX& y) override;
 
-  // Contact events, three per contact: touchdown (height reaches 0 while apart), lift-off (the
-  // normal force reaches 0), and stick-slip (sliding: the slip stops; rolling: the friction it
-  // needs reaches the cone's edge).
+  // Contact events, three per contact: touchdown (a contact point, or a polyhedron's vertex not
+  // yet touching, reaches the plane), support (the normal force reaches 0: lift-off; or a
+  // polyhedron's centre of pressure reaches its feature's side: it tips), and stick-slip
+  // (sliding: the slip stops; rolling or sticking: the friction it needs reaches the cone's
+  // edge).
   std::span<const EventSpec> events() const override { return event_specs_; }
   void event_functions(double t, const VecX& y, VecX& g) const override;
   EventAction on_event(std::size_t event_index, double t, VecX& y) override;
@@ -120,32 +124,59 @@ class ArticulatedFormulation final : public Formulation {
     bool known = false;                // prescribed: qdd is given, tau follows
     Vec6 applied = Vec6::Zero();       // the loads in `external` before contact forces join them
   };
-  enum class ContactMode { Apart = 0, Sliding = 1, Rolling = 2 };
+  enum class ContactMode { Apart = 0, Sliding = 1, Rolling = 2 };  // rolling: or sticking
   struct ContactStatus {
     ContactMode mode = ContactMode::Apart;
-    Vec3 slide_direction_W = Vec3::UnitX();  // slip direction while the slip speed is ~0
-    double slip_zero = 0.0;                  // m/s: slower slip counts as none
-    double settle_speed = 0.0;               // m/s: slower touchdowns settle instead of bouncing
-    double touching_height = 0.0;            // m: nearer the plane counts as touching
+    ContactFeature feature;  // a polyhedron's touching vertex, edge or face (empty: apart)
+    // Slip direction (slip_W's) while the slip speed is ~0.
+    Vec3 slide_direction_W = Vec3::UnitX();
+    double slip_zero = 0.0;        // m/s: slower slip counts as none
+    double settle_speed = 0.0;     // m/s: slower touchdowns settle instead of bouncing
+    double touching_height = 0.0;  // m: nearer the plane counts as touching
+    double settle_height = 0.0;    // m: an impact takes in the vertices this near the plane
+    // Where a polyhedron sticks (mode rolling): the points its rows hold (a vertex or face
+    // centroid, or an edge's ends) and the body's orientation, so that projection keeps it
+    // exactly there rather than letting round-off walk it away.
+    std::array<Vec3, 2> anchor_W{};
+    Mat3 anchor_R_WB = Mat3::Identity();
   };
   // What calc_contact_points and solve_with_contacts found for each contact at the current y.
+  // The reference point O is where slip is taken and friction acts: a curved surface's contact
+  // point, a polyhedron's feature centroid (apart: its lowest vertex).
   struct ContactNow {
+    // Touchdown: the curved surface's contact point, or the lowest polyhedron vertex not in the
+    // feature, its height and its velocity along the normal.
     SupportPoint support;
+    double support_normal_speed = 0.0;
     Vec3 n_B = Vec3::UnitZ();
-    Vec3 support_rate_B = Vec3::Zero();  // the contact point's motion over the body
-    Vec3 velocity_W = Vec3::Zero();      // of the body's material point at the contact
-    Vec3 slip_W = Vec3::Zero();          // its tangential part
-    Vec3 force_W = Vec3::Zero();         // on the body at the contact
-    double normal_force = 0.0;           // force_W's component along the plane's normal
-    Vec3 friction_W = Vec3::Zero();      // force_W's tangential part
+    Vec3 reference_B = Vec3::Zero();       // O from the COM, body axes
+    Vec3 reference_rate_B = Vec3::Zero();  // O's motion over the body (curved surfaces)
+    // The points whose normal motion the contact constrains (the vertex, the edge's ends, three
+    // of the face's corners; curved: O).
+    std::array<Vec3, 3> normal_points_B{};
+    int normal_point_count = 0;
+    Vec3 velocity_W = Vec3::Zero();  // of the body's material point at O
+    // Slip: O's tangential velocity, and the spin about the normal times the feature's spin
+    // radius as the component along the normal (a polyhedron's face or edge; 0 otherwise).
+    Vec3 slip_W = Vec3::Zero();
+    Vec6 wrench_B = Vec6::Zero();          // the contact's (moment about the COM; force), body axes
+    Vec3 force_W = Vec3::Zero();           // its force
+    double normal_force = 0.0;             // force_W's component along the plane's normal
+    Vec3 friction_W = Vec3::Zero();        // force_W's tangential part
+    Vec3 moment_about_O_B = Vec3::Zero();  // its moment about O, body axes
   };
-  // One unknown of the contact forces and the constraint row that goes with it.
+  // One unknown of the contact forces and the constraint row that goes with it: the row is
+  // linear_W . (velocity or acceleration of the material point at point_B) + angular_W . omega.
   struct ContactUnknown {
     std::size_t contact = 0;
-    Vec3 row_W = Vec3::Zero();    // the constraint: row . (acceleration or velocity) = 0
-    Vec3 force_W = Vec3::Zero();  // the force per unit of the unknown
+    Vec3 point_B = Vec3::Zero();
+    Vec3 point_rate_B = Vec3::Zero();  // the point's motion over the body
+    Vec3 linear_W = Vec3::Zero();
+    Vec3 angular_W = Vec3::Zero();
+    bool normal = false;  // a row of the normal motion (restitution applies at impacts)
+    int anchor = -1;      // a sticking polyhedron's row: the ContactStatus::anchor_W it holds
+    Vec6 wrench_B = Vec6::Zero();  // per unit of the unknown: (moment about the COM; force)
   };
-  enum class ContactRows { Motion, Projection };
   // Positions and velocities of every body from y (forward pass), into the workspace.
   void calc_kinematics(const VecX& y, bool with_velocities) const;
   // The articulated-body passes after calc_kinematics, in the modes of `mode_time`: the
@@ -166,7 +197,8 @@ class ArticulatedFormulation final : public Formulation {
   void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
   JointReaction reaction_of(std::size_t model_joint) const;
 
-  // Contacts (articulated_contacts.cpp).
+  // Contacts: their forces and projection (articulated_contacts.cpp), their modes, events and
+  // impacts (articulated_contact_modes.cpp).
   void set_up_contacts();
   // The contacts' modes at the start: touching ones roll or slide, the others are apart.
   void begin_contacts(double t0, const VecX& y);
@@ -174,28 +206,70 @@ class ArticulatedFormulation final : public Formulation {
   void reclassify_contacts(double t, VecX& y);
   // Impulses, locks and starting motors at a breakpoint.
   void apply_jumps_at(double t, VecX& y);
-  // Support points and contact-point velocities, after calc_kinematics.
+  // Contact points, reference points and their velocities, after calc_kinematics.
   void calc_contact_points() const;
   // solve() with the contact forces of the current modes, after calc_kinematics and
   // accumulate_element_loads; fills contact_now_.
   void solve_with_contacts(double mode_time) const;
   // Kinematics, loads and solve_with_contacts at y, in the current modes.
   void solve_contacts_at(const VecX& y) const;
-  // The unknowns of the touching contacts' forces: their constraints in each mode (Motion) or
-  // the velocity constraints with normal impulses for sliding contacts (Projection). Returns
-  // their count.
+  // Which constraints a contact's unknowns hold:
+  //  - Motion: its mode's (sliding: the normal motion, with Coulomb's friction riding on each
+  //    normal force; rolling or sticking: all its motion the feature allows);
+  //  - Projection: as Motion, with no friction on sliding's normal impulses;
+  //  - Position: the normal motion, with normal forces; a sticking polyhedron: its Projection
+  //    rows (held at its anchor).
+  enum class ContactRows { Motion, Projection, Position };
+  // The unknowns of every touching contact (into unknowns_); returns their count.
   Eigen::Index gather_contact_unknowns(ContactRows rows) const;
+  // Appends contact c's unknowns in `mode` at unknowns_[count...], with sliding friction along
+  // `slide_W` (Motion); returns the new count.
+  Eigen::Index append_contact_unknowns(std::size_t c, ContactMode mode, ContactRows rows,
+                                       const Vec3& slide_W, Eigen::Index count) const;
   // The constraint matrix A (rows: unknowns_ rows, columns: their forces) from impulsive solves
   // of unit forces; leaves every Workspace::external zero.
   void calc_contact_matrix(Eigen::Index count, double mode_time) const;
-  // Jump the speeds by the impulses x_j along unknowns_[j].force_W.
+  // Solves contact_matrix_ x = b for the leading count rows, in place (b becomes x); throws
+  // std::runtime_error if the rows are redundant.
+  void solve_contact_system(Eigen::Index count, VecX& x) const;
+  // Each contact's resultant (contact_now_'s wrench, force, normal force, friction, moment about
+  // O) from the unknowns' values x.
+  void set_contact_resultants(Eigen::Index count, const VecX& x) const;
+  // A row's value on the current velocities (after calc_kinematics).
+  double row_velocity(const ContactUnknown& row) const;
+  // The speed jumps (Workspace::qdd) that the impulses x_j along unknowns_[j] cause.
+  void respond_to_contact_impulses(Eigen::Index count, const VecX& impulses,
+                                   double mode_time) const;
+  // Jump the speeds by the impulses x_j along unknowns_[j].
   void apply_contact_impulses(Eigen::Index count, const VecX& impulses, double mode_time,
                               VecX& y) const;
+  // project()'s position step when a polyhedron touches (after calc_contact_points).
+  void project_polyhedra_positions(VecX& y) const;
   // The current slip direction of a sliding contact.
   Vec3 slide_direction(std::size_t contact) const;
-  // The mode a touching contact takes now (slip stopped, touchdown settled, start): rolling if
-  // the friction that needs fits in the cone, else sliding the way the body is pushed.
+  // N times the CoP's least distance inside a polyhedron's feature (N itself for a point), and
+  // the side of the feature where it is least; from contact_now_.
+  double support_margin_of(std::size_t contact, int& side) const;
+  // The friction the contact carries as a slip-space vector: the tangential force, and the
+  // moment about the normal over the spin radius along the normal. Its length is what the
+  // cone bounds by mu N; from contact_now_.
+  Vec3 friction_demand(std::size_t contact) const;
+  // The touching vertices of a polyhedron contact into touching_, after calc_kinematics: those
+  // within touching_height of the plane, and those within `within` not moving away from it (at
+  // least the lowest).
+  void find_touching_vertices(std::size_t contact, double within) const;
+  // The mode a touching contact takes now (slip stopped, touchdown settled, start): rolling or
+  // sticking if the friction that needs fits in the cone, else sliding the way the body is
+  // pushed; a polyhedron tips onto a smaller feature while its CoP would leave the feature.
   void classify_contact(std::size_t contact, double t, VecX& y);
+  // Tries contact c on its current feature: sticking if the friction fits, else sliding; true
+  // if the forces are consistent (N > 0, the CoP in the feature, no touching vertex left out
+  // going into the plane). Touching vertices: touching_.
+  bool settle_on_feature(std::size_t contact, double t, VecX& y);
+  // The acceleration along the plane's normal of the body's material point p_B (after a solve).
+  double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
+  // A polyhedron that starts sticking: its anchor where it is now (after calc_contact_points).
+  void anchor_contact(std::size_t contact);
   void impact(std::size_t contact, double t, VecX& y);
   void note_contact(double t, std::size_t contact, std::string what);
   // The ledger entry of a contact (after the locks).
@@ -217,9 +291,11 @@ class ArticulatedFormulation final : public Formulation {
   std::vector<EventSpec> event_specs_;
   std::vector<ContactEventRecord> contact_events_;
   mutable std::vector<ContactNow> contact_now_;
-  mutable std::vector<ContactUnknown> unknowns_;  // sized to 3 per contact
+  mutable std::vector<ContactUnknown> unknowns_;  // sized to 6 per contact
   mutable MatX contact_matrix_;
   mutable VecX contact_rhs_, contact_x_;
+  mutable std::vector<int> touching_;  // scratch of find_touching_vertices, reserved
+  VecX impact_y_;                      // scratch of impact()
   // Scratch of derivative() and the other const queries, sized once here: no allocation per call.
   mutable std::vector<Workspace> work_;
   mutable std::vector<BodyState> states_;

@@ -1,6 +1,6 @@
 // `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
-// The body must be free (in no joint) and of a shape whose lowest point is one point that moves
-// smoothly over it (docs/scenario.md, Contacts).
+// The body must be free (in no joint) and of a shape whose contact with a plane tumble resolves:
+// a curved surface touching at one point, or a polyhedron (docs/scenario.md, Contacts).
 #include <fmt/format.h>
 #include <algorithm>
 
@@ -9,9 +9,10 @@
 namespace tumble::scenario_reading {
 namespace {
 
-bool rolls_on_a_plane(ShapeKind kind) {
+bool touches_a_plane(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
-         kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube;
+         kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
+         kind == ShapeKind::Box || kind == ShapeKind::Plate || kind == ShapeKind::Mesh;
 }
 
 ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scenario& scenario) {
@@ -32,14 +33,14 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   }
   const BodySpec& body = *std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
                                        [&](const BodySpec& b) { return b.name == contact.body; });
-  if (!body.parts.empty() || !rolls_on_a_plane(body.shape.kind)) {
+  if (!body.parts.empty() || !touches_a_plane(body.shape.kind)) {
     const std::string shape =
         body.parts.empty() ? std::string(shape_name(body.shape.kind)) : std::string("composite");
     reader.fail_at_value(body_field,
                          "body '" + contact.body + "' is a " + shape +
                              "; contact with a plane is for a sphere, shell, disk, ring, "
-                             "cylinder or tube (box, cone and mesh contact are not supported "
-                             "yet)");
+                             "cylinder, tube, box, plate or mesh (not yet a cone or a "
+                             "composite)");
   }
 
   const Field plane = map.require("plane", "{point: [x, y, z], normal: [x, y, z]}");

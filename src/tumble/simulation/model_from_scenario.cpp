@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "tumble/inertia/mesh.hpp"
 #include "tumble/math/rotation.hpp"
 
 namespace tumble {
@@ -29,6 +30,30 @@ ContactSurface contact_surface(const Shape& shape) {
       surface.radius = shape.kind == ShapeKind::Tube ? shape.outer_radius : shape.radius;
       surface.half_length = shape.length / 2;
       break;
+    case ShapeKind::Box:
+    case ShapeKind::Plate: {
+      // The corners; a plate's two faces share its four.
+      surface.kind = ContactSurface::Kind::Polyhedron;
+      const Vec3 half = shape.size / 2;
+      for (const double z : shape.kind == ShapeKind::Box ? std::vector<double>{-1.0, 1.0}
+                                                         : std::vector<double>{0.0}) {
+        for (const double y : {-1.0, 1.0}) {
+          for (const double x : {-1.0, 1.0}) {
+            surface.vertices.emplace_back(x * half.x(), y * half.y(), z * half.z());
+          }
+        }
+      }
+      break;
+    }
+    case ShapeKind::Mesh: {
+      // The mesh's vertices from its COM (the body's frame): a plane touches only those of its
+      // convex hull, at a vertex, along an edge or on a face.
+      surface.kind = ContactSurface::Kind::Polyhedron;
+      const TriangleMesh mesh = load_mesh(shape.mesh_file);
+      const Vec3 com = mesh_mass_properties(mesh, 1.0).com;
+      for (const Vec3& p : mesh.vertices) surface.vertices.push_back(p - com);
+      break;
+    }
     default:
       throw std::logic_error("no contact surface for this shape; the reader checks this");
   }

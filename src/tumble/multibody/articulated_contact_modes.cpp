@@ -1,0 +1,494 @@
+// The contacts' modes as a hybrid system (docs/design.md, "Contact"): each contact is apart,
+// sliding, or rolling (sticking), and only located events change that. Three event functions per
+// contact:
+//  - touchdown: the height of the contact point (a polyhedron: of its lowest vertex not already
+//    touching) while it approaches; an impact follows;
+//  - support: the normal force (a polyhedron's face or edge: N times the centre of pressure's
+//    distance inside the feature); at zero the body lifts off, or tips onto the feature's side;
+//  - stick-slip: sliding, the slip along its direction; rolling, mu N less the friction needed.
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+
+#include "tumble/multibody/articulated_formulation.hpp"
+
+namespace tumble {
+
+namespace {
+
+// Touching contacts are at the plane within this fraction of their size.
+constexpr double kTouchingHeight = 1e-9;
+// Slip slower than this fraction of the contact's speed scale counts as none: events locate the
+// slip's zero to a few ulps of t, leaving ~1e-15 of the scale.
+constexpr double kSlipZero = 1e-9;
+// Touchdowns whose bounce would rise less than this fraction of the contact's size settle
+// (restitution 0): the cascade of ever smaller bounces ends after finitely many.
+constexpr double kSettleHeight = 1e-6;
+// An impact's work counts as none (not a gain) within this fraction of the kinetic energy: an
+// elastic impact's is zero up to round-off.
+constexpr double kWorkRoundOff = 1e-12;
+
+// Where a contact slides when the friction sticking needs does not fit in the cone: the way it
+// is pushed, against that friction (which then saturates at mu N).
+Vec3 pushed_direction(const Vec3& friction_needed, const Vec3& otherwise_W) {
+  const double size = friction_needed.norm();
+  return size > 0.0 ? Vec3(-friction_needed / size) : otherwise_W;
+}
+
+const char* feature_name(int size) {
+  return size == 1 ? "a vertex" : size == 2 ? "an edge" : "a face";
+}
+
+}  // namespace
+
+double ArticulatedFormulation::support_margin_of(std::size_t c, int& side) const {
+  const ContactNow& now = contact_now_[c];
+  return support_margin(contact_status_[c].feature, model_.contacts[c].surface.vertices, now.n_B,
+                        now.normal_force, now.moment_about_O_B, side);
+}
+
+Vec3 ArticulatedFormulation::friction_demand(std::size_t c) const {
+  const ContactNow& now = contact_now_[c];
+  const double rho = contact_status_[c].feature.spin_radius;
+  const Vec3& n = model_.contacts[c].normal_W;
+  if (!(rho > 0.0)) return now.friction_W;
+  return now.friction_W + (now.moment_about_O_B.dot(now.n_B) / rho) * n;
+}
+
+void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within) const {
+  const PlaneContact& contact = model_.contacts[c];
+  const ContactStatus& status = contact_status_[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Vec3& n = contact.normal_W;
+  touching_.clear();
+  for (std::size_t i = 0; i < contact.surface.vertices.size(); ++i) {
+    const Vec3& p = contact.surface.vertices[i];
+    const double height = (w.r_G_W + w.R_WC * p - contact.point_W).dot(n);
+    if (height > within) continue;
+    const double vn = n.dot(w.R_WC * (w.velocity.tail<3>() + w.velocity.head<3>().cross(p)));
+    if (height <= status.touching_height || vn <= status.slip_zero) {
+      touching_.push_back(static_cast<int>(i));
+    }
+  }
+  // At least the lowest vertex (a landing located to round-off is at the plane).
+  if (touching_.empty()) {
+    touching_.push_back(lowest_vertex(contact.surface, w.R_WC.transpose() * n));
+  }
+}
+
+void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& g) const {
+  const bool touching =
+      std::any_of(contact_status_.begin(), contact_status_.end(),
+                  [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
+  if (touching) {
+    solve_contacts_at(y);
+  } else {
+    calc_kinematics(y, true);
+    calc_contact_points();
+  }
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const auto base = static_cast<Eigen::Index>(3 * c);
+    const ContactNow& now = contact_now_[c];
+    const ContactStatus& status = contact_status_[c];
+    const PlaneContact& contact = model_.contacts[c];
+    g(base) = g(base + 1) = g(base + 2) = 1.0;
+    if (status.mode == ContactMode::Apart ||
+        contact.surface.kind == ContactSurface::Kind::Polyhedron) {
+      // Height, but kept positive while the point is not approaching the plane: a bounce may
+      // rise and land again within one step (its flight is a parabola, which a high-order method
+      // steps over), and the height alone would not change sign between the impact (h = 0) and
+      // the landing (h < 0); a polyhedron's vertices that just left the plane start at h = 0.
+      g(base) = now.support_normal_speed > -status.slip_zero
+                    ? std::max(now.support.height, status.touching_height)
+                    : now.support.height;
+    }
+    if (status.mode == ContactMode::Apart) continue;
+    int side = -1;
+    g(base + 1) = support_margin_of(c, side);
+    if (status.mode == ContactMode::Sliding) {
+      if (contact.friction > 0.0) g(base + 2) = now.slip_W.dot(status.slide_direction_W);
+    } else {
+      g(base + 2) = contact.friction * now.normal_force - friction_demand(c).norm();
+    }
+  }
+}
+
+bool ArticulatedFormulation::refresh_event_functions(double /*t*/, const VecX& y) {
+  bool sliding = false;
+  for (const ContactStatus& s : contact_status_) sliding |= s.mode == ContactMode::Sliding;
+  if (!sliding) return false;
+  // The slip-stop event watches the slip's component along the direction it had at the start of
+  // the step: in 3D the slip may turn, and it stops where that component first vanishes.
+  calc_kinematics(y, true);
+  calc_contact_points();
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    ContactStatus& status = contact_status_[c];
+    const double slip = contact_now_[c].slip_W.norm();
+    if (status.mode == ContactMode::Sliding && slip > status.slip_zero) {
+      status.slide_direction_W = contact_now_[c].slip_W / slip;
+    }
+  }
+  return true;
+}
+
+void ArticulatedFormulation::note_contact(double t, std::size_t contact, std::string what) {
+  contact_events_.push_back({t, contact, std::move(what)});
+}
+
+double ArticulatedFormulation::normal_acceleration(std::size_t c, const Vec3& p_B) const {
+  const PlaneContact& contact = model_.contacts[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Vec3 omega_B = w.velocity.head<3>();
+  const Vec3 v_P_B = w.velocity.tail<3>() + omega_B.cross(p_B);
+  const Vec3 a_P_B =
+      w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p_B) + omega_B.cross(v_P_B);
+  return contact.normal_W.dot(w.R_WC * a_P_B + model_.gravity_W);
+}
+
+bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y) {
+  ContactStatus& status = contact_status_[c];
+  const PlaneContact& contact = model_.contacts[c];
+  const ContactNow& now = contact_now_[c];
+  // Consistent: the plane pushes (N > 0) with its CoP in the feature, and the touching vertices
+  // left out of the feature do not go into the plane.
+  const auto consistent = [&] {
+    int side = -1;
+    if (!(now.normal_force > 0.0) || support_margin_of(c, side) < 0.0) return false;
+    const double tolerance = kSlipZero * std::max(model_.gravity_W.norm(), 1.0);
+    for (const int i : touching_) {
+      if (status.feature.contains(i)) continue;
+      const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
+      if (normal_acceleration(c, p) < -tolerance) return false;
+    }
+    return true;
+  };
+  status.mode = ContactMode::Rolling;
+  solve_contacts_at(y);
+  const double slip = now.slip_W.norm();
+  const Vec3 demand = friction_demand(c);
+  if (slip > status.slip_zero) {
+    status.mode = ContactMode::Sliding;
+    status.slide_direction_W = now.slip_W / slip;
+  } else if (contact.friction > 0.0 && now.normal_force > 0.0 &&
+             demand.norm() <= contact.friction * now.normal_force) {
+    if (!consistent()) return false;
+    anchor_contact(c);
+    project(t, y);  // no slip at all from here
+    return true;
+  } else {
+    status.mode = ContactMode::Sliding;
+    status.slide_direction_W = pushed_direction(demand, status.slide_direction_W);
+  }
+  solve_contacts_at(y);
+  return consistent();
+}
+
+void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) {
+  ContactStatus& status = contact_status_[c];
+  const PlaneContact& contact = model_.contacts[c];
+  const ContactMode before = status.mode;
+  const int size_before = status.feature.size();
+  // The candidates, in order: the whole feature; a face's edges; its (or an edge's) vertices;
+  // apart. The first whose forces are consistent is the one (for these few, enumerating them
+  // solves the complementarity problem exactly).
+  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
+  touching_.assign(status.feature.polygon.begin(), status.feature.polygon.end());
+  const int k = static_cast<int>(touching_.size());
+  const int edges = k >= 3 ? k : 0;
+  const int vertices = k >= 2 ? k : 0;
+  calc_kinematics(y, false);
+  const Vec3 n_B = work_[slot_of_body_[contact.body]].R_WC.transpose() * contact.normal_W;
+  bool held = false;
+  for (int candidate = 0; candidate <= edges + vertices && !held; ++candidate) {
+    if (candidate > 0) {
+      std::array<int, 2> pick{};
+      std::size_t count = 1;
+      if (candidate <= edges) {
+        pick = {touching_[static_cast<std::size_t>(candidate - 1)],
+                touching_[static_cast<std::size_t>(candidate % k)]};
+        count = 2;
+      } else {
+        pick[0] = touching_[static_cast<std::size_t>(candidate - 1 - edges)];
+      }
+      make_feature(contact.surface.vertices, std::span<const int>(pick.data(), count), n_B,
+                   status.feature);
+    }
+    held = settle_on_feature(c, t, y);
+  }
+  if (!held) {
+    status.mode = ContactMode::Apart;
+    status.feature.polygon.clear();
+    status.feature.inward_B.clear();
+    status.feature.spin_radius = 0.0;
+  }
+  const int size = status.feature.size();
+  if (status.mode == before && size == size_before) return;
+  std::string what = status.mode == ContactMode::Apart     ? "apart"
+                     : status.mode == ContactMode::Sliding ? "slides"
+                     : polyhedron                          ? "sticks"
+                                                           : "rolls";
+  if (polyhedron && size > 0) what += fmt::format(" on {}", feature_name(size));
+  note_contact(t, c, std::move(what));
+}
+
+void ArticulatedFormulation::anchor_contact(std::size_t c) {
+  const PlaneContact& contact = model_.contacts[c];
+  if (contact.surface.kind != ContactSurface::Kind::Polyhedron) return;  // it rolls: no anchor
+  const ContactNow& now = contact_now_[c];
+  ContactStatus& status = contact_status_[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Vec3& n = contact.normal_W;
+  const auto on_plane = [&](const Vec3& p_B) {
+    const Vec3 x = w.r_G_W + w.R_WC * p_B;
+    return Vec3(x - n * n.dot(x - contact.point_W));
+  };
+  const bool edge = now.normal_point_count == 2;
+  status.anchor_W[0] = on_plane(edge ? now.normal_points_B[0] : now.reference_B);
+  status.anchor_W[1] = on_plane(edge ? now.normal_points_B[1] : now.reference_B);
+  status.anchor_R_WB = w.R_WC;
+}
+
+void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
+  const PlaneContact& contact = model_.contacts[c];
+  ContactStatus& status = contact_status_[c];
+  const Vec3& n = contact.normal_W;
+  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
+  calc_kinematics(y, true);
+  calc_contact_points();
+  const double vn_before = contact_now_[c].support_normal_speed;
+  const Vec3 landing_B = contact_now_[c].support.p_GC_B;
+  const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
+  const double energy_before = kinetic_energy();
+  // Vertices about to land with it (within the settling height) land together: a box falling
+  // flat would otherwise rattle between its corners in ever shorter bounces.
+  if (polyhedron) find_touching_vertices(c, status.settle_height);
+
+  // Newton's restitution on the normal motion, Coulomb on the tangential impulse: the impulse
+  // that leaves no slip if it lies in the cone, else a sliding impulse (normal impulses, each
+  // with mu of it against the slip). A polyhedron lands on every vertex at the plane; if the
+  // impulse's centre would leave that feature, it lands on the smaller feature there. Should the
+  // impulse add energy (it can, where rotation couples normal and tangential motion), the impact
+  // is taken as plastic (e = 0), which never does.
+  double work = 0.0;
+  Eigen::Index count = 0;
+  for (const double e : {settles ? 0.0 : contact.restitution, 0.0}) {
+    if (polyhedron)
+      make_feature(contact.surface.vertices, touching_, contact_now_[c].n_B, status.feature);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      calc_kinematics(y, true);
+      calc_contact_points();
+      const ContactNow& now = contact_now_[c];
+      count = append_contact_unknowns(c, ContactMode::Rolling, ContactRows::Projection,
+                                      Vec3::Zero(), 0);
+      const auto solve_for_restitution = [&] {
+        for (Eigen::Index i = 0; i < count; ++i) {
+          const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
+          contact_x_(i) = -(row.normal ? 1.0 + e : 1.0) * row_velocity(row);
+        }
+        calc_contact_matrix(count, schedule_time_);
+        solve_contact_system(count, contact_x_);
+        set_contact_resultants(count, contact_x_);  // the impulse, as a force would be
+      };
+      solve_for_restitution();
+      if (!(friction_demand(c).norm() <= contact.friction * now.normal_force)) {
+        const double slip = now.slip_W.norm();
+        const Vec3 slide = slip > 0.0
+                               ? Vec3(now.slip_W / slip)
+                               : pushed_direction(friction_demand(c), status.slide_direction_W);
+        count = append_contact_unknowns(c, ContactMode::Sliding, ContactRows::Motion, slide, 0);
+        solve_for_restitution();
+      }
+      int side = -1;
+      if (status.feature.size() >= 2 && support_margin_of(c, side) < 0.0) {
+        tip_onto_side(contact.surface.vertices, side, now.n_B, status.feature);
+        continue;
+      }
+      break;
+    }
+    impact_y_ = y;
+    apply_contact_impulses(count, contact_x_, schedule_time_, impact_y_);
+    calc_kinematics(impact_y_, true);
+    work = kinetic_energy() - energy_before;
+    if (work <= kWorkRoundOff * energy_before) break;
+  }
+  y = impact_y_;
+  y(ledger_ + contact_entry(c)) += work;
+  calc_kinematics(y, true);
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const double vn_after =
+      n.dot(w.R_WC * (w.velocity.tail<3>() + w.velocity.head<3>().cross(landing_B)));
+  const std::string on =
+      polyhedron ? fmt::format(" on {}", feature_name(status.feature.size())) : std::string();
+  if (settles) {
+    note_contact(t, c,
+                 fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before));
+    if (polyhedron) {
+      // On everything now at the plane: which part carries it is the classification's to find
+      // (the impulse's own centre may have left a vertex out that the forces need).
+      find_touching_vertices(c, status.touching_height);
+      make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
+    }
+    classify_contact(c, t, y);
+    return;
+  }
+  note_contact(t, c,
+               fmt::format("impact{}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", on,
+                           -vn_before, vn_after, -work));
+  if (!polyhedron) return;  // it bounces: apart
+  // The feature's vertices that did not bounce off stay on the plane.
+  touching_.clear();
+  for (const int i : status.feature.polygon) {
+    const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
+    const double vn = n.dot(w.R_WC * (w.velocity.tail<3>() + w.velocity.head<3>().cross(p)));
+    if (vn <= status.slip_zero) touching_.push_back(i);
+  }
+  if (touching_.empty()) {
+    status.mode = ContactMode::Apart;
+    status.feature.polygon.clear();
+    status.feature.inward_B.clear();
+    return;
+  }
+  make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
+  classify_contact(c, t, y);
+}
+
+EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, VecX& y) {
+  const std::size_t c = event_index / 3;
+  ContactStatus& status = contact_status_[c];
+  switch (event_index % 3) {
+    case 0:  // touchdown
+      impact(c, t, y);
+      break;
+    case 1: {  // support: lift-off, or the CoP at the feature's side
+      solve_contacts_at(y);
+      int side = -1;
+      support_margin_of(c, side);
+      if (status.feature.size() >= 2 && contact_now_[c].normal_force > 0.0) {
+        tip_onto_side(model_.contacts[c].surface.vertices, side, contact_now_[c].n_B,
+                      status.feature);
+        note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
+        classify_contact(c, t, y);
+        break;
+      }
+      status.mode = ContactMode::Apart;
+      status.feature.polygon.clear();
+      status.feature.inward_B.clear();
+      note_contact(t, c, "lifts off");
+      break;
+    }
+    default:
+      if (status.mode == ContactMode::Sliding) {
+        calc_kinematics(y, true);
+        calc_contact_points();
+        const double slip = contact_now_[c].slip_W.norm();
+        if (slip > status.slip_zero) {
+          // The slip turned away from the direction it had (3D); it did not stop.
+          status.slide_direction_W = contact_now_[c].slip_W / slip;
+          break;
+        }
+        note_contact(t, c, "slip stops");
+        classify_contact(c, t, y);
+      } else {
+        solve_contacts_at(y);
+        status.mode = ContactMode::Sliding;
+        status.slide_direction_W = pushed_direction(friction_demand(c), status.slide_direction_W);
+        note_contact(t, c, "slides: the friction sticking needs leaves the cone");
+      }
+      break;
+  }
+  return EventAction::Jump;
+}
+
+namespace {
+
+struct ContactScales {
+  double speed = 1.0, slip_zero = 0.0, settle_speed = 0.0, touching_height = 0.0,
+         settle_height = 0.0;
+};
+
+ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
+                             const BodyState& s) {
+  const double size = std::max(contact_size(contact.surface), 1e-300);
+  ContactScales scales;
+  scales.speed = std::max(
+      {std::sqrt(gravity_W.norm() * size), s.v_G.norm() + s.omega_W.norm() * size, 1e-300});
+  scales.slip_zero = kSlipZero * scales.speed;
+  const double g_n = std::abs(gravity_W.dot(contact.normal_W));
+  scales.settle_speed =
+      g_n > 0.0 ? std::sqrt(2.0 * g_n * kSettleHeight * size) : kSettleHeight * scales.speed;
+  scales.touching_height = kTouchingHeight * size;
+  scales.settle_height = kSettleHeight * size;
+  return scales;
+}
+
+}  // namespace
+
+std::optional<ArticulatedFormulation::ContactStartProblem>
+ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
+  calc_kinematics(y0, true);
+  calc_contact_points();
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const PlaneContact& contact = model_.contacts[c];
+    const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
+    const ContactNow& now = contact_now_[c];
+    if (now.support.height < -scales.touching_height) {
+      return ContactStartProblem{
+          c, fmt::format("body '{}' starts {:.6g} m inside the plane; place it on or above it",
+                         model_.bodies[contact.body].name, -now.support.height)};
+    }
+    const double vn = now.support_normal_speed;
+    if (now.support.height <= scales.touching_height && vn < -scales.slip_zero) {
+      return ContactStartProblem{
+          c, fmt::format("body '{}' starts touching the plane and moving into it at {:.6g} m/s; "
+                         "start it above the plane, or without that speed",
+                         model_.bodies[contact.body].name, -vn)};
+    }
+  }
+  return std::nullopt;
+}
+
+void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
+  contact_events_.clear();
+  if (model_.contacts.empty()) return;
+  calc_kinematics(y, true);  // the bodies' states set the scales
+  VecX y_start = y;          // classifying may project it; the run starts from y itself
+  impact_y_.resize(y.size());
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const PlaneContact& contact = model_.contacts[c];
+    const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
+    ContactStatus& status = contact_status_[c];
+    status.mode = ContactMode::Apart;
+    status.feature.polygon.clear();  // keeps its reserved room
+    status.feature.inward_B.clear();
+    status.feature.spin_radius = 0.0;
+    status.slide_direction_W = Vec3::UnitX();
+    status.slip_zero = scales.slip_zero;
+    status.settle_speed = scales.settle_speed;
+    status.touching_height = scales.touching_height;
+    status.settle_height = scales.settle_height;
+  }
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    calc_kinematics(y_start, true);
+    calc_contact_points();
+    const ContactNow& now = contact_now_[c];
+    const ContactStatus& status = contact_status_[c];
+    if (now.support.height > status.touching_height ||
+        now.support_normal_speed > status.slip_zero) {
+      continue;
+    }
+    if (model_.contacts[c].surface.kind == ContactSurface::Kind::Polyhedron) {
+      find_touching_vertices(c, contact_status_[c].touching_height);
+      make_feature(model_.contacts[c].surface.vertices, touching_, now.n_B,
+                   contact_status_[c].feature);
+    }
+    classify_contact(c, t0, y_start);
+  }
+}
+
+void ArticulatedFormulation::reclassify_contacts(double t, VecX& y) {
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    if (contact_status_[c].mode != ContactMode::Apart) classify_contact(c, t, y);
+  }
+}
+
+}  // namespace tumble

@@ -67,7 +67,7 @@ TEST(ContactFeature, TheSupportMarginIsNTimesTheCentreOfPressuresDistanceInside)
   int side = -1;
   EXPECT_NEAR(support_margin(f, v, kUp, N, M, side), N * 0.75, 1e-14);  // nearest side: x = 1
   const Vec3& a = v[static_cast<std::size_t>(f.polygon[static_cast<std::size_t>(side)])];
-  EXPECT_NEAR(a.x(), 1.0, 0.0);
+  EXPECT_EQ(a.x(), 1.0);
   // Past the side x = 1 it is negative, and tipping there leaves that side's edge.
   const Vec3 M_out = Vec3(1.5, 0, 0).cross(Vec3(0, 0, N));
   EXPECT_NEAR(support_margin(f, v, kUp, N, M_out, side), -N * 0.5, 1e-14);

@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "scenario_run.hpp"
@@ -386,17 +387,11 @@ TEST(ReactionWheel, TheExampleSlewsTheSatelliteANinetyDegreeTurnAndStops) {
   // z; the lock's work takes all of the KE. The satellite's orientation is integrated (a free
   // body's quaternion) at the example's rtol 1e-9: checked to 1e-8 (ten times rtol, on a turn of
   // 1.6 rad).
-  const Scenario scenario =
-      load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/reaction_wheel.yaml", {});
-  PreparedSimulation simulation = prepare_simulation(scenario);
-  std::vector<Row> rows;
-  const SimulationResult result =
-      run_simulation(simulation, [&](double t, std::span<const BodyState> states,
-                                     const SystemQuantities& q, const RowExtras& e) {
-        rows.push_back({t, std::vector<BodyState>(states.begin(), states.end()), q, e});
-      });
-  ASSERT_TRUE(result.report.completed) << result.report.failure;
-  const double slew = scenario.parameters.at("slew");
+  const auto run = test::run_scenario(
+      load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/reaction_wheel.yaml", {}));
+  ASSERT_TRUE(run.result.report.completed);
+  const std::vector<Row>& rows = run.rows;
+  const double slew = run.scenario.parameters.at("slew");
   const Row& last = rows.back();
   EXPECT_LT(
       (last.states[0].R_WB - rotation_from_axis_angle(Vec3::UnitZ(), -slew)).cwiseAbs().maxCoeff(),
@@ -965,16 +960,13 @@ TEST(Examples, ConservativeOnesKeepEnergyAndMomentFreeOnesKeepL) {
   int conservative = 0, moment_free = 0;
   for (const std::filesystem::path& file : files) {
     SCOPED_TRACE(file.filename().string());
-    Scenario scenario = load_scenario(file.string(), {});
-    scenario.simulate.duration = std::min(scenario.simulate.duration, 30.0);  // all of them now
-    PreparedSimulation simulation = prepare_simulation(scenario);
-    std::vector<Row> rows;
-    const SimulationResult result =
-        run_simulation(simulation, [&](double t, std::span<const BodyState> states,
-                                       const SystemQuantities& q, const RowExtras& e) {
-          rows.push_back({t, std::vector<BodyState>(states.begin(), states.end()), q, e});
-        });
-    ASSERT_TRUE(result.report.completed) << result.report.failure;
+    Scenario loaded = load_scenario(file.string(), {});
+    loaded.simulate.duration = std::min(loaded.simulate.duration, 30.0);  // all of them now
+    const auto run = test::run_scenario(std::move(loaded));
+    ASSERT_TRUE(run.result.report.completed);
+    const Scenario& scenario = run.scenario;
+    const SimulationResult& result = run.result;
+    const std::vector<Row>& rows = run.rows;
     const double rtol = scenario.simulate.rtol;
     double energy_scale = std::abs(rows.front().quantities.total_energy);
     for (const Row& row : rows) {
@@ -1001,7 +993,7 @@ TEST(Examples, ConservativeOnesKeepEnergyAndMomentFreeOnesKeepL) {
         return g.norm() > 0 ? Vec3(g.normalized() * g.normalized().dot(L)) : L;
       };
       // Scale: the bodies' own angular momenta about O (the total may be 0: the reaction wheel).
-      const std::vector<RigidBody>& bodies = simulation.formulation->model().bodies;
+      const std::vector<RigidBody>& bodies = run.bodies;
       double L_scale = 0.0, worst = 0.0;
       for (const Row& row : rows) {
         double sum = 0.0;

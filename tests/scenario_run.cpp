@@ -1,12 +1,18 @@
 #include "scenario_run.hpp"
 
+#include <utility>
+
 #include "tumble/multibody/articulated_formulation.hpp"
 
 namespace tumble::test {
 
 ScenarioRun run_inline_scenario(const std::string& yaml, const std::string& name) {
+  return run_scenario(load_inline_scenario(yaml, name));
+}
+
+ScenarioRun run_scenario(Scenario scenario) {
   ScenarioRun run;
-  run.scenario = load_inline_scenario(yaml, name);
+  run.scenario = std::move(scenario);
   PreparedSimulation simulation = prepare_simulation(run.scenario);
   run.result = run_simulation(simulation, [&](double t, std::span<const BodyState> states,
                                               const SystemQuantities& q, const RowExtras& e) {
@@ -17,6 +23,7 @@ ScenarioRun run_inline_scenario(const std::string& yaml, const std::string& name
     run.jumps = a->jumps();
     run.contact_events = a->contact_events();
   }
+  run.bodies = simulation.formulation->model().bodies;
   return run;
 }
 

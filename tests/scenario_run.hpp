@@ -27,6 +27,7 @@ struct ScenarioRun {
   SimulationResult result;
   std::vector<JumpRecord> jumps;  // articulated systems only
   std::vector<ContactEventRecord> contact_events;
+  std::vector<RigidBody> bodies;  // the model's, as the run integrated them
 };
 
 // The file goes into a directory of the running test's own: ctest runs tests in parallel.
@@ -42,6 +43,8 @@ inline Scenario load_inline_scenario(const std::string& yaml, const std::string&
 }
 
 ScenarioRun run_inline_scenario(const std::string& yaml, const std::string& name);
+// Prepares and runs a loaded scenario; a run that does not complete is a test failure.
+ScenarioRun run_scenario(Scenario scenario);
 
 // Times where x(t) crosses zero upwards, from rows (t, x, x') by cubic Hermite interpolation on x
 // and its rate (error ~ h^4 x'''' / 384: below 1e-12 of a period at 2000 rows a period).

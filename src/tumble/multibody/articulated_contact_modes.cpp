@@ -261,7 +261,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   const double energy_before = kinetic_energy();
   // Vertices about to land with it (within the settling height) land together: a box falling
   // flat would otherwise rattle between its corners in ever shorter bounces.
-  if (polyhedron) find_touching_vertices(c, status.settle_height);
+  if (polyhedron) find_touching_vertices(c, status.landing_height);
 
   // Newton's restitution on the normal motion, Coulomb on the tangential impulse: the impulse
   // that leaves no slip if it lies in the cone, else a sliding impulse (normal impulses, each
@@ -403,7 +403,7 @@ namespace {
 
 struct ContactScales {
   double speed = 1.0, slip_zero = 0.0, settle_speed = 0.0, touching_height = 0.0,
-         settle_height = 0.0;
+         landing_height = 0.0;
 };
 
 ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
@@ -417,7 +417,7 @@ ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
   scales.settle_speed =
       g_n > 0.0 ? std::sqrt(2.0 * g_n * kSettleHeight * size) : kSettleHeight * scales.speed;
   scales.touching_height = kTouchingHeight * size;
-  scales.settle_height = kSettleHeight * size;
+  scales.landing_height = kSettleHeight * size;
   return scales;
 }
 
@@ -465,7 +465,7 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
     status.slip_zero = scales.slip_zero;
     status.settle_speed = scales.settle_speed;
     status.touching_height = scales.touching_height;
-    status.settle_height = scales.settle_height;
+    status.landing_height = scales.landing_height;
   }
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     calc_kinematics(y_start, true);

@@ -109,19 +109,17 @@ void ArticulatedFormulation::calc_contact_points() const {
     now.n_B = w.R_WC.transpose() * n;
     const Vec3 omega_B = w.velocity.head<3>();
     const Vec3 v_G_B = w.velocity.tail<3>();
-    const auto normal_speed = [&](const Vec3& p_B) {
-      return n.dot(w.R_WC * (v_G_B + omega_B.cross(p_B)));
-    };
     const ContactSurface& surface = contact.surface;
-    if (surface.kind != ContactSurface::Kind::Polyhedron) {
+    const ContactFeature& feature = status.feature;
+    if (feature.size() == 0) {
+      // A curved surface, or a polyhedron apart: its support point is the contact point.
       now.support = support_point(contact, w.r_G_W, w.R_WC);
       now.reference_B = now.support.p_GC_B;
       now.reference_rate_B = support_rate_B(contact, now.n_B, omega_B);
       now.normal_points_B[0] = now.reference_B;
       now.normal_point_count = 1;
     } else {
-      // Touchdown watches the lowest vertex not already touching.
-      const ContactFeature& feature = status.feature;
+      // A polyhedron on a feature; touchdown watches its lowest vertex not already touching.
       int lowest = -1;
       double lowest_depth = 0.0;
       for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
@@ -137,22 +135,16 @@ void ArticulatedFormulation::calc_contact_points() const {
       now.support.height = lowest >= 0
                                ? (w.r_G_W + w.R_WC * now.support.p_GC_B - contact.point_W).dot(n)
                                : 1.0;  // every vertex touches: nothing left to land
+      now.reference_B = feature.reference_B;
       now.reference_rate_B.setZero();
-      if (feature.size() == 0) {
-        now.reference_B = now.support.p_GC_B;
-        now.normal_points_B[0] = now.reference_B;
-        now.normal_point_count = 1;
-      } else {
-        now.reference_B = feature.reference_B;
-        now.normal_point_count = feature.normal_point_count;
-        for (int k = 0; k < feature.normal_point_count; ++k) {
-          now.normal_points_B[static_cast<std::size_t>(k)] =
-              surface.vertices[static_cast<std::size_t>(
-                  feature.normal_points[static_cast<std::size_t>(k)])];
-        }
+      now.normal_point_count = feature.normal_point_count;
+      for (int k = 0; k < feature.normal_point_count; ++k) {
+        now.normal_points_B[static_cast<std::size_t>(k)] =
+            surface.vertices[static_cast<std::size_t>(
+                feature.normal_points[static_cast<std::size_t>(k)])];
       }
     }
-    now.support_normal_speed = normal_speed(now.support.p_GC_B);
+    now.support_normal_speed = n.dot(w.R_WC * (v_G_B + omega_B.cross(now.support.p_GC_B)));
     now.velocity_W = w.R_WC * (v_G_B + omega_B.cross(now.reference_B));
     const double spin = (w.R_WC * omega_B).dot(n);
     now.slip_W = now.velocity_W - n * n.dot(now.velocity_W) + status.feature.spin_radius * spin * n;

@@ -133,7 +133,7 @@ class ArticulatedFormulation final : public Formulation {
     double slip_zero = 0.0;        // m/s: slower slip counts as none
     double settle_speed = 0.0;     // m/s: slower touchdowns settle instead of bouncing
     double touching_height = 0.0;  // m: nearer the plane counts as touching
-    double settle_height = 0.0;    // m: an impact takes in the vertices this near the plane
+    double landing_height = 0.0;   // m: vertices this near the plane land with a touchdown
     // Where a polyhedron sticks (mode rolling): the points its rows hold (a vertex or face
     // centroid, or an edge's ends) and the body's orientation, so that projection keeps it
     // exactly there rather than letting round-off walk it away.

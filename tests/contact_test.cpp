@@ -311,14 +311,15 @@ TEST(ContactScenario, BadContactsAreRefusedWithWhereAndWhy) {
       "tumble: 1\n"                                                                     // 1
       "bodies:\n"                                                                       // 2
       "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}\n"          // 3
-      "  cone: {shape: cone, radius: 1, height: 1, mass: 1, position: [3, 0, 0.5]}\n";  // 4
+      "  pair: {position: [3, 0, 0.5], parts: [{shape: sphere, radius: 0.1, mass: 1, "  // 4
+      "position: [-0.2, 0, 0]}, {shape: sphere, radius: 0.1, mass: 1}]}\n";
   const std::string simulate = "simulate: {duration: 1}\n";
   using test::expect_error;
   expect_error(head +
-                   "contacts:\n  - {type: plane, body: cone, plane: {point: [0, 0, 0], normal: "
+                   "contacts:\n  - {type: plane, body: pair, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 1]}, friction: 0.3}\n" +
                    simulate,
-               6, 25, "contacts[0].body", "(not yet a cone or a composite)");
+               6, 25, "contacts[0].body", "is a composite; contact with a plane is for");
   expect_error(head +
                    "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 0]}, friction: 0.3}\n" +

@@ -132,14 +132,15 @@ TEST(NoAllocation, StepsOfAJointedSystem) {
   }
 }
 
-// A sphere rolling down a ramp, a disk sliding on the floor and a box sliding and spinning on its
-// face: both contact modes, whose steps solve for the contact forces, project onto the
-// constraints and evaluate the events.
+// A sphere rolling down a ramp, a disk sliding on the floor, a box sliding and spinning on its
+// face and a cone rolling on its side: both contact modes, whose steps solve for the contact
+// forces, project onto the constraints and evaluate the events.
 TEST(NoAllocation, StepsOfBodiesInContact) {
   Model m;
   m.bodies.push_back(RigidBody::make("ball", 1.0, Vec3(0.004, 0.004, 0.004).asDiagonal()));
   m.bodies.push_back(RigidBody::make("disk", 0.2, Vec3(0.0005, 0.0005, 0.001).asDiagonal()));
   m.bodies.push_back(RigidBody::make("box", 1.0, Vec3(0.002, 0.004, 0.004).asDiagonal()));
+  m.bodies.push_back(RigidBody::make("cone", 0.5, Vec3(9.375e-4, 9.375e-4, 3.75e-4).asDiagonal()));
   PlaneContact ramp;
   ramp.body = 0;
   ramp.surface = {ContactSurface::Kind::Sphere, 0.1, 0.0, {}};
@@ -160,10 +161,18 @@ TEST(NoAllocation, StepsOfBodiesInContact) {
   }
   box_floor.point_W = Vec3(0.0, 0.0, -3.0);
   box_floor.friction = 0.3;
-  m.contacts = {ramp, floor, box_floor};
+  PlaneContact cone_floor;  // r 0.05, h 0.2
+  cone_floor.body = 3;
+  cone_floor.surface.kind = ContactSurface::Kind::Cone;
+  cone_floor.surface.radius = 0.05;
+  cone_floor.surface.vertices = {Vec3(0.0, 0.0, 0.15)};
+  cone_floor.surface.rim_centre_B = Vec3(0.0, 0.0, -0.05);
+  cone_floor.point_W = Vec3(0.0, 0.0, -5.0);
+  cone_floor.friction = 0.8;
+  m.contacts = {ramp, floor, box_floor, cone_floor};
   for (const std::string method : {"dopri5", "dop853", "rk4", "rkmk4"}) {
     auto system = make_formulation("body", m);
-    std::vector<BodyState> states(3);
+    std::vector<BodyState> states(4);
     states[0].r_G = 0.1 * ramp.normal_W;
     states[1].r_G = Vec3(0.0, 0.0, -0.9);
     states[1].R_WB = rotation_from_axis_angle(Vec3::UnitX(), 1.5707963267948966);
@@ -172,6 +181,12 @@ TEST(NoAllocation, StepsOfBodiesInContact) {
     states[2].r_G = Vec3(0.0, 0.0, -2.95);
     states[2].v_G = Vec3(3.0, 0.0, 0.0);
     states[2].omega_W = Vec3(0.0, 0.0, 2.0);
+    // On its side, apex at (0, 0, -5), turning about the line it touches along (cone_contact_test).
+    const double alpha = std::atan(0.25);
+    states[3].r_G = Vec3(0.15 * std::cos(alpha), 0.0, -5.0 + 0.15 * std::sin(alpha));
+    states[3].R_WB = rotation_from_axis_angle(Vec3::UnitY(), -(1.5707963267948966 + alpha));
+    states[3].omega_W = Vec3(-8.0, 0.0, 0.0);
+    states[3].v_G = Vec3(0.0, 8.0 * 0.15 * std::sin(alpha), 0.0);
     EXPECT_EQ(allocations_in_steps(*system, method, states), 0) << method;
   }
 }

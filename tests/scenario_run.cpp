@@ -1,5 +1,6 @@
 #include "scenario_run.hpp"
 
+#include <cmath>
 #include <utility>
 
 #include "tumble/multibody/articulated_formulation.hpp"
@@ -25,6 +26,15 @@ ScenarioRun run_scenario(Scenario scenario) {
   }
   run.bodies = simulation.formulation->model().bodies;
   return run;
+}
+
+void expect_energy_never_rises(const ScenarioRun& run, double relative) {
+  const double E0 = run.rows.front().quantities.total_energy;
+  double E_before = E0;
+  for (const Row& row : run.rows) {
+    EXPECT_LE(row.quantities.total_energy, E_before + relative * std::abs(E0)) << "t " << row.t;
+    E_before = row.quantities.total_energy;
+  }
 }
 
 std::vector<double> upward_zero_crossings(const std::vector<double>& t,

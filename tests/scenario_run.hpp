@@ -46,6 +46,10 @@ ScenarioRun run_inline_scenario(const std::string& yaml, const std::string& name
 // Prepares and runs a loaded scenario; a run that does not complete is a test failure.
 ScenarioRun run_scenario(Scenario scenario);
 
+// No row's total energy above the one before it by more than `relative` of the first's: impacts
+// and friction never add energy.
+void expect_energy_never_rises(const ScenarioRun& run, double relative);
+
 // Times where x(t) crosses zero upwards, from rows (t, x, x') by cubic Hermite interpolation on x
 // and its rate (error ~ h^4 x'''' / 384: below 1e-12 of a period at 2000 rows a period).
 std::vector<double> upward_zero_crossings(const std::vector<double>& t,

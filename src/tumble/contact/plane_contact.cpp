@@ -5,16 +5,8 @@
 
 namespace tumble {
 
-namespace {
-
-// A cylinder whose axis is within this angle (rad) of the plane lies on its side: it touches
-// along a line. Rolling keeps the axis parallel to the plane to round-off (~1e-16), far inside.
-constexpr double kLineContactTilt = 1e-9;
-
-// The unit vector in the x-y plane most opposed to n_B (the direction of a circle's lowest
-// point), and the length of n_B's projection on that plane. A circle lying flat on the plane
-// (projection zero) touches along all of its rim: x is returned, a face contact this surface
-// model does not resolve.
+// A disk or a ring lying flat touches along all of its rim: a face contact that these surface
+// models do not resolve (a cone's base does: cone_contact.hpp).
 Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length) {
   const Vec3 projected(n_B.x(), n_B.y(), 0.0);
   projected_length = projected.norm();
@@ -22,11 +14,32 @@ Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length) {
   return -projected / projected_length;
 }
 
+namespace {
+
+// A cylinder whose axis is within this angle (rad) of the plane lies on its side: it touches
+// along a line. Rolling keeps the axis parallel to the plane to round-off (~1e-16), far inside.
+constexpr double kLineContactTilt = 1e-9;
+
+// Whether a cone's apex is lower along -n_B than every point of its base's rim.
+bool apex_is_lowest(const ContactSurface& cone, const Vec3& n_B) {
+  double projected = 0.0;
+  const Vec3 rim = cone.rim_centre_B + cone.radius * lowest_in_plane(n_B, projected);
+  return cone.vertices[0].dot(n_B) < rim.dot(n_B);
+}
+
 }  // namespace
 
 double contact_size(const ContactSurface& surface) {
-  if (surface.kind != ContactSurface::Kind::Polyhedron) return surface.radius;
   double size = 0.0;
+  switch (surface.kind) {
+    case ContactSurface::Kind::Polyhedron:
+      break;
+    case ContactSurface::Kind::Cone:
+      size = std::hypot(surface.radius, surface.rim_centre_B.norm());
+      break;
+    default:
+      return surface.radius;
+  }
   for (const Vec3& p : surface.vertices) size = std::max(size, p.norm());
   return size;
 }
@@ -63,6 +76,13 @@ SupportPoint support_point(const PlaneContact& contact, const Vec3& r_G_W, const
     case ContactSurface::Kind::Polyhedron:
       support.p_GC_B = s.vertices[static_cast<std::size_t>(lowest_vertex(s, n_B))];
       break;
+    case ContactSurface::Kind::Cone: {
+      double projected = 0.0;
+      support.p_GC_B = apex_is_lowest(s, n_B)
+                           ? s.vertices[0]
+                           : Vec3(s.rim_centre_B + s.radius * lowest_in_plane(n_B, projected));
+      break;
+    }
   }
   support.height = (r_G_W + R_WB * support.p_GC_B - contact.point_W).dot(contact.normal_W);
   return support;
@@ -74,6 +94,9 @@ Vec3 support_rate_B(const PlaneContact& contact, const Vec3& n_B, const Vec3& om
   switch (s.kind) {
     case ContactSurface::Kind::Sphere:
       return -s.radius * n_rate_B;
+    case ContactSurface::Kind::Cone:
+      if (apex_is_lowest(s, n_B)) return Vec3::Zero();
+      [[fallthrough]];
     case ContactSurface::Kind::Circle:
     case ContactSurface::Kind::Cylinder: {
       double projected = 0.0;

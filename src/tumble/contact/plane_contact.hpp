@@ -18,11 +18,14 @@ namespace tumble {
 
 // A polyhedron (a box, a plate, a mesh) touches a plane at its vertices: at one, along an edge
 // between two, or on a face (contact_feature.hpp); its support point is its lowest vertex.
+// A cone touches at its apex, at a point of its base's rim, along a line of its side or on its
+// base (cone_contact.hpp); its support point is the lower of its apex and its rim's lowest point.
 struct ContactSurface {
-  enum class Kind { Sphere, Circle, Cylinder, Polyhedron } kind = Kind::Sphere;
-  double radius = 0.0;         // m
-  double half_length = 0.0;    // m, cylinder: the end rims are at z = +-half_length
-  std::vector<Vec3> vertices;  // m, polyhedron: from the COM, body axes
+  enum class Kind { Sphere, Circle, Cylinder, Polyhedron, Cone } kind = Kind::Sphere;
+  double radius = 0.0;               // m; a cone's base
+  double half_length = 0.0;          // m, cylinder: the end rims are at z = +-half_length
+  std::vector<Vec3> vertices;        // m, polyhedron: from the COM, body axes; a cone: its apex
+  Vec3 rim_centre_B = Vec3::Zero();  // m, a cone's base centre (its rim about the z axis)
 };
 
 struct PlaneContact {
@@ -52,8 +55,13 @@ Vec3 support_rate_B(const PlaneContact& contact, const Vec3& n_B, const Vec3& om
 // The vertex of a polyhedron lowest along -n_B (the first of equals).
 int lowest_vertex(const ContactSurface& surface, const Vec3& n_B);
 
+// The unit vector in the body's x-y plane most opposed to n_B: where a circle about the z axis
+// is lowest. Its projection on that plane's length goes to `projected_length`; a circle lying
+// flat (projection zero) has no lowest point, and x is returned.
+Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length);
+
 // A length that sets the scale of the contact's tolerances: the surface's radius, or a
-// polyhedron's farthest vertex from the COM.
+// polyhedron's (a cone's) farthest vertex (or rim point) from the COM.
 double contact_size(const ContactSurface& surface);
 
 }  // namespace tumble

@@ -43,13 +43,19 @@ const char* feature_name(int size) {
 
 double ArticulatedFormulation::support_margin_of(std::size_t c, int& side) const {
   const ContactNow& now = contact_now_[c];
-  return support_margin(contact_status_[c].feature, model_.contacts[c].surface.vertices, now.n_B,
-                        now.normal_force, now.moment_about_O_B, side);
+  const ContactStatus& status = contact_status_[c];
+  const ContactSurface& surface = model_.contacts[c].surface;
+  if (status.cone_part != ConePart::None) {
+    return cone_support_margin(surface, status.cone_part, now.normal_points_B[1], now.reference_B,
+                               now.n_B, now.normal_force, now.moment_about_O_B, side);
+  }
+  return support_margin(status.feature, surface.vertices, now.n_B, now.normal_force,
+                        now.moment_about_O_B, side);
 }
 
 Vec3 ArticulatedFormulation::friction_demand(std::size_t c) const {
   const ContactNow& now = contact_now_[c];
-  const double rho = contact_status_[c].feature.spin_radius;
+  const double rho = now.spin_radius;
   const Vec3& n = model_.contacts[c].normal_W;
   if (!(rho > 0.0)) return now.friction_W;
   return now.friction_W + (now.moment_about_O_B.dot(now.n_B) / rho) * n;
@@ -93,7 +99,8 @@ void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& 
     const PlaneContact& contact = model_.contacts[c];
     g(base) = g(base + 1) = g(base + 2) = 1.0;
     if (status.mode == ContactMode::Apart ||
-        contact.surface.kind == ContactSurface::Kind::Polyhedron) {
+        contact.surface.kind == ContactSurface::Kind::Polyhedron ||
+        contact.surface.kind == ContactSurface::Kind::Cone) {
       // Height, but kept positive while the point is not approaching the plane: a bounce may
       // rise and land again within one step (its flight is a parabola, which a high-order method
       // steps over), and the height alone would not change sign between the impact (h = 0) and
@@ -114,11 +121,15 @@ void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& 
 }
 
 bool ArticulatedFormulation::refresh_event_functions(double /*t*/, const VecX& y) {
-  bool sliding = false;
-  for (const ContactStatus& s : contact_status_) sliding |= s.mode == ContactMode::Sliding;
-  if (!sliding) return false;
+  bool refresh = false;
+  for (const ContactStatus& s : contact_status_) {
+    refresh |= s.mode == ContactMode::Sliding || s.cone_part == ConePart::Rim ||
+               s.cone_part == ConePart::Side;
+  }
+  if (!refresh) return false;
   // The slip-stop event watches the slip's component along the direction it had at the start of
-  // the step: in 3D the slip may turn, and it stops where that component first vanishes.
+  // the step: in 3D the slip may turn, and it stops where that component first vanishes. A cone's
+  // rim point leans towards where it was (cone_contact.hpp): that is kept up with it.
   calc_kinematics(y, true);
   calc_contact_points();
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
@@ -126,6 +137,9 @@ bool ArticulatedFormulation::refresh_event_functions(double /*t*/, const VecX& y
     const double slip = contact_now_[c].slip_W.norm();
     if (status.mode == ContactMode::Sliding && slip > status.slip_zero) {
       status.slide_direction_W = contact_now_[c].slip_W / slip;
+    }
+    if (status.cone_part == ConePart::Rim || status.cone_part == ConePart::Side) {
+      status.rim_direction_B = rim_direction(contact_now_[c].n_B, status.rim_direction_B);
     }
   }
   return true;
@@ -145,12 +159,13 @@ double ArticulatedFormulation::normal_acceleration(std::size_t c, const Vec3& p_
   return contact.normal_W.dot(w.R_WC * a_P_B + model_.gravity_W);
 }
 
-bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y) {
+bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
+                                               std::span<const Vec3> left_out_B) {
   ContactStatus& status = contact_status_[c];
   const PlaneContact& contact = model_.contacts[c];
   const ContactNow& now = contact_now_[c];
   // Consistent: the plane pushes (N > 0) with its CoP in the feature, and the touching vertices
-  // left out of the feature do not go into the plane.
+  // (points) left out of the feature do not go into the plane.
   const auto consistent = [&] {
     int side = -1;
     if (!(now.normal_force > 0.0) || support_margin_of(c, side) < 0.0) return false;
@@ -158,6 +173,9 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y)
     for (const int i : touching_) {
       if (status.feature.contains(i)) continue;
       const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
+      if (normal_acceleration(c, p) < -tolerance) return false;
+    }
+    for (const Vec3& p : left_out_B) {
       if (normal_acceleration(c, p) < -tolerance) return false;
     }
     return true;
@@ -188,18 +206,20 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
   const PlaneContact& contact = model_.contacts[c];
   const ContactMode before = status.mode;
   const int size_before = status.feature.size();
+  const ConePart part_before = status.cone_part;
   // The candidates, in order: the whole feature; a face's edges; its (or an edge's) vertices;
   // apart. The first whose forces are consistent is the one (for these few, enumerating them
   // solves the complementarity problem exactly).
   const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
+  const bool cone = status.cone_part != ConePart::None;
   touching_.assign(status.feature.polygon.begin(), status.feature.polygon.end());
   const int k = static_cast<int>(touching_.size());
   const int edges = k >= 3 ? k : 0;
   const int vertices = k >= 2 ? k : 0;
   calc_kinematics(y, false);
   const Vec3 n_B = work_[slot_of_body_[contact.body]].R_WC.transpose() * contact.normal_W;
-  bool held = false;
-  for (int candidate = 0; candidate <= edges + vertices && !held; ++candidate) {
+  bool held = cone && settle_cone(c, t, y);
+  for (int candidate = 0; candidate <= edges + vertices && !held && !cone; ++candidate) {
     if (candidate > 0) {
       std::array<int, 2> pick{};
       std::size_t count = 1;
@@ -215,25 +235,123 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
     }
     held = settle_on_feature(c, t, y);
   }
-  if (!held) {
-    status.mode = ContactMode::Apart;
-    status.feature.polygon.clear();
-    status.feature.inward_B.clear();
-    status.feature.spin_radius = 0.0;
-  }
+  if (!held) set_apart(c);
   const int size = status.feature.size();
-  if (status.mode == before && size == size_before) return;
+  if (status.mode == before && size == size_before && status.cone_part == part_before) return;
   std::string what = status.mode == ContactMode::Apart     ? "apart"
                      : status.mode == ContactMode::Sliding ? "slides"
-                     : polyhedron                          ? "sticks"
+                     : anchored(c)                         ? "sticks"
                                                            : "rolls";
   if (polyhedron && size > 0) what += fmt::format(" on {}", feature_name(size));
+  if (status.cone_part != ConePart::None)
+    what += fmt::format(" on {}", cone_part_name(status.cone_part));
   note_contact(t, c, std::move(what));
+}
+
+bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
+  ContactStatus& status = contact_status_[c];
+  const ContactSurface& cone = model_.contacts[c].surface;
+  const ContactNow& now = contact_now_[c];
+  touching_.clear();  // the cone's left-out points are named per candidate
+  calc_kinematics(y, false);
+  const Vec3 n_B =
+      work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
+  const Vec3& apex = cone.vertices[0];
+  const Vec3 rim = cone.rim_centre_B + cone.radius * rim_direction(n_B, status.rim_direction_B);
+  const auto one = [](const Vec3& p) { return std::span<const Vec3>(&p, 1); };
+  switch (status.cone_part) {
+    case ConePart::Side:
+      if (settle_on_feature(c, t, y)) return true;
+      status.cone_part = ConePart::Apex;  // the rim point lifts
+      if (settle_on_feature(c, t, y, one(rim))) return true;
+      status.cone_part = ConePart::Rim;  // the apex lifts
+      return settle_on_feature(c, t, y, one(apex));
+    case ConePart::Base:
+      if (settle_on_feature(c, t, y)) return true;
+      // Onto the rim where the CoP went (from the base's forces, still in contact_now_).
+      status.rim_direction_B =
+          base_tip_direction(now.n_B, now.moment_about_O_B, status.rim_direction_B);
+      status.cone_part = ConePart::Rim;
+      return settle_on_feature(c, t, y, one(cone.rim_centre_B));
+    default:
+      return settle_on_feature(c, t, y);
+  }
+}
+
+void ArticulatedFormulation::tip_cone(std::size_t c, int side) {
+  ContactStatus& status = contact_status_[c];
+  const ContactNow& now = contact_now_[c];
+  if (status.cone_part == ConePart::Side) {
+    status.cone_part = side == 0 ? ConePart::Apex : ConePart::Rim;
+  } else if (status.cone_part == ConePart::Base) {
+    status.rim_direction_B =
+        base_tip_direction(now.n_B, now.moment_about_O_B, status.rim_direction_B);
+    status.cone_part = ConePart::Rim;
+  }
+}
+
+void ArticulatedFormulation::set_apart(std::size_t c) {
+  ContactStatus& status = contact_status_[c];
+  status.mode = ContactMode::Apart;
+  status.feature.polygon.clear();  // keeps its reserved room
+  status.feature.inward_B.clear();
+  status.feature.spin_radius = 0.0;
+  status.cone_part = ConePart::None;
+}
+
+bool ArticulatedFormulation::anchored(std::size_t c) const {
+  const ContactSurface::Kind kind = model_.contacts[c].surface.kind;
+  const ConePart part = contact_status_[c].cone_part;
+  return kind == ContactSurface::Kind::Polyhedron ||
+         (kind == ContactSurface::Kind::Cone && (part == ConePart::Apex || part == ConePart::Base));
+}
+
+void ArticulatedFormulation::find_touching_cone_part(std::size_t c, double within, bool resting) {
+  const PlaneContact& contact = model_.contacts[c];
+  ContactStatus& status = contact_status_[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const ContactSurface& cone = contact.surface;
+  const Vec3& n = contact.normal_W;
+  const Vec3 n_B = w.R_WC.transpose() * n;
+  const Vec3 omega_B = w.velocity.head<3>();
+  const auto touches = [&](const Vec3& p_B) {
+    const double height = (w.r_G_W + w.R_WC * p_B - contact.point_W).dot(n);
+    if (height > within) return false;
+    const bool not_leaving = n_B.dot(w.velocity.tail<3>() + omega_B.cross(p_B)) <= status.slip_zero;
+    return resting ? not_leaving : height <= status.touching_height || not_leaving;
+  };
+  // The rim's lowest point; with the whole rim within `within` (the base nearly flat), the rim
+  // point moving down the fastest, which leads if the base tilts: a point C + r e has normal
+  // speed v_C.n + r e.(n x omega).
+  double projected = 0.0;
+  Vec3 u = lowest_in_plane(n_B, projected);
+  if (2.0 * cone.radius * projected <= within) {
+    const Vec3 tilting = n_B.cross(omega_B);
+    const Vec3 in_base(tilting.x(), tilting.y(), 0.0);
+    u = in_base.norm() > 0.0 ? Vec3(-in_base.normalized()) : status.rim_direction_B;
+  }
+  status.rim_direction_B = u;
+  const bool rim = touches(cone.rim_centre_B + cone.radius * u);
+  const bool apex = touches(cone.vertices[0]);
+  if (rim && touches(cone.rim_centre_B - cone.radius * u)) {
+    status.cone_part = ConePart::Base;
+  } else if (rim) {
+    status.cone_part = apex ? ConePart::Side : ConePart::Rim;
+  } else if (apex) {
+    status.cone_part = ConePart::Apex;
+  } else if (resting) {
+    status.cone_part = ConePart::None;
+  } else {
+    // A landing located to round-off is at the plane: at least the lower of the two.
+    const Vec3 rim_point = cone.rim_centre_B + cone.radius * u;
+    status.cone_part =
+        cone.vertices[0].dot(n_B) < rim_point.dot(n_B) ? ConePart::Apex : ConePart::Rim;
+  }
 }
 
 void ArticulatedFormulation::anchor_contact(std::size_t c) {
   const PlaneContact& contact = model_.contacts[c];
-  if (contact.surface.kind != ContactSurface::Kind::Polyhedron) return;  // it rolls: no anchor
+  if (!anchored(c)) return;  // it rolls: no anchor
   const ContactNow& now = contact_now_[c];
   ContactStatus& status = contact_status_[c];
   const Workspace& w = work_[slot_of_body_[contact.body]];
@@ -253,6 +371,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   ContactStatus& status = contact_status_[c];
   const Vec3& n = contact.normal_W;
   const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
+  const bool cone = contact.surface.kind == ContactSurface::Kind::Cone;
   calc_kinematics(y, true);
   calc_contact_points();
   const double vn_before = contact_now_[c].support_normal_speed;
@@ -262,6 +381,9 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   // Vertices about to land with it (within the settling height) land together: a box falling
   // flat would otherwise rattle between its corners in ever shorter bounces.
   if (polyhedron) find_touching_vertices(c, status.landing_height);
+  if (cone) find_touching_cone_part(c, status.landing_height, false);
+  const ConePart landing_part = status.cone_part;
+  const Vec3 landing_rim_direction_B = status.rim_direction_B;
 
   // Newton's restitution on the normal motion, Coulomb on the tangential impulse: the impulse
   // that leaves no slip if it lies in the cone, else a sliding impulse (normal impulses, each
@@ -274,6 +396,8 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   for (const double e : {settles ? 0.0 : contact.restitution, 0.0}) {
     if (polyhedron)
       make_feature(contact.surface.vertices, touching_, contact_now_[c].n_B, status.feature);
+    status.cone_part = landing_part;
+    status.rim_direction_B = landing_rim_direction_B;
     for (int attempt = 0; attempt < 3; ++attempt) {
       calc_kinematics(y, true);
       calc_contact_points();
@@ -303,6 +427,10 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
         tip_onto_side(contact.surface.vertices, side, now.n_B, status.feature);
         continue;
       }
+      if (cone && support_margin_of(c, side) < 0.0 && side >= 0) {
+        tip_cone(c, side);
+        continue;
+      }
       break;
     }
     impact_y_ = y;
@@ -317,8 +445,9 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   const Workspace& w = work_[slot_of_body_[contact.body]];
   const double vn_after =
       n.dot(w.R_WC * (w.velocity.tail<3>() + w.velocity.head<3>().cross(landing_B)));
-  const std::string on =
-      polyhedron ? fmt::format(" on {}", feature_name(status.feature.size())) : std::string();
+  const std::string on = polyhedron ? fmt::format(" on {}", feature_name(status.feature.size()))
+                         : cone     ? fmt::format(" on {}", cone_part_name(status.cone_part))
+                                    : std::string();
   if (settles) {
     note_contact(t, c,
                  fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before));
@@ -328,12 +457,23 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       find_touching_vertices(c, status.touching_height);
       make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
     }
+    if (cone) find_touching_cone_part(c, status.touching_height, false);
     classify_contact(c, t, y);
     return;
   }
   note_contact(t, c,
                fmt::format("impact{}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", on,
                            -vn_before, vn_after, -work));
+  if (cone) {
+    // The part's points that did not bounce off stay on the plane.
+    find_touching_cone_part(c, status.touching_height, true);
+    if (status.cone_part == ConePart::None) {
+      set_apart(c);
+      return;
+    }
+    classify_contact(c, t, y);
+    return;
+  }
   if (!polyhedron) return;  // it bounces: apart
   // The feature's vertices that did not bounce off stay on the plane.
   touching_.clear();
@@ -343,9 +483,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
     if (vn <= status.slip_zero) touching_.push_back(i);
   }
   if (touching_.empty()) {
-    status.mode = ContactMode::Apart;
-    status.feature.polygon.clear();
-    status.feature.inward_B.clear();
+    set_apart(c);
     return;
   }
   make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
@@ -370,9 +508,13 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
         classify_contact(c, t, y);
         break;
       }
-      status.mode = ContactMode::Apart;
-      status.feature.polygon.clear();
-      status.feature.inward_B.clear();
+      if (side >= 0 && status.cone_part != ConePart::None && contact_now_[c].normal_force > 0.0) {
+        tip_cone(c, side);
+        note_contact(t, c, fmt::format("tips onto {}", cone_part_name(status.cone_part)));
+        classify_contact(c, t, y);
+        break;
+      }
+      set_apart(c);
       note_contact(t, c, "lifts off");
       break;
     }
@@ -457,10 +599,8 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
     const PlaneContact& contact = model_.contacts[c];
     const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
     ContactStatus& status = contact_status_[c];
-    status.mode = ContactMode::Apart;
-    status.feature.polygon.clear();  // keeps its reserved room
-    status.feature.inward_B.clear();
-    status.feature.spin_radius = 0.0;
+    set_apart(c);
+    status.rim_direction_B = Vec3::UnitX();
     status.slide_direction_W = Vec3::UnitX();
     status.slip_zero = scales.slip_zero;
     status.settle_speed = scales.settle_speed;
@@ -480,6 +620,9 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
       find_touching_vertices(c, contact_status_[c].touching_height);
       make_feature(model_.contacts[c].surface.vertices, touching_, now.n_B,
                    contact_status_[c].feature);
+    }
+    if (model_.contacts[c].surface.kind == ContactSurface::Kind::Cone) {
+      find_touching_cone_part(c, contact_status_[c].touching_height, false);
     }
     classify_contact(c, t0, y_start);
   }

@@ -111,12 +111,17 @@ void ArticulatedFormulation::calc_contact_points() const {
     const Vec3 v_G_B = w.velocity.tail<3>();
     const ContactSurface& surface = contact.surface;
     const ContactFeature& feature = status.feature;
-    if (feature.size() == 0) {
-      // A curved surface, or a polyhedron apart: its support point is the contact point.
+    now.normal_point_rates_B.fill(Vec3::Zero());
+    now.spin_radius = feature.spin_radius;
+    if (status.cone_part != ConePart::None) {
+      calc_cone_contact_points(c, omega_B);
+    } else if (feature.size() == 0) {
+      // A curved surface, or a polyhedron or cone apart: its support point is the contact point.
       now.support = support_point(contact, w.r_G_W, w.R_WC);
       now.reference_B = now.support.p_GC_B;
       now.reference_rate_B = support_rate_B(contact, now.n_B, omega_B);
       now.normal_points_B[0] = now.reference_B;
+      now.normal_point_rates_B[0] = now.reference_rate_B;
       now.normal_point_count = 1;
     } else {
       // A polyhedron on a feature; touchdown watches its lowest vertex not already touching.
@@ -147,12 +152,59 @@ void ArticulatedFormulation::calc_contact_points() const {
     now.support_normal_speed = n.dot(w.R_WC * (v_G_B + omega_B.cross(now.support.p_GC_B)));
     now.velocity_W = w.R_WC * (v_G_B + omega_B.cross(now.reference_B));
     const double spin = (w.R_WC * omega_B).dot(n);
-    now.slip_W = now.velocity_W - n * n.dot(now.velocity_W) + status.feature.spin_radius * spin * n;
+    now.slip_W = now.velocity_W - n * n.dot(now.velocity_W) + now.spin_radius * spin * n;
     now.wrench_B.setZero();
     now.force_W.setZero();
     now.friction_W.setZero();
     now.moment_about_O_B.setZero();
     now.normal_force = 0.0;
+  }
+}
+
+void ArticulatedFormulation::calc_cone_contact_points(std::size_t c, const Vec3& omega_B) const {
+  const PlaneContact& contact = model_.contacts[c];
+  const ContactStatus& status = contact_status_[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const ContactSurface& cone = contact.surface;
+  ContactNow& now = contact_now_[c];
+  const ConePartPoints part =
+      cone_part_points(cone, status.cone_part, now.n_B, omega_B, status.rim_direction_B);
+  now.normal_points_B = part.points_B;
+  now.normal_point_rates_B = part.rates_B;
+  now.normal_point_count = part.count;
+  now.reference_B = part.reference_B;
+  now.reference_rate_B = part.reference_rate_B;
+  now.spin_radius = part.spin_radius;
+  // Touchdown watches what may land next: on the apex, the rim's lowest point; on the rim, the
+  // apex, or the base: its highest rim point, 2 r sin(tilt) above the plane, lands with the rest
+  // of the rim within the landing height of it. (Nearer flat, a rim point that rolls or slides
+  // runs round the rim ever faster, as 1 / sin(tilt): Euler's disk.) On the side or the base:
+  // nothing.
+  const double height_of_COM = (w.r_G_W - contact.point_W).dot(contact.normal_W);
+  const Vec3& apex = cone.vertices[0];
+  double projected = 0.0;
+  const Vec3 lowest = lowest_in_plane(now.n_B, projected);
+  switch (status.cone_part) {
+    case ConePart::Apex:
+      now.support.p_GC_B = cone.rim_centre_B + cone.radius * lowest;
+      now.support.height = height_of_COM + now.support.p_GC_B.dot(now.n_B);
+      break;
+    case ConePart::Rim: {
+      const double base_height = 2.0 * cone.radius * projected - status.landing_height;
+      const double apex_height = height_of_COM + apex.dot(now.n_B);
+      if (apex_height <= base_height) {
+        now.support.p_GC_B = apex;
+        now.support.height = apex_height;
+      } else {
+        now.support.p_GC_B = cone.rim_centre_B - cone.radius * lowest;
+        now.support.height = base_height;
+      }
+      break;
+    }
+    default:
+      now.support.p_GC_B.setZero();
+      now.support.height = 1.0;  // nothing left to land
+      break;
   }
 }
 
@@ -170,14 +222,14 @@ Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, Cont
   const Mat3& R = work_[slot_of_body_[contact.body]].R_WC;
   const Vec3& n = contact.normal_W;
   const Vec3 zero = Vec3::Zero();
-  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
+  const bool held_at_anchor = anchored(c);
   const auto add = [&](const Vec3& p_B, const Vec3& rate_B, const Vec3& linear_W,
                        const Vec3& angular_W, bool normal, const Vec6& wrench_B, int anchor) {
     unknowns_[static_cast<std::size_t>(count++)] = {
-        c, p_B, rate_B, linear_W, angular_W, normal, polyhedron ? anchor : -1, wrench_B};
+        c, p_B, rate_B, linear_W, angular_W, normal, held_at_anchor ? anchor : -1, wrench_B};
   };
   const bool points_only =
-      mode == ContactMode::Sliding || (rows == ContactRows::Position && !polyhedron);
+      mode == ContactMode::Sliding || (rows == ContactRows::Position && !held_at_anchor);
   if (mode == ContactMode::Apart) return count;
   if (points_only) {
     // Coulomb: each normal force N carries -mu N along the slip's tangential part at O and, for
@@ -186,10 +238,10 @@ Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, Cont
     const bool with_friction = rows == ContactRows::Motion && mode == ContactMode::Sliding;
     const double mu = with_friction ? contact.friction : 0.0;
     const Vec3 slide_tangential_W = slide_W - n * n.dot(slide_W);
-    const Vec3 spin_moment_W = -mu * contact_status_[c].feature.spin_radius * n.dot(slide_W) * n;
+    const Vec3 spin_moment_W = -mu * now.spin_radius * n.dot(slide_W) * n;
     for (int k = 0; k < now.normal_point_count; ++k) {
       const Vec3& p = now.normal_points_B[static_cast<std::size_t>(k)];
-      const Vec3 rate = now.normal_point_count == 1 ? now.reference_rate_B : zero;
+      const Vec3& rate = now.normal_point_rates_B[static_cast<std::size_t>(k)];
       // One point (a curved surface, a vertex) is its own reference point: one wrench.
       const Vec6 wrench =
           now.normal_point_count == 1
@@ -210,12 +262,14 @@ Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, Cont
   if (now.normal_point_count == 2) {
     const Vec3& A = now.normal_points_B[0];
     const Vec3& B = now.normal_points_B[1];
+    const Vec3& A_rate = now.normal_point_rates_B[0];
+    const Vec3& B_rate = now.normal_point_rates_B[1];
     for (int a = 0; a < 3; ++a) {
-      add(A, zero, *lin[a], zero, a == 0, wrench_at(R, A, *lin[a], zero), 0);
+      add(A, A_rate, *lin[a], zero, a == 0, wrench_at(R, A, *lin[a], zero), 0);
     }
     const Vec3 across_W = n.cross(R * (B - A)).normalized();
-    add(B, zero, n, zero, true, wrench_at(R, B, n, zero), 1);
-    add(B, zero, across_W, zero, false, wrench_at(R, B, across_W, zero), 1);
+    add(B, B_rate, n, zero, true, wrench_at(R, B, n, zero), 1);
+    add(B, B_rate, across_W, zero, false, wrench_at(R, B, across_W, zero), 1);
     return count;
   }
   for (int a = 0; a < 3; ++a) {
@@ -383,10 +437,11 @@ void turn_quaternion(VecX& y, Eigen::Index o, const Vec3& angle_B) {
 
 }  // namespace
 
-void ArticulatedFormulation::project_polyhedra_positions(VecX& y) const {
+void ArticulatedFormulation::project_feature_positions(VecX& y) const {
   // The smallest move in the mass metric (the response to impulses along the rows) that puts the
   // normal points back on their planes, to first order (a face or an edge turns back flat as well
-  // as moving), and a sticking polyhedron back on its anchor.
+  // as moving), and a sticking polyhedron (or cone on its apex or base) back on its anchor. A
+  // curved surface's single point moves the least too.
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Position);
   for (Eigen::Index i = 0; i < count; ++i) {
     const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
@@ -433,15 +488,16 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
       std::any_of(contact_status_.begin(), contact_status_.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (!touching) return;
-  bool polyhedra = false;
+  bool features = false;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    polyhedra |= model_.contacts[c].surface.kind == ContactSurface::Kind::Polyhedron &&
-                 contact_status_[c].mode != ContactMode::Apart;
+    const ContactSurface::Kind kind = model_.contacts[c].surface.kind;
+    features |= (kind == ContactSurface::Kind::Polyhedron || kind == ContactSurface::Kind::Cone) &&
+                contact_status_[c].mode != ContactMode::Apart;
   }
-  if (polyhedra) {
+  if (features) {
     calc_kinematics(y, true);
     calc_contact_points();
-    project_polyhedra_positions(y);
+    project_feature_positions(y);
   } else {
     // Positions: each touching body back onto its plane along the normal (its free joint's COM):
     // one point's height is all a curved surface's contact constrains.

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "tumble/contact/cone_contact.hpp"
 #include "tumble/contact/contact_feature.hpp"
 #include "tumble/contact/plane_contact.hpp"
 
@@ -128,16 +129,20 @@ class ArticulatedFormulation final : public Formulation {
   struct ContactStatus {
     ContactMode mode = ContactMode::Apart;
     ContactFeature feature;  // a polyhedron's touching vertex, edge or face (empty: apart)
+    ConePart cone_part = ConePart::None;  // a cone's touching part
+    // Where a cone's rim point was at the last step (body axes, unit): refreshed after each step,
+    // it fixes the rim point where the base is flat (cone_contact.hpp's rim_direction).
+    Vec3 rim_direction_B = Vec3::UnitX();
     // Slip direction (slip_W's) while the slip speed is ~0.
     Vec3 slide_direction_W = Vec3::UnitX();
     double slip_zero = 0.0;        // m/s: slower slip counts as none
     double settle_speed = 0.0;     // m/s: slower touchdowns settle instead of bouncing
     double touching_height = 0.0;  // m: nearer the plane counts as touching
     double landing_height = 0.0;   // m: vertices this near the plane land with a touchdown
-    // Where a polyhedron sticks (mode rolling): the points its rows hold (a vertex or face
-    // centroid, or an edge's ends) and the body's orientation, so that projection keeps it
-    // exactly there rather than letting round-off walk it away.
-    std::array<Vec3, 2> anchor_W{};
+    // Where a polyhedron (a cone on its apex or base) sticks (mode rolling): the points its rows
+    // hold (a vertex or face centroid, or an edge's ends) and the body's orientation, so that
+    // projection keeps it exactly there rather than letting round-off walk it away.
+    std::array<Vec3, 2> anchor_W = {Vec3::Zero(), Vec3::Zero()};
     Mat3 anchor_R_WB = Mat3::Identity();
   };
   // What calc_contact_points and solve_with_contacts found for each contact at the current y.
@@ -153,8 +158,11 @@ class ArticulatedFormulation final : public Formulation {
     Vec3 reference_rate_B = Vec3::Zero();  // O's motion over the body (curved surfaces)
     // The points whose normal motion the contact constrains (the vertex, the edge's ends, three
     // of the face's corners; curved: O).
-    std::array<Vec3, 3> normal_points_B{};
+    std::array<Vec3, 3> normal_points_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    // Their motion over the body (curved surfaces).
+    std::array<Vec3, 3> normal_point_rates_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     int normal_point_count = 0;
+    double spin_radius = 0.0;        // torsional friction radius of the feature (0 at a point)
     Vec3 velocity_W = Vec3::Zero();  // of the body's material point at O
     // Slip: O's tangential velocity, and the spin about the normal times the feature's spin
     // radius as the component along the normal (a polyhedron's face or edge; 0 otherwise).
@@ -208,6 +216,8 @@ class ArticulatedFormulation final : public Formulation {
   void apply_jumps_at(double t, VecX& y);
   // Contact points, reference points and their velocities, after calc_kinematics.
   void calc_contact_points() const;
+  // calc_contact_points for a touching cone: its part's points, and what may land next.
+  void calc_cone_contact_points(std::size_t contact, const Vec3& omega_B) const;
   // solve() with the contact forces of the current modes, after calc_kinematics and
   // accumulate_element_loads; fills contact_now_.
   void solve_with_contacts(double mode_time) const;
@@ -243,8 +253,8 @@ class ArticulatedFormulation final : public Formulation {
   // Jump the speeds by the impulses x_j along unknowns_[j].
   void apply_contact_impulses(Eigen::Index count, const VecX& impulses, double mode_time,
                               VecX& y) const;
-  // project()'s position step when a polyhedron touches (after calc_contact_points).
-  void project_polyhedra_positions(VecX& y) const;
+  // project()'s position step when a polyhedron or a cone touches (after calc_contact_points).
+  void project_feature_positions(VecX& y) const;
   // The current slip direction of a sliding contact.
   Vec3 slide_direction(std::size_t contact) const;
   // N times the CoP's least distance inside a polyhedron's feature (N itself for a point), and
@@ -265,11 +275,29 @@ class ArticulatedFormulation final : public Formulation {
   // Tries contact c on its current feature: sticking if the friction fits, else sliding; true
   // if the forces are consistent (N > 0, the CoP in the feature, no touching vertex left out
   // going into the plane). Touching vertices: touching_.
-  bool settle_on_feature(std::size_t contact, double t, VecX& y);
+  // A cone's candidates also name the points they leave out (left_out_B).
+  bool settle_on_feature(std::size_t contact, double t, VecX& y,
+                         std::span<const Vec3> left_out_B = {});
+  // classify_contact for a cone: its touching part, then (if that is inconsistent) the parts it
+  // may tip onto: the side onto its apex or its rim point, the base onto the rim point where its
+  // CoP left. True if one holds.
+  bool settle_cone(std::size_t contact, double t, VecX& y);
+  // A cone on its side or base tips onto the end of the side (support margin's side 0: the apex,
+  // 1: the rim point), or the base's rim point where the CoP leaves it (after a solve).
+  void tip_cone(std::size_t contact, int side);
+  void set_apart(std::size_t contact);
   // The acceleration along the plane's normal of the body's material point p_B (after a solve).
   double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
   // A polyhedron that starts sticking: its anchor where it is now (after calc_contact_points).
   void anchor_contact(std::size_t contact);
+  // Whether contact c, sticking, is held at an anchor: a polyhedron, a cone on its apex or base
+  // (the parts fixed in the body); rolling parts move over the body and are not.
+  bool anchored(std::size_t contact) const;
+  // The part of a cone contact that touches (into its status, after calc_kinematics): the base
+  // if its whole rim is within `within` of the plane, else the side if the apex and the rim's
+  // lowest point are, else the one that is (at least the lower). A point counts if it is at the
+  // plane, or within `within` and not moving away; with `resting`, only if not moving away.
+  void find_touching_cone_part(std::size_t contact, double within, bool resting);
   void impact(std::size_t contact, double t, VecX& y);
   void note_contact(double t, std::size_t contact, std::string what);
   // The ledger entry of a contact (after the locks).

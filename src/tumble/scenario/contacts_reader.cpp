@@ -1,6 +1,6 @@
 // `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
 // The body must be free (in no joint) and of a shape whose contact with a plane tumble resolves:
-// a curved surface touching at one point, or a polyhedron (docs/scenario.md, Contacts).
+// a curved surface touching at one point, a cone, or a polyhedron (docs/scenario.md, Contacts).
 #include <fmt/format.h>
 #include <algorithm>
 
@@ -12,7 +12,8 @@ namespace {
 bool touches_a_plane(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
          kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
-         kind == ShapeKind::Box || kind == ShapeKind::Plate || kind == ShapeKind::Mesh;
+         kind == ShapeKind::Cone || kind == ShapeKind::Box || kind == ShapeKind::Plate ||
+         kind == ShapeKind::Mesh;
 }
 
 ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scenario& scenario) {
@@ -39,8 +40,7 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
     reader.fail_at_value(body_field,
                          "body '" + contact.body + "' is a " + shape +
                              "; contact with a plane is for a sphere, shell, disk, ring, "
-                             "cylinder, tube, box, plate or mesh (not yet a cone or a "
-                             "composite)");
+                             "cylinder, tube, cone, box, plate or mesh (not yet a composite)");
   }
 
   const Field plane = map.require("plane", "{point: [x, y, z], normal: [x, y, z]}");

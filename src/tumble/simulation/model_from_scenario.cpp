@@ -45,6 +45,13 @@ ContactSurface contact_surface(const Shape& shape) {
       }
       break;
     }
+    case ShapeKind::Cone:
+      // Apex and base centre from the COM, a quarter of the height above the base.
+      surface.kind = ContactSurface::Kind::Cone;
+      surface.radius = shape.radius;
+      surface.vertices.emplace_back(0.0, 0.0, 0.75 * shape.height);
+      surface.rim_centre_B = Vec3(0.0, 0.0, -0.25 * shape.height);
+      break;
     case ShapeKind::Mesh: {
       // The mesh's vertices from its COM (the body's frame): a plane touches only those of its
       // convex hull, at a vertex, along an edge or on a face.

@@ -251,7 +251,6 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
 bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
   ContactStatus& status = contact_status_[c];
   const ContactSurface& cone = model_.contacts[c].surface;
-  const ContactNow& now = contact_now_[c];
   touching_.clear();  // the cone's left-out points are named per candidate
   calc_kinematics(y, false);
   const Vec3 n_B =
@@ -268,10 +267,7 @@ bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
       return settle_on_feature(c, t, y, one(apex));
     case ConePart::Base:
       if (settle_on_feature(c, t, y)) return true;
-      // Onto the rim where the CoP went (from the base's forces, still in contact_now_).
-      status.rim_direction_B =
-          base_tip_direction(now.n_B, now.moment_about_O_B, status.rim_direction_B);
-      status.cone_part = ConePart::Rim;
+      tip_cone(c, 0);  // onto the rim where the CoP went (the base's forces, in contact_now_)
       return settle_on_feature(c, t, y, one(cone.rim_centre_B));
     default:
       return settle_on_feature(c, t, y);

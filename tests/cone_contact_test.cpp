@@ -182,8 +182,8 @@ TEST(ConeOnItsBase, PastAtan4rOverHItTipsOntoItsRim) {
       const Vec3 r0 = run.rows.front().states[0].r_G;
       for (const Row& row : run.rows) EXPECT_LT((row.states[0].r_G - r0).norm(), 1e-12);
     }
-    // Over its rim until just before it would slide (the squat cone at 0.59 s, the slender one at
-    // 0.48 s: see the notes on slip onset in docs/design.md).
+    // Over its rim until just before the friction runs out (the slender cone slides at 0.475 s,
+    // the squat one lifts off at 0.488 s: tests/slip_onset_test.cpp).
     const auto run =
         run_inline_scenario(ramp_scenario(cone, 1.02 * theta_tip, 3, 0, 0.45), "cone_tips");
     ASSERT_EQ(run.contact_events.size(), 1u);
@@ -247,24 +247,27 @@ TEST(ConeOnItsApex, ItSpinsLikeATopOnAPivot) {
   }
 }
 
+// A cone dropped from 0.3 m, tilted by `tilt` degrees about (1, 0.3, 0), onto a floor with
+// friction 0.4 and restitution e.
+std::string dropped(const Cone& cone, double tilt, double e, double duration) {
+  return fmt::format(
+      "tumble: 1\n"
+      "bodies:\n"
+      "  cone: {{{}, position: [0, 0, 0.3], orientation: {{axis: [1, 0.3, 0], angle: {} deg}}}}\n"
+      "contacts:\n"
+      "  - {{name: floor, type: plane, body: cone, plane: {{point: [0, 0, 0], normal: [0, 0, 1]}}, "
+      "friction: 0.4, restitution: {}}}\n"
+      "simulate: {{duration: {}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
+      "output_every: 0.01}}\n",
+      cone_keys(cone), tilt, e, duration);
+}
+
 TEST(ConeDropped, ImpactsNeverAddEnergyAndItComesToLieOnItsSide) {
-  // The slender cone: the squat one, landing on its rim and rocking towards its base, can end in
-  // chatter at its base's landing (docs/design.md, limits).
+  // The slender cone (the squat one rocks onto its base: the next test).
   const Cone& cone = kCones[0];
   for (const double e : {0.0, 0.5}) {
     for (const double tilt : {60.0, 100.0, 150.0}) {
-      const std::string yaml = fmt::format(
-          "tumble: 1\n"
-          "bodies:\n"
-          "  cone: {{{}, position: [0, 0, 0.3], orientation: {{axis: [1, 0.3, 0], angle: {} "
-          "deg}}}}\n"
-          "contacts:\n"
-          "  - {{name: floor, type: plane, body: cone, plane: {{point: [0, 0, 0], normal: [0, 0, "
-          "1]}}, friction: 0.4, restitution: {}}}\n"
-          "simulate: {{duration: 3, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
-          "output_every: 0.01}}\n",
-          cone_keys(cone), tilt, e);
-      const auto run = run_inline_scenario(yaml, "cone_dropped");
+      const auto run = run_inline_scenario(dropped(cone, tilt, e, 3), "cone_dropped");
       test::expect_energy_never_rises(run, 1e-8);
       // Rolling on its side (in a circle, or at rest) it carries its weight with its COM at
       // (3h/4) sin(alpha).
@@ -275,6 +278,23 @@ TEST(ConeDropped, ImpactsNeverAddEnergyAndItComesToLieOnItsSide) {
       const double alpha = std::atan(cone.r / cone.h);
       EXPECT_NEAR(end.states[0].r_G.z(), 0.75 * cone.h * std::sin(alpha), 1e-12);
     }
+  }
+}
+
+TEST(ConeDropped, ASquatConeRockingOntoItsBaseComesToRestThere) {
+  // Landing on its rim, the squat cone rocks over onto its base; the base lands (plastically,
+  // with its far side up to the landing height still above the plane) and holds it: at rest on
+  // its base, COM h/4 above the floor, N = M g.
+  const Cone& cone = kCones[1];
+  for (const double e : {0.0, 0.5}) {
+    const auto run = run_inline_scenario(dropped(cone, 60, e, 1.5), "squat_cone_dropped");
+    test::expect_energy_never_rises(run, 1e-8);
+    EXPECT_EQ(run.contact_events.back().what, "sticks on its base");
+    const Row& end = run.rows.back();
+    EXPECT_EQ(end.extras.contacts[0].mode, 2);
+    EXPECT_NEAR(end.extras.contacts[0].normal_force, kMass * kG, 1e-9 * kMass * kG);
+    EXPECT_NEAR(end.states[0].r_G.z(), 0.25 * cone.h, 1e-12);
+    EXPECT_LT(end.states[0].v_G.norm() + end.states[0].omega_W.norm() * cone.h, 1e-12);
   }
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "rolling_coin_scenario.hpp"
 #include "run_tumble.hpp"
 #include "scenario_run.hpp"
 
@@ -206,35 +207,13 @@ TEST(BackspinDisk, WithLittleBackspinItNeverComesBack) {
   }
 }
 
-// A thin coin (radius r) rolling on its rim in steady motion: its COM on a circle of radius rho
-// at height r cos(theta), leaning in by theta. From the Newton-Euler equations about the COM
-// (I_axis = m r^2 / 2, I_diameter = m r^2 / 4) and the rolling constraint:
-//   Omega^2 = g tan(theta) / (3 rho / 2 + r sin(theta) / 4),  spin s = -Omega (rho + r sin) / r.
+// A thin coin rolling on its rim in steady motion (rolling_coin_scenario.hpp has the formulas).
 TEST(Coin, RollsOnItsRimInASteadyCircle) {
   for (const double theta : {10 * kDeg, 25 * kDeg}) {
     for (const double rho : {0.08, 0.2}) {
-      const double r = 0.0125;
-      const double Omega =
-          std::sqrt(kG * std::tan(theta) / (1.5 * rho + 0.25 * r * std::sin(theta)));
-      const double s = -Omega * (rho + r * std::sin(theta)) / r;
-      const double period = 2 * std::numbers::pi / Omega;
-      const std::string yaml = fmt::format(
-          "tumble: 1\n"
-          "parameters: {{theta: {theta}}}\n"
-          "bodies:\n"
-          "  coin: {{shape: disk, radius: {r}, mass: 0.0075, position: [{rho}, 0, {r} * "
-          "cos(theta)],\n"
-          "          orientation: {{axis: [0, 1, 0], angle: 90 deg - theta}},\n"
-          "          velocity: [0, {v}, 0],\n"
-          "          angular_velocity: [{s} * cos(theta), 0, {Omega} + {s} * sin(theta)]}}\n"
-          "contacts:\n"
-          "  - {{type: plane, body: coin, plane: {{point: [0, 0, 0], normal: [0, 0, 1]}}, "
-          "friction: 0.6}}\n"
-          "simulate: {{duration: {T}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
-          "output_every: {dt}}}\n",
-          fmt::arg("theta", theta), fmt::arg("r", r), fmt::arg("rho", rho),
-          fmt::arg("v", Omega * rho), fmt::arg("s", s), fmt::arg("Omega", Omega),
-          fmt::arg("T", 2 * period), fmt::arg("dt", period / 50));
+      const test::RollingCoin coin{theta, rho};
+      const double r = coin.r, Omega = coin.precession(), period = coin.period();
+      const std::string yaml = test::rolling_coin_scenario(coin, 0.6, 1, 2 * period, period / 50);
       const auto run = run_inline_scenario(yaml, "coin");
       for (const Row& row : run.rows) {
         const Vec3& r_G = row.states[0].r_G;

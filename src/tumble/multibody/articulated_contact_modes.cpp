@@ -5,10 +5,14 @@
 //    touching) while it approaches; an impact follows;
 //  - support: the normal force (a polyhedron's face or edge: N times the centre of pressure's
 //    distance inside the feature); at zero the body lifts off, or tips onto the feature's side;
-//  - stick-slip: sliding, the slip along its direction; rolling, mu N less the friction needed.
+//  - stick-slip: sliding, the slip along its direction (and a grown slip left within round-off
+//    of zero stops a moment later); rolling, mu N less the friction needed. A slip that starts
+//    is articulated_slip_onset.cpp's.
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include "tumble/multibody/articulated_formulation.hpp"
 
@@ -21,19 +25,23 @@ constexpr double kTouchingHeight = 1e-9;
 // Slip slower than this fraction of the contact's speed scale counts as none: events locate the
 // slip's zero to a few ulps of t, leaving ~1e-15 of the scale.
 constexpr double kSlipZero = 1e-9;
+// A slip that has grown is followed by its own direction down to this fraction of slip_zero
+// (still ~1e6 above the round-off of the velocities it is the difference of) while it keeps to
+// the way it went at the step's start (ArticulatedFormulation::slide_direction).
+constexpr double kSlipFloor = 1e-3;
+// A grown slip that a step leaves below slip_zero stops this fraction of the time scale later
+// (the slip-stop event), unless it crosses zero first.
+constexpr double kSlipStopWait = 1e-6;
+// Settled landings that go apart at once, each within this fraction of the time scale of the
+// last, this many in a row: a cascade that would not end (docs/design.md, "Painleve").
+constexpr double kCascadeGap = 1e-6;
+constexpr int kCascadeLandings = 1000;
 // Touchdowns whose bounce would rise less than this fraction of the contact's size settle
 // (restitution 0): the cascade of ever smaller bounces ends after finitely many.
 constexpr double kSettleHeight = 1e-6;
 // An impact's work counts as none (not a gain) within this fraction of the kinetic energy: an
 // elastic impact's is zero up to round-off.
 constexpr double kWorkRoundOff = 1e-12;
-
-// Where a contact slides when the friction sticking needs does not fit in the cone: the way it
-// is pushed, against that friction (which then saturates at mu N).
-Vec3 pushed_direction(const Vec3& friction_needed, const Vec3& otherwise_W) {
-  const double size = friction_needed.norm();
-  return size > 0.0 ? Vec3(-friction_needed / size) : otherwise_W;
-}
 
 const char* feature_name(int size) {
   return size == 1 ? "a vertex" : size == 2 ? "an edge" : "a face";
@@ -51,6 +59,13 @@ double ArticulatedFormulation::support_margin_of(std::size_t c, int& side) const
   }
   return support_margin(status.feature, surface.vertices, now.n_B, now.normal_force,
                         now.moment_about_O_B, side);
+}
+
+Vec3 ArticulatedFormulation::pushed_direction(std::size_t c) const {
+  // Against the friction sticking needs, which then saturates at mu N.
+  const Vec3 needed = friction_demand(c);
+  const double size = needed.norm();
+  return size > 0.0 ? Vec3(-needed / size) : contact_status_[c].slide_direction_W;
 }
 
 Vec3 ArticulatedFormulation::friction_demand(std::size_t c) const {
@@ -82,7 +97,8 @@ void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within
   }
 }
 
-void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& g) const {
+void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) const {
+  time_now_ = t;
   const bool touching =
       std::any_of(contact_status_.begin(), contact_status_.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
@@ -113,14 +129,21 @@ void ArticulatedFormulation::event_functions(double /*t*/, const VecX& y, VecX& 
     int side = -1;
     g(base + 1) = support_margin_of(c, side);
     if (status.mode == ContactMode::Sliding) {
-      if (contact.friction > 0.0) g(base + 2) = now.slip_W.dot(status.slide_direction_W);
+      if (contact.friction > 0.0) {
+        // The slip stops where its component along the direction it had at the start of the
+        // step vanishes; a grown slip that a step leaves below slip_zero (where it may turn, or
+        // hover, instead of crossing zero along any one direction) has stopped, an instant on.
+        g(base + 2) = now.slip_W.dot(status.slide_direction_W);
+        if (status.slip_stop_armed) g(base + 2) = std::min(g(base + 2), status.slip_stop_by - t);
+      }
     } else {
       g(base + 2) = contact.friction * now.normal_force - friction_demand(c).norm();
     }
   }
 }
 
-bool ArticulatedFormulation::refresh_event_functions(double /*t*/, const VecX& y) {
+bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
+  time_now_ = t;
   bool refresh = false;
   for (const ContactStatus& s : contact_status_) {
     refresh |= s.mode == ContactMode::Sliding || s.cone_part == ConePart::Rim ||
@@ -135,9 +158,18 @@ bool ArticulatedFormulation::refresh_event_functions(double /*t*/, const VecX& y
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     ContactStatus& status = contact_status_[c];
     const double slip = contact_now_[c].slip_W.norm();
-    if (status.mode == ContactMode::Sliding && slip > status.slip_zero) {
+    if (status.mode == ContactMode::Sliding &&
+        (slip > status.slip_zero || (status.slip_grown && slip > status.slip_floor))) {
       status.slide_direction_W = contact_now_[c].slip_W / slip;
+      status.slide_turn_W.setZero();  // the slip itself says where it goes
+      status.slip_grown = true;
     }
+    const bool in_band =
+        status.mode == ContactMode::Sliding && status.slip_grown && slip <= status.slip_zero;
+    if (in_band && !status.slip_stop_armed) {
+      status.slip_stop_by = t + kSlipStopWait * status.time_scale;
+    }
+    status.slip_stop_armed = in_band;
     if (status.cone_part == ConePart::Rim || status.cone_part == ConePart::Side) {
       status.rim_direction_B = rim_direction(contact_now_[c].n_B, status.rim_direction_B);
     }
@@ -152,11 +184,7 @@ void ArticulatedFormulation::note_contact(double t, std::size_t contact, std::st
 double ArticulatedFormulation::normal_acceleration(std::size_t c, const Vec3& p_B) const {
   const PlaneContact& contact = model_.contacts[c];
   const Workspace& w = work_[slot_of_body_[contact.body]];
-  const Vec3 omega_B = w.velocity.head<3>();
-  const Vec3 v_P_B = w.velocity.tail<3>() + omega_B.cross(p_B);
-  const Vec3 a_P_B =
-      w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p_B) + omega_B.cross(v_P_B);
-  return contact.normal_W.dot(w.R_WC * a_P_B + model_.gravity_W);
+  return contact.normal_W.dot(moving_point_acceleration_W(w, p_B, Vec3::Zero()));
 }
 
 bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
@@ -187,17 +215,19 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
   if (slip > status.slip_zero) {
     status.mode = ContactMode::Sliding;
     status.slide_direction_W = now.slip_W / slip;
+    status.slide_turn_W.setZero();
+    status.slip_grown = true;
+    status.slip_stop_armed = false;
+    solve_contacts_at(y);
   } else if (contact.friction > 0.0 && now.normal_force > 0.0 &&
              demand.norm() <= contact.friction * now.normal_force) {
     if (!consistent()) return false;
     anchor_contact(c);
     project(t, y);  // no slip at all from here
     return true;
-  } else {
-    status.mode = ContactMode::Sliding;
-    status.slide_direction_W = pushed_direction(demand, status.slide_direction_W);
+  } else if (!start_sliding(c, t, y)) {
+    return false;
   }
-  solve_contacts_at(y);
   return consistent();
 }
 
@@ -207,19 +237,35 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
   const ContactMode before = status.mode;
   const int size_before = status.feature.size();
   const ConePart part_before = status.cone_part;
+  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
+  const bool held = settle_on_candidates(c, t, y);
+  if (!held) set_apart(c);
+  const int size = status.feature.size();
+  if (status.mode == before && size == size_before && status.cone_part == part_before) return;
+  std::string what = status.mode == ContactMode::Apart     ? "apart"
+                     : status.mode == ContactMode::Sliding ? "slides"
+                     : anchored(c)                         ? "sticks"
+                                                           : "rolls";
+  if (polyhedron && size > 0) what += fmt::format(" on {}", feature_name(size));
+  if (status.cone_part != ConePart::None)
+    what += fmt::format(" on {}", cone_part_name(status.cone_part));
+  note_contact(t, c, std::move(what));
+}
+
+bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX& y) {
+  ContactStatus& status = contact_status_[c];
+  const PlaneContact& contact = model_.contacts[c];
   // The candidates, in order: the whole feature; a face's edges; its (or an edge's) vertices;
   // apart. The first whose forces are consistent is the one (for these few, enumerating them
   // solves the complementarity problem exactly).
-  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
-  const bool cone = status.cone_part != ConePart::None;
+  if (status.cone_part != ConePart::None) return settle_cone(c, t, y);
   touching_.assign(status.feature.polygon.begin(), status.feature.polygon.end());
   const int k = static_cast<int>(touching_.size());
   const int edges = k >= 3 ? k : 0;
   const int vertices = k >= 2 ? k : 0;
   calc_kinematics(y, false);
   const Vec3 n_B = work_[slot_of_body_[contact.body]].R_WC.transpose() * contact.normal_W;
-  bool held = cone && settle_cone(c, t, y);
-  for (int candidate = 0; candidate <= edges + vertices && !held && !cone; ++candidate) {
+  for (int candidate = 0; candidate <= edges + vertices; ++candidate) {
     if (candidate > 0) {
       std::array<int, 2> pick{};
       std::size_t count = 1;
@@ -233,19 +279,9 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
       make_feature(contact.surface.vertices, std::span<const int>(pick.data(), count), n_B,
                    status.feature);
     }
-    held = settle_on_feature(c, t, y);
+    if (settle_on_feature(c, t, y)) return true;
   }
-  if (!held) set_apart(c);
-  const int size = status.feature.size();
-  if (status.mode == before && size == size_before && status.cone_part == part_before) return;
-  std::string what = status.mode == ContactMode::Apart     ? "apart"
-                     : status.mode == ContactMode::Sliding ? "slides"
-                     : anchored(c)                         ? "sticks"
-                                                           : "rolls";
-  if (polyhedron && size > 0) what += fmt::format(" on {}", feature_name(size));
-  if (status.cone_part != ConePart::None)
-    what += fmt::format(" on {}", cone_part_name(status.cone_part));
-  note_contact(t, c, std::move(what));
+  return false;
 }
 
 bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
@@ -269,9 +305,32 @@ bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
       if (settle_on_feature(c, t, y)) return true;
       tip_cone(c, 0);  // onto the rim where the CoP went (the base's forces, in contact_now_)
       return settle_on_feature(c, t, y, one(cone.rim_centre_B));
+    case ConePart::Apex:
+    case ConePart::Rim: {
+      // The other end, if it is at the plane too, must not go into it.
+      const Vec3 other = cone_other_end_B(c);
+      const bool at_plane = cone_point_at_plane(c, other);
+      return settle_on_feature(c, t, y, at_plane ? one(other) : std::span<const Vec3>());
+    }
     default:
       return settle_on_feature(c, t, y);
   }
+}
+
+Vec3 ArticulatedFormulation::cone_other_end_B(std::size_t c) const {
+  const ContactStatus& status = contact_status_[c];
+  const ContactSurface& cone = model_.contacts[c].surface;
+  if (status.cone_part == ConePart::Rim) return cone.vertices[0];
+  const Vec3 n_B =
+      work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
+  return cone.rim_centre_B + cone.radius * rim_direction(n_B, status.rim_direction_B);
+}
+
+bool ArticulatedFormulation::cone_point_at_plane(std::size_t c, const Vec3& p_B) const {
+  const PlaneContact& contact = model_.contacts[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const double height = (w.r_G_W + w.R_WC * p_B - contact.point_W).dot(contact.normal_W);
+  return height <= contact_status_[c].touching_height;
 }
 
 void ArticulatedFormulation::tip_cone(std::size_t c, int side) {
@@ -289,6 +348,8 @@ void ArticulatedFormulation::tip_cone(std::size_t c, int side) {
 void ArticulatedFormulation::set_apart(std::size_t c) {
   ContactStatus& status = contact_status_[c];
   status.mode = ContactMode::Apart;
+  status.slide_turn_W.setZero();
+  status.slip_stop_armed = false;
   status.feature.polygon.clear();  // keeps its reserved room
   status.feature.inward_B.clear();
   status.feature.spin_radius = 0.0;
@@ -412,9 +473,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       solve_for_restitution();
       if (!(friction_demand(c).norm() <= contact.friction * now.normal_force)) {
         const double slip = now.slip_W.norm();
-        const Vec3 slide = slip > 0.0
-                               ? Vec3(now.slip_W / slip)
-                               : pushed_direction(friction_demand(c), status.slide_direction_W);
+        const Vec3 slide = slip > 0.0 ? Vec3(now.slip_W / slip) : pushed_direction(c);
         count = append_contact_unknowns(c, ContactMode::Sliding, ContactRows::Motion, slide, 0);
         solve_for_restitution();
       }
@@ -453,8 +512,11 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       find_touching_vertices(c, status.touching_height);
       make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
     }
-    if (cone) find_touching_cone_part(c, status.touching_height, false);
+    // A cone on what landed with it: its points within the landing height that the plastic
+    // impulse stopped (a base lands with its far side that high, not yet at the plane).
+    if (cone) find_touching_cone_part(c, status.landing_height, false);
     classify_contact(c, t, y);
+    check_landing_cascade(c, t, -vn_before);
     return;
   }
   note_contact(t, c,
@@ -486,7 +548,28 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   classify_contact(c, t, y);
 }
 
+void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, double speed) {
+  ContactStatus& status = contact_status_[c];
+  // A settled landing that nothing holds (it goes apart at once) and that follows the last one
+  // within kCascadeGap of the time scale continues a cascade; anything else ends it.
+  const bool unheld = status.mode == ContactMode::Apart;
+  const bool follows = t - status.cascade_last_t <= kCascadeGap * status.time_scale;
+  if (unheld && !follows) status.cascade_first_t = t;
+  status.cascade_landings = unheld ? (follows ? status.cascade_landings + 1 : 1) : 0;
+  status.cascade_last_t = t;
+  if (status.cascade_landings < kCascadeLandings) return;
+  // Painleve's inconsistent case: friction presses it on while it slides, yet with no force it
+  // goes into the plane; the literature resolves it by an impulse (a jam), not built.
+  throw std::runtime_error(fmt::format(
+      "contact '{}': {} landings from t = {:.9g} to {:.9g} s (the last at {:.3g} m/s) that no "
+      "contact mode holds: no mode is consistent here (Painleve's paradox: friction {} presses "
+      "the body on as it slides); lower the friction",
+      model_.contacts[c].name, status.cascade_landings, status.cascade_first_t, t, speed,
+      model_.contacts[c].friction));
+}
+
 EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, VecX& y) {
+  time_now_ = t;
   const std::size_t c = event_index / 3;
   ContactStatus& status = contact_status_[c];
   switch (event_index % 3) {
@@ -522,15 +605,20 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
         if (slip > status.slip_zero) {
           // The slip turned away from the direction it had (3D); it did not stop.
           status.slide_direction_W = contact_now_[c].slip_W / slip;
+          status.slide_turn_W.setZero();
+          status.slip_grown = true;
+          status.slip_stop_armed = false;
           break;
         }
         note_contact(t, c, "slip stops");
         classify_contact(c, t, y);
       } else {
         solve_contacts_at(y);
-        status.mode = ContactMode::Sliding;
-        status.slide_direction_W = pushed_direction(friction_demand(c), status.slide_direction_W);
-        note_contact(t, c, "slides: the friction sticking needs leaves the cone");
+        if (start_sliding(c, t, y)) {
+          note_contact(t, c, "slides: the friction sticking needs leaves the cone");
+          break;
+        }
+        lift_off_or_hold_slide(c, t, y);
       }
       break;
   }
@@ -591,6 +679,8 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
   calc_kinematics(y, true);  // the bodies' states set the scales
   VecX y_start = y;          // classifying may project it; the run starts from y itself
   impact_y_.resize(y.size());
+  onset_y_.resize(y.size());
+  onset_dydt_.resize(y.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const PlaneContact& contact = model_.contacts[c];
     const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
@@ -598,10 +688,15 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
     set_apart(c);
     status.rim_direction_B = Vec3::UnitX();
     status.slide_direction_W = Vec3::UnitX();
+    status.slip_grown = false;
+    status.cascade_landings = 0;
+    status.cascade_last_t = -std::numeric_limits<double>::infinity();
     status.slip_zero = scales.slip_zero;
+    status.slip_floor = kSlipFloor * scales.slip_zero;
     status.settle_speed = scales.settle_speed;
     status.touching_height = scales.touching_height;
     status.landing_height = scales.landing_height;
+    status.time_scale = std::max(contact_size(contact.surface), 1e-300) / scales.speed;
   }
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     calc_kinematics(y_start, true);

@@ -209,9 +209,31 @@ void ArticulatedFormulation::calc_cone_contact_points(std::size_t c, const Vec3&
 }
 
 Vec3 ArticulatedFormulation::slide_direction(std::size_t c) const {
-  const double slip = contact_now_[c].slip_W.norm();
-  if (slip > contact_status_[c].slip_zero) return contact_now_[c].slip_W / slip;
-  return contact_status_[c].slide_direction_W;
+  const ContactStatus& status = contact_status_[c];
+  const Vec3& slip_W = contact_now_[c].slip_W;
+  const double slip = slip_W.norm();
+  // Below slip_zero a grown slip is still followed while it keeps to the way it went at the start
+  // of the step; past that (it stopped within the step) friction stays as it was, so that the
+  // right-hand side runs on smoothly through the stop that the slip-stop event locates.
+  const bool followed = slip > status.slip_zero || (status.slip_grown && slip > status.slip_floor &&
+                                                    slip_W.dot(status.slide_direction_W) > 0.0);
+  if (followed) return slip_W / slip;
+  if (status.slide_turn_W.isZero(0.0)) return status.slide_direction_W;
+  const double since = time_now_ - status.slide_start_t;
+  return (status.slide_direction_W + since * status.slide_turn_W).normalized();
+}
+
+Vec3 ArticulatedFormulation::moving_point_acceleration_W(const Workspace& w, const Vec3& p_B,
+                                                         const Vec3& rate_B) const {
+  // d/dt R (v_G + omega x p), with p moving over the body at p'_B:
+  //   R (a_G + alpha x p + omega x (v_G + omega x p) + omega x p'_B),
+  // from the spatial acceleration (alpha; a_O), whose classical value at the COM is
+  // a_O + omega x v_G, plus the g that ground's acceleration carries in it.
+  const Vec3 omega_B = w.velocity.head<3>();
+  const Vec3 v_P_B = w.velocity.tail<3>() + omega_B.cross(p_B);
+  const Vec3 psi_B = w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p_B) +
+                     omega_B.cross(v_P_B) + omega_B.cross(rate_B);
+  return w.R_WC * psi_B + model_.gravity_W;
 }
 
 Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, ContactMode mode,
@@ -335,23 +357,15 @@ void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Motion);
   if (count == 0) return;
 
-  // psi_0 for each row: d/dt (v_G + omega x p) with p the row's point, which turns with the
-  // body and may also move over it (p' = omega x p + R p'_B):
-  //   psi = a_G + alpha x p + omega x (omega x p + R p'_B),
-  // in the body's axes from the spatial acceleration (alpha; a_O), whose classical value at the
-  // COM is a_O + omega x v_G, and the -g that ground's acceleration carries; an angular row's is
-  // alpha (its direction is fixed in the world).
+  // psi_0 for each row: the acceleration of its point, which turns with the body and may also
+  // move over it (moving_point_acceleration_W); an angular row's is alpha (its direction is fixed
+  // in the world).
   for (Eigen::Index i = 0; i < count; ++i) {
     const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
     const Workspace& w = work_[slot_of_body_[model_.contacts[row.contact].body]];
-    const Vec3 omega_B = w.velocity.head<3>();
-    const Vec3 alpha_B = w.acceleration.head<3>();
-    const Vec3& p = row.point_B;
-    const Vec3 v_P_B = w.velocity.tail<3>() + omega_B.cross(p);
-    const Vec3 psi_B = w.acceleration.tail<3>() + alpha_B.cross(p) + omega_B.cross(v_P_B) +
-                       omega_B.cross(row.point_rate_B);
     contact_rhs_(i) =
-        -row.linear_W.dot(w.R_WC * psi_B + model_.gravity_W) - row.angular_W.dot(w.R_WC * alpha_B);
+        -row.linear_W.dot(moving_point_acceleration_W(w, row.point_B, row.point_rate_B)) -
+        row.angular_W.dot(w.R_WC * w.acceleration.head<3>());
   }
   calc_contact_matrix(count, mode_time);
   solve_contact_system(count, contact_rhs_);

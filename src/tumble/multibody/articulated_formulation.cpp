@@ -314,7 +314,8 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive) const {
   }
 }
 
-void ArticulatedFormulation::derivative(double /*t*/, const VecX& y, VecX& dydt) const {
+void ArticulatedFormulation::derivative(double t, const VecX& y, VecX& dydt) const {
+  time_now_ = t;
   calc_kinematics(y, true);
   accumulate_element_loads(y, schedule_time_, dydt, ledger_, nullptr);
   solve_with_contacts(schedule_time_);
@@ -435,7 +436,8 @@ JointReaction ArticulatedFormulation::reaction_of(std::size_t model_joint) const
   return {sign * (w.R_WC * F_C), sign * (w.R_WC * M_J_C)};
 }
 
-void ArticulatedFormulation::calc_row_extras(double /*t*/, const VecX& y, RowExtras& extras) const {
+void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras& extras) const {
+  time_now_ = t;
   calc_kinematics(y, true);
   accumulate_element_loads(y, schedule_time_, rates_, 0, &extras.elastic_energy);
   solve_with_contacts(schedule_time_);
@@ -460,12 +462,14 @@ void ArticulatedFormulation::calc_row_extras(double /*t*/, const VecX& y, RowExt
 
 void ArticulatedFormulation::begin(double t0, const VecX& y) {
   Formulation::begin(t0, y);
+  time_now_ = t0;
   jumps_.clear();
   begin_contacts(t0, y);
 }
 
 void ArticulatedFormulation::at_breakpoint(double t, VecX& y) {
   schedule_time_ = t;
+  time_now_ = t;
   apply_jumps_at(t, y);
   reclassify_contacts(t, y);
 }

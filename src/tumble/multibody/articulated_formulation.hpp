@@ -135,10 +135,23 @@ class ArticulatedFormulation final : public Formulation {
     Vec3 rim_direction_B = Vec3::UnitX();
     // Slip direction (slip_W's) while the slip speed is ~0.
     Vec3 slide_direction_W = Vec3::UnitX();
+    // A slip that starts from rolling turns from slide_direction_W at this rate (1/s, normal to
+    // it) from slide_start_t on, until it is above slip_zero (articulated_slip_onset.cpp).
+    Vec3 slide_turn_W = Vec3::Zero();
+    double slide_start_t = 0.0;
+    bool slip_grown = false;  // the slip has been above slip_zero at the end of a step
+    // A grown slip left below slip_zero by the last step stops at slip_stop_by (s).
+    bool slip_stop_armed = false;
+    double slip_stop_by = 0.0;
+    // Settled landings in a row that nothing held, from cascade_first_t; the last landing's t.
+    int cascade_landings = 0;
+    double cascade_first_t = 0.0, cascade_last_t = 0.0;
     double slip_zero = 0.0;        // m/s: slower slip counts as none
+    double slip_floor = 0.0;       // m/s: a grown slip is followed down to this
     double settle_speed = 0.0;     // m/s: slower touchdowns settle instead of bouncing
     double touching_height = 0.0;  // m: nearer the plane counts as touching
     double landing_height = 0.0;   // m: vertices this near the plane land with a touchdown
+    double time_scale = 0.0;       // s: the contact's size over its speed scale
     // Where a polyhedron (a cone on its apex or base) sticks (mode rolling): the points its rows
     // hold (a vertex or face centroid, or an edge's ends) and the body's orientation, so that
     // projection keeps it exactly there rather than letting round-off walk it away.
@@ -255,8 +268,30 @@ class ArticulatedFormulation final : public Formulation {
                               VecX& y) const;
   // project()'s position step when a polyhedron or a cone touches (after calc_contact_points).
   void project_feature_positions(VecX& y) const;
-  // The current slip direction of a sliding contact.
+  // The current slip direction of a sliding contact (at time_now_).
   Vec3 slide_direction(std::size_t contact) const;
+  // The slip direction of a contact that must slide with no slip yet: the way it is pushed,
+  // against the friction sticking needs (from contact_now_).
+  Vec3 pushed_direction(std::size_t contact) const;
+  // Contact c, with no slip, starts to slide along pushed_direction (after a rolling solve at y;
+  // articulated_slip_onset.cpp). True if the slip can grow that way: its acceleration along it
+  // is positive or, where the needed friction has just reached the cone's edge (no acceleration),
+  // its jerk is, with the direction turning as it needs. False where friction would drive the
+  // slip back (Painleve's case: friction high enough that it presses the contact on).
+  bool start_sliding(std::size_t contact, double t, const VecX& y);
+  // Where the rolling contact c cannot start sliding: it lifts off if, with no force, its points
+  // (a cone's other end too, if it is at the plane) leave the plane; if not, no mode is
+  // consistent, and it slides along the pushed direction.
+  void lift_off_or_hold_slide(std::size_t contact, double t, const VecX& y);
+  // At the cone's edge: the rate the starting slip's direction turns at (into slide_turn_W);
+  // false if no turn lets the slip grow.
+  bool turn_starting_slip(std::size_t contact, double t, const VecX& y);
+  // The slip's rate of change (slip_W's) after a solve, and at y sliding along slide_W.
+  Vec3 slip_acceleration(std::size_t contact) const;
+  Vec3 slip_acceleration_at(std::size_t contact, const VecX& y, const Vec3& slide_W);
+  // The acceleration (world axes, gravity's included) of the point p_B that moves over the body
+  // at rate_B, after a solve: d/dt of its velocity R (v_G + omega x p).
+  Vec3 moving_point_acceleration_W(const Workspace& w, const Vec3& p_B, const Vec3& rate_B) const;
   // N times the CoP's least distance inside a polyhedron's feature (N itself for a point), and
   // the side of the feature where it is least; from contact_now_.
   double support_margin_of(std::size_t contact, int& side) const;
@@ -278,10 +313,18 @@ class ArticulatedFormulation final : public Formulation {
   // A cone's candidates also name the points they leave out (left_out_B).
   bool settle_on_feature(std::size_t contact, double t, VecX& y,
                          std::span<const Vec3> left_out_B = {});
+  // classify_contact's candidates for contact c (settle_on_feature on the feature, its edges,
+  // its vertices; settle_cone); true if one holds.
+  bool settle_on_candidates(std::size_t contact, double t, VecX& y);
   // classify_contact for a cone: its touching part, then (if that is inconsistent) the parts it
   // may tip onto: the side onto its apex or its rim point, the base onto the rim point where its
   // CoP left. True if one holds.
   bool settle_cone(std::size_t contact, double t, VecX& y);
+  // A cone on its apex: its rim's lowest point; on its rim point: its apex (after
+  // calc_kinematics).
+  Vec3 cone_other_end_B(std::size_t contact) const;
+  // Whether the body point p_B is at the plane (within touching_height; after calc_kinematics).
+  bool cone_point_at_plane(std::size_t contact, const Vec3& p_B) const;
   // A cone on its side or base tips onto the end of the side (support margin's side 0: the apex,
   // 1: the rim point), or the base's rim point where the CoP leaves it (after a solve).
   void tip_cone(std::size_t contact, int side);
@@ -299,6 +342,9 @@ class ArticulatedFormulation final : public Formulation {
   // plane, or within `within` and not moving away; with `resting`, only if not moving away.
   void find_touching_cone_part(std::size_t contact, double within, bool resting);
   void impact(std::size_t contact, double t, VecX& y);
+  // After a settled landing at `speed`: throws std::runtime_error where such landings have
+  // come kCascadeLandings in a row, each going apart at once (no consistent mode).
+  void check_landing_cascade(std::size_t contact, double t, double speed);
   void note_contact(double t, std::size_t contact, std::string what);
   // The ledger entry of a contact (after the locks).
   Eigen::Index contact_entry(std::size_t contact) const;
@@ -324,6 +370,9 @@ class ArticulatedFormulation final : public Formulation {
   mutable VecX contact_rhs_, contact_x_;
   mutable std::vector<int> touching_;  // scratch of find_touching_vertices, reserved
   VecX impact_y_;                      // scratch of impact()
+  VecX onset_y_, onset_dydt_;          // scratch of turn_starting_slip()
+  // The time of the state being evaluated: a starting slip's direction turns with it.
+  mutable double time_now_ = 0.0;
   // Scratch of derivative() and the other const queries, sized once here: no allocation per call.
   mutable std::vector<Workspace> work_;
   mutable std::vector<BodyState> states_;

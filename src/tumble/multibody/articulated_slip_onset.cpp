@@ -1,0 +1,157 @@
+// A slip that starts from rolling or sticking (docs/design.md, "Contact"). It starts where the
+// friction rolling needs, F, reaches the edge of the cone, |F| = mu N. There sliding along the
+// way the contact is pushed, d0 = -F / |F|, carries the same friction as rolling: the slip starts
+// with zero acceleration, and its jerk decides where it goes. Held along d0, the slip's
+// acceleration grows as -W (F' + mu N' d0) t (W: the slip's response to friction, N held on the
+// plane), and where W is not isotropic (a coin on its rim) that need not point along
+// d0: the slip would turn back at once, stop, start again, and chatter. The consistent start
+// turns the friction as it goes: d = d0 + d' t with d' normal to d0 and the jerk along d0,
+//     j(d') = j_held + (d a_slip / d d) d' = J d0,   J > 0,
+// which has one solution for W positive definite (its component along d0 is -d0.(F' + mu N' d0)
+// over d0.W^-1 d0, positive where the needed friction leaves the cone). Its terms come from the
+// solves themselves: j_held by a central difference in time along the motion, the slip
+// acceleration's response to turning d by central differences in d. Once the slip is above
+// slip_zero, its own direction takes over. J <= 0 is Painleve's case (friction high enough that,
+// sliding, it presses the contact on): the slip cannot start, and the contact lifts off if with
+// no force it would leave the plane (lift_off_or_hold_slide).
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+
+#include "tumble/multibody/articulated_formulation.hpp"
+
+namespace tumble {
+
+namespace {
+
+// Steps of the central differences: in time, a fraction of the contact's time scale (the slip
+// it leaves, ~1e-12 of the speed scale, stays below slip_zero, so d0 holds); in direction, radians.
+// Both leave ~1e-10 of round-off in what they measure, and truncation below that.
+constexpr double kOnsetTimeStep = 1e-6;
+constexpr double kOnsetTurnStep = 1e-5;
+
+}  // namespace
+
+bool ArticulatedFormulation::start_sliding(std::size_t c, double t, const VecX& y) {
+  ContactStatus& status = contact_status_[c];
+  const Vec3 d0 = pushed_direction(c);  // from the rolling forces in contact_now_
+  status.mode = ContactMode::Sliding;
+  status.slide_direction_W = d0;
+  status.slide_turn_W.setZero();
+  status.slide_start_t = t;
+  status.slip_grown = false;
+  status.slip_stop_armed = false;
+  const Vec3 a = slip_acceleration_at(c, y, d0);
+  if (model_.contacts[c].friction == 0.0) return true;  // nothing can drive it back
+  // Accelerations below this are round-off of zero (slip_zero over the time scale).
+  const double zero = status.slip_zero / status.time_scale;
+  bool grows = a.dot(d0) > zero;
+  if (!grows && a.norm() <= zero) {
+    // At the cone's edge: the jerk decides, and the direction turns as it needs.
+    grows = turn_starting_slip(c, t, y);
+  }
+  solve_contacts_at(y);
+  return grows;
+}
+
+bool ArticulatedFormulation::turn_starting_slip(std::size_t c, double t, const VecX& y) {
+  ContactStatus& status = contact_status_[c];
+  const Vec3 d0 = status.slide_direction_W;
+  const Vec3& n = model_.contacts[c].normal_W;
+
+  // The jerk with the direction held, along the motion the derivative gives.
+  const double dt = kOnsetTimeStep * status.time_scale;
+  derivative(t, y, onset_dydt_);
+  onset_y_ = y + dt * onset_dydt_;
+  const Vec3 after = slip_acceleration_at(c, onset_y_, d0);
+  onset_y_ = y - dt * onset_dydt_;
+  const Vec3 before = slip_acceleration_at(c, onset_y_, d0);
+  const Vec3 jerk_held = (after - before) / (2.0 * dt);
+
+  // Slip space: the plane's tangents, and the normal too where the contact has a spin radius
+  // (slip_W's spin component). Its basis: d0, then the directions d may turn in.
+  std::array<Vec3, 3> basis = {d0, Vec3::Zero(), Vec3::Zero()};
+  const bool with_spin = contact_now_[c].spin_radius > 0.0;
+  int turns = 1;
+  if (with_spin) {
+    plane_basis(d0, basis[1], basis[2]);
+    turns = 2;
+  } else {
+    basis[1] = n.cross(d0).normalized();
+  }
+  const int size = turns + 1;
+  // Unknowns: the turn rate along each of basis[1..turns], then J.
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Vec3 rhs = Vec3::Zero();
+  for (int k = 0; k < size; ++k) rhs(k) = -basis[static_cast<std::size_t>(k)].dot(jerk_held);
+  for (int i = 0; i < turns; ++i) {
+    const Vec3& e = basis[static_cast<std::size_t>(i + 1)];
+    const Vec3 plus = slip_acceleration_at(c, y, (d0 + kOnsetTurnStep * e).normalized());
+    const Vec3 minus = slip_acceleration_at(c, y, (d0 - kOnsetTurnStep * e).normalized());
+    const Vec3 response = (plus - minus) / (2.0 * kOnsetTurnStep);
+    for (int k = 0; k < size; ++k) A(k, i) = basis[static_cast<std::size_t>(k)].dot(response);
+  }
+  A(0, turns) = -1.0;  // -J d0, in the basis
+  status.slide_direction_W = d0;
+  Vec3 z = Vec3::Zero();
+  z.head(size) = A.topLeftCorner(size, size).fullPivLu().solve(rhs.head(size));
+  const double J = z(turns);
+  if (!(J > 0.0) || !z.allFinite()) return false;  // the slip cannot start
+  for (int i = 0; i < turns; ++i) {
+    status.slide_turn_W += z(i) * basis[static_cast<std::size_t>(i + 1)];
+  }
+  return true;
+}
+
+void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, const VecX& y) {
+  ContactStatus& status = contact_status_[c];
+  const ContactStatus sliding = status;
+  const ContactNow& now = contact_now_[c];
+  std::array<Vec3, 4> points_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  std::size_t count = 0;
+  for (int k = 0; k < now.normal_point_count; ++k) {
+    points_B[count++] = now.normal_points_B[static_cast<std::size_t>(k)];
+  }
+  if (status.cone_part == ConePart::Apex || status.cone_part == ConePart::Rim) {
+    const Vec3 other = cone_other_end_B(c);
+    if (cone_point_at_plane(c, other)) points_B[count++] = other;
+  }
+  set_apart(c);
+  solve_contacts_at(y);
+  // A zero of what the normal acceleration is measured against (gravity's scale).
+  const double tolerance = status.slip_zero / status.time_scale;
+  bool leaves = true;
+  for (std::size_t k = 0; k < count; ++k) {
+    leaves = leaves && normal_acceleration(c, points_B[k]) >= -tolerance;
+  }
+  if (leaves) {
+    note_contact(t, c, "lifts off: sliding would need friction pressing it on");
+    return;
+  }
+  // No mode is consistent (Painleve's inconsistent case; the literature resolves it with a
+  // tangential impulse, not built): it slides along the pushed direction, held.
+  status = sliding;
+  status.slide_turn_W.setZero();
+  solve_contacts_at(y);
+  note_contact(t, c, "slides: the friction sticking needs leaves the cone (inconsistent)");
+}
+
+Vec3 ArticulatedFormulation::slip_acceleration_at(std::size_t c, const VecX& y,
+                                                  const Vec3& slide_W) {
+  contact_status_[c].slide_direction_W = slide_W;
+  solve_contacts_at(y);
+  return slip_acceleration(c);
+}
+
+Vec3 ArticulatedFormulation::slip_acceleration(std::size_t c) const {
+  // slip_W = the tangential part of O's velocity + rho (omega . n) n, with O moving over the
+  // body at its rate and n fixed in the world.
+  const ContactNow& now = contact_now_[c];
+  const Workspace& w = work_[slot_of_body_[model_.contacts[c].body]];
+  const Vec3& n = model_.contacts[c].normal_W;
+  const Vec3 a_O_W = moving_point_acceleration_W(w, now.reference_B, now.reference_rate_B);
+  const double spin_rate = n.dot(w.R_WC * w.acceleration.head<3>());
+  return a_O_W - n * n.dot(a_O_W) + now.spin_radius * spin_rate * n;
+}
+
+}  // namespace tumble

@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "tumble/output/animation_html.hpp"
 #include "tumble/scenario/scenario.hpp"
@@ -117,6 +119,42 @@ TEST(AnimationHtml, OutputAnimationNamesThePageAndNamesStayText) {
   std::size_t scripts = 0;
   for (std::size_t at = 0; (at = html.find("<script", at)) != std::string::npos; ++at) ++scripts;
   EXPECT_EQ(scripts, 2u);
+}
+
+TEST(AnimationHtml, EveryContactsPlaneIsInTheSceneOnce) {
+  // The ramp race: three bodies, each with a contact on the one ramp; boxes on ramps: two
+  // ramps. Each distinct plane is drawn once, through its point with its unit normal.
+  for (const auto& [example, distinct] :
+       {std::pair{"ramp_race", 1u}, std::pair{"boxes_on_ramps", 2u}}) {
+    const std::string path = std::string(TUMBLE_SOURCE_DIR) + "/examples/" + example + ".yaml";
+    const Scenario scenario = load_scenario(path, {});
+    const AnimationScene scene = make_animation_scene(scenario);
+    ASSERT_EQ(scene.planes.size(), distinct) << example;
+    EXPECT_EQ(scene.planes[0].name, scenario.contacts[0].name);
+    for (const AnimationPlane& plane : scene.planes) {
+      EXPECT_NEAR(plane.normal_W.norm(), 1.0, 1e-15);
+      const bool given = std::any_of(
+          scenario.contacts.begin(), scenario.contacts.end(), [&](const ContactSpec& c) {
+            return c.plane_point_W == plane.point_W && c.plane_normal_W == plane.normal_W;
+          });
+      EXPECT_TRUE(given) << example;
+    }
+    const fs::path dir = fresh_directory(std::string("planes_") + example);
+    ASSERT_EQ(run_tumble(path + " --out " + dir.string() + " --animate"), 0);
+    fs::path page;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.path().extension() == ".html") page = entry.path();
+    }
+    ASSERT_FALSE(page.empty());
+    const std::string data = embedded_data(read_file(page));
+    EXPECT_NE(data.find("\"planes\":[{\"name\":\"" + scenario.contacts[0].name + "\""),
+              std::string::npos);
+    std::size_t normals = 0;
+    for (std::size_t at = 0; (at = data.find("\"normal\":", at)) != std::string::npos; ++at) {
+      ++normals;
+    }
+    EXPECT_EQ(normals, distinct) << example;
+  }
 }
 
 TEST(AnimationHtml, AnUnwritablePageIsExitStatus5) {

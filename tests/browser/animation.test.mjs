@@ -34,6 +34,8 @@ before(async () => {
   animate(join(root, 'examples', 'spinning_projectile.yaml'), work);
   pages.prism = join(work, 'tumbling_prism.html');
   pages.projectile = join(work, 'spinning_projectile.html');
+  animate(join(root, 'examples', 'ramp_race.yaml'), work);
+  pages.ramp = join(work, 'ramp_race.html');
 
   // 20,000 rows: the prism with a row every millisecond.
   const prism = readFileSync(join(root, 'examples', 'tumbling_prism.yaml'), 'utf8');
@@ -164,6 +166,40 @@ test('the projectile page opens offline without errors', async () => {
   await page.screenshot({ path: join(artifacts, 'projectile.png'), fullPage: true });
   assert.deepEqual(seen.errors, []);
   assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
+// The share of the canvas that is light grey (not white, no body colour): the planes' fill.
+function greyShare() {
+  const gl = document.querySelector('#canvas-box canvas').getContext('webgl2');
+  const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+  const px = new Uint8Array(w * h * 4);
+  gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+  let grey = 0;
+  for (let i = 0; i < px.length; i += 4) {
+    const lo = Math.min(px[i], px[i + 1], px[i + 2]), hi = Math.max(px[i], px[i + 1], px[i + 2]);
+    if (hi < 245 && lo > 120 && hi - lo < 40) ++grey;
+  }
+  return grey / (w * h);
+}
+
+test('the ramp the bodies race down is drawn, once', async () => {
+  const { page, context, seen } = await open(pages.ramp);
+  // Three contacts (one per body) on one plane: one plane drawn.
+  assert.equal(await page.evaluate(() => window.tumble.planes), 1);
+  await page.evaluate(() => window.tumble.seek(0.5));
+  await page.waitForTimeout(100);
+  const ramp = await page.evaluate(greyShare);
+  await page.screenshot({ path: join(artifacts, 'ramp_race.png'), fullPage: true });
+  // Against the prism's page, which has no plane (only the ground grid's thin lines).
+  const prism = await open(pages.prism);
+  await prism.page.evaluate(() => window.tumble.seek(0));
+  await prism.page.waitForTimeout(100);
+  const none = await prism.page.evaluate(greyShare);
+  assert.ok(ramp > 0.1 && ramp > 5 * none, `grey: ramp page ${ramp}, prism page ${none}`);
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await prism.context.close();
   await context.close();
 });
 

@@ -1,6 +1,7 @@
 // The animation page of `tumble run --animate`. The trajectory arrives in
 // <script type="application/json" id="tumble-data"> (written by src/tumble/output/animation_html.cpp):
 //   name, rows, bodies [{name, extent, parts: [{name, shape, dims..., position, quaternion}]}],
+//   planes    [{name, point, normal}]: the contacts' fixed planes (ground, ramps)
 //   time      base64 Float64 [rows]
 //   system    base64 Float64 [rows][4]: KE, PE, E, |L| (about the world origin)
 //   body_rows base64 Float32 [rows][bodies][16]: r_G (3), q_WB (x y z w), omega_W (3), omega_B (3),
@@ -171,6 +172,27 @@ grid.rotateX(Math.PI / 2);
 const centre = lo.clone().add(hi).multiplyScalar(0.5);
 grid.position.set(centre.x, centre.y, zGround);
 scene.add(grid);
+
+// Each contact's plane: a translucent square with a grid, 1.5 spans wide, about the point of
+// the plane nearest the middle of the motion (a ramp shows its slope under the bodies on it).
+const planes = (data.planes ?? []).map((spec) => {
+  const normal = new THREE.Vector3().fromArray(spec.normal).normalize();
+  const point = new THREE.Vector3().fromArray(spec.point);
+  const size = 1.5 * span;
+  const group = new THREE.Group();
+  const fill = new THREE.Mesh(new THREE.PlaneGeometry(size, size),
+    new THREE.MeshStandardMaterial({
+      color: '#b8c0cf', roughness: 0.9, transparent: true, opacity: 0.45, side: THREE.DoubleSide,
+      depthWrite: false, polygonOffset: true, polygonOffsetFactor: 2, polygonOffsetUnits: 2,
+    }));
+  const lines = new THREE.GridHelper(size, 10, '#7d879a', '#a3acbc');
+  lines.rotateX(Math.PI / 2);  // the helper lies in x-z; the square in x-y
+  group.add(fill, lines);
+  group.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), normal);
+  group.position.copy(centre).addScaledVector(normal, -centre.clone().sub(point).dot(normal));
+  scene.add(group);
+  return group;
+});
 controls.target.copy(centre);
 camera.position.copy(centre).add(new THREE.Vector3(1.2, -1.6, 0.9).multiplyScalar(span));
 controls.update();
@@ -398,6 +420,7 @@ function enterVideoMode() {
 // For the browser test and for scripting: read-only views and a way to seek.
 window.tumble = {
   rows,
+  planes: planes.length,
   start: t0,
   end: tEnd,
   get time() { return simTime; },

@@ -200,6 +200,12 @@ std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& ro
     }
     json += "]}";
   }
+  json += R"(],"planes":[)";
+  for (std::size_t k = 0; k < scene.planes.size(); ++k) {
+    const AnimationPlane& plane = scene.planes[k];
+    json += fmt::format(R"({}{{"name":{},"point":{},"normal":{}}})", k == 0 ? "" : ",",
+                        json_string(plane.name), vec(plane.point_W), vec(plane.normal_W));
+  }
   json += "],";
 
   std::vector<double> time(n);
@@ -300,6 +306,17 @@ AnimationScene make_animation_scene(const Scenario& scenario) {
     }
     body.extent = extent;
     scene.bodies.push_back(std::move(body));
+  }
+  // One plane per distinct plane: bodies racing down one ramp each have a contact with it.
+  for (const ContactSpec& contact : scenario.contacts) {
+    const Vec3& n = contact.plane_normal_W;
+    const double offset = n.dot(contact.plane_point_W);
+    const bool drawn = std::any_of(scene.planes.begin(), scene.planes.end(), [&](const auto& p) {
+      const double scale = 1.0 + std::abs(offset);
+      return (p.normal_W - n).norm() <= 1e-12 &&
+             std::abs(p.normal_W.dot(p.point_W) - offset) <= 1e-12 * scale;
+    });
+    if (!drawn) scene.planes.push_back({contact.name, contact.plane_point_W, n});
   }
   return scene;
 }

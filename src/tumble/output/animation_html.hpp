@@ -1,8 +1,9 @@
 #pragma once
 // The animation page of `tumble run --animate`: ONE self-contained HTML file that shows the
-// bodies with their true shapes moving through the recorded rows, their axes, the angular
-// velocity and the angular momentum about the COM, a trail of the COM, and the time plots of
-// omega (body and world axes), KE / PE / E and |L|, with a cursor that follows the animation.
+// bodies with their true shapes moving through the recorded rows over the planes they touch,
+// their axes, the angular velocity and the angular momentum about the COM, a trail of the COM,
+// and the time plots of omega (body and world axes), KE / PE / E and |L|, with a cursor that
+// follows the animation.
 // three.js and uPlot are embedded (animation_assets.hpp): the page makes no network request.
 //
 // The trajectory is embedded as base64 in a <script type="application/json"> element: per row
@@ -43,12 +44,21 @@ struct AnimationBody {
   double extent = 1.0;            // m: radius of a sphere about the COM holding every part
 };
 
+// A fixed plane a body touches (a contact's ground or ramp).
+struct AnimationPlane {
+  std::string name;             // the first contact's with it
+  Vec3 point_W = Vec3::Zero();  // a point of the plane, m
+  Vec3 normal_W = Vec3::UnitZ();
+};
+
 struct AnimationScene {
   std::string name;  // the scenario's: the page's title
   std::vector<AnimationBody> bodies;
+  std::vector<AnimationPlane> planes;  // one per distinct plane of the contacts
 };
 
-// The scene of a scenario: every body's parts (a single shape is one part), meshes loaded.
+// The scene of a scenario: every body's parts (a single shape is one part), meshes loaded, and
+// the contacts' planes (each once: several bodies may touch one ramp).
 AnimationScene make_animation_scene(const Scenario& scenario);
 
 // The output rows, kept in memory for the page.

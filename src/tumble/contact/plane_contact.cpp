@@ -6,7 +6,7 @@
 namespace tumble {
 
 // A disk or a ring lying flat touches along all of its rim: a face contact that these surface
-// models do not resolve (a cone's base does: cone_contact.hpp).
+// models do not resolve (a cone's base does: cone_contact.hpp; see rim_rise).
 Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length) {
   const Vec3 projected(n_B.x(), n_B.y(), 0.0);
   projected_length = projected.norm();
@@ -28,6 +28,17 @@ bool apex_is_lowest(const ContactSurface& cone, const Vec3& n_B) {
 }
 
 }  // namespace
+
+double rim_rise(const ContactSurface& surface, const Vec3& n_B) {
+  double projected = 0.0;
+  lowest_in_plane(n_B, projected);
+  return 2.0 * surface.radius * projected;
+}
+
+bool lies_flat_on_faces(const ContactSurface& surface) {
+  return surface.kind == ContactSurface::Kind::Circle ||
+         surface.kind == ContactSurface::Kind::Cylinder;
+}
 
 double contact_size(const ContactSurface& surface) {
   double size = 0.0;

@@ -60,6 +60,14 @@ int lowest_vertex(const ContactSurface& surface, const Vec3& n_B);
 // flat (projection zero) has no lowest point, and x is returned.
 Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length);
 
+// A disk's, ring's or cylinder's rim (Circle, Cylinder): how far its highest point rises above its
+// lowest along the plane's normal, 2 r sin(tilt); zero where it lies flat on a face, which these
+// surface models do not resolve (its contact point would run round the rim ever faster).
+double rim_rise(const ContactSurface& surface, const Vec3& n_B);
+
+// Whether the surface is a rim that can lie flat on a face (rim_rise applies).
+bool lies_flat_on_faces(const ContactSurface& surface);
+
 // A length that sets the scale of the contact's tolerances: the surface's radius, or a
 // polyhedron's (a cone's) farthest vertex (or rim point) from the COM.
 double contact_size(const ContactSurface& surface);

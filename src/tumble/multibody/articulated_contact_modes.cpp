@@ -126,6 +126,11 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
                     : now.support.height;
     }
     if (status.mode == ContactMode::Apart) continue;
+    // A disk, ring or cylinder on its rim: the rim's far side landing, the face flat (not
+    // modelled: the run stops there, saying so).
+    if (lies_flat_on_faces(contact.surface)) {
+      g(base) = rim_rise(contact.surface, now.n_B) - status.landing_height;
+    }
     int side = -1;
     g(base + 1) = support_margin_of(c, side);
     if (status.mode == ContactMode::Sliding) {
@@ -432,6 +437,10 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   calc_kinematics(y, true);
   calc_contact_points();
   const double vn_before = contact_now_[c].support_normal_speed;
+  if (lies_flat_on_faces(contact.surface) &&
+      rim_rise(contact.surface, contact_now_[c].n_B) <= status.landing_height) {
+    stop_on_flat_face(c, t);
+  }
   const Vec3 landing_B = contact_now_[c].support.p_GC_B;
   const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
   const double energy_before = kinetic_energy();
@@ -548,6 +557,14 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   classify_contact(c, t, y);
 }
 
+void ArticulatedFormulation::stop_on_flat_face(std::size_t c, double t) const {
+  throw std::runtime_error(fmt::format(
+      "contact '{}': body '{}' comes to lie flat on a face at t = {:.9g} s; a disk, ring or "
+      "cylinder lying on a face is not modelled yet (a cone's base and a box's face are), so the "
+      "run stops here",
+      model_.contacts[c].name, model_.bodies[model_.contacts[c].body].name, t));
+}
+
 void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, double speed) {
   ContactStatus& status = contact_status_[c];
   // A settled landing that nothing holds (it goes apart at once) and that follows the last one
@@ -574,6 +591,9 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
   ContactStatus& status = contact_status_[c];
   switch (event_index % 3) {
     case 0:  // touchdown
+      if (status.mode != ContactMode::Apart && lies_flat_on_faces(model_.contacts[c].surface)) {
+        stop_on_flat_face(c, t);
+      }
       impact(c, t, y);
       break;
     case 1: {  // support: lift-off, or the CoP at the feature's side
@@ -663,6 +683,14 @@ ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
                          model_.bodies[contact.body].name, -now.support.height)};
     }
     const double vn = now.support_normal_speed;
+    if (now.support.height <= scales.touching_height && lies_flat_on_faces(contact.surface) &&
+        rim_rise(contact.surface, now.n_B) <= scales.landing_height) {
+      return ContactStartProblem{
+          c, fmt::format("body '{}' starts lying flat on a face: a disk, ring or cylinder on a "
+                         "face is not modelled yet (a cone's base and a box's face are); tilt it "
+                         "off the face, or start it above the plane",
+                         model_.bodies[contact.body].name)};
+    }
     if (now.support.height <= scales.touching_height && vn < -scales.slip_zero) {
       return ContactStartProblem{
           c, fmt::format("body '{}' starts touching the plane and moving into it at {:.6g} m/s; "

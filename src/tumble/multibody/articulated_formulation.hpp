@@ -342,6 +342,8 @@ class ArticulatedFormulation final : public Formulation {
   // plane, or within `within` and not moving away; with `resting`, only if not moving away.
   void find_touching_cone_part(std::size_t contact, double within, bool resting);
   void impact(std::size_t contact, double t, VecX& y);
+  // Throws std::runtime_error: contact c's disk, ring or cylinder lies flat on a face at t.
+  [[noreturn]] void stop_on_flat_face(std::size_t contact, double t) const;
   // After a settled landing at `speed`: throws std::runtime_error where such landings have
   // come kCascadeLandings in a row, each going apart at once (no consistent mode).
   void check_landing_cascade(std::size_t contact, double t, double speed);

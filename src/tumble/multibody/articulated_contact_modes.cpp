@@ -36,6 +36,10 @@ constexpr double kSlipStopWait = 1e-6;
 // last, this many in a row: a cascade that would not end (docs/design.md, "Painleve").
 constexpr double kCascadeGap = 1e-6;
 constexpr int kCascadeLandings = 1000;
+// A disk, ring or cylinder whose rim rises less than this fraction of its size (a tilt of ~1e-3
+// rad) lies flat on a face, which is not modelled: nearer flat, its rim's contact point runs
+// round ever faster (as 1 / sin(tilt): Euler's disk), and steps shrink with it.
+constexpr double kFlatRise = 1e-3;
 // Touchdowns whose bounce would rise less than this fraction of the contact's size settle
 // (restitution 0): the cascade of ever smaller bounces ends after finitely many.
 constexpr double kSettleHeight = 1e-6;
@@ -129,7 +133,7 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
     // A disk, ring or cylinder on its rim: the rim's far side landing, the face flat (not
     // modelled: the run stops there, saying so).
     if (lies_flat_on_faces(contact.surface)) {
-      g(base) = rim_rise(contact.surface, now.n_B) - status.landing_height;
+      g(base) = rim_rise(contact.surface, now.n_B) - kFlatRise * contact_size(contact.surface);
     }
     int side = -1;
     g(base + 1) = support_margin_of(c, side);
@@ -438,7 +442,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   calc_contact_points();
   const double vn_before = contact_now_[c].support_normal_speed;
   if (lies_flat_on_faces(contact.surface) &&
-      rim_rise(contact.surface, contact_now_[c].n_B) <= status.landing_height) {
+      rim_rise(contact.surface, contact_now_[c].n_B) <= kFlatRise * contact_size(contact.surface)) {
     stop_on_flat_face(c, t);
   }
   const Vec3 landing_B = contact_now_[c].support.p_GC_B;
@@ -684,7 +688,7 @@ ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
     }
     const double vn = now.support_normal_speed;
     if (now.support.height <= scales.touching_height && lies_flat_on_faces(contact.surface) &&
-        rim_rise(contact.surface, now.n_B) <= scales.landing_height) {
+        rim_rise(contact.surface, now.n_B) <= kFlatRise * contact_size(contact.surface)) {
       return ContactStartProblem{
           c, fmt::format("body '{}' starts lying flat on a face: a disk, ring or cylinder on a "
                          "face is not modelled yet (a cone's base and a box's face are); tilt it "

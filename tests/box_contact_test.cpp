@@ -234,5 +234,30 @@ TEST(BoxDropped, ImpactsNeverAddEnergyAndItComesToRestOnAFace) {
   }
 }
 
+TEST(BoxDropped, SpinningAndBouncingOnARampItComesToRestOnItsLargestFace) {
+  // Spinning at 15 rad/s, bouncing (e 0.6) on a 5.7 degree ramp with mu 1 (above tan 5.7): its
+  // stages once blew up while it slid on a vertex, which must shorten the step, not end the run.
+  // It ends at rest on its largest face, COM half its thickness above the ramp, energy never
+  // gained.
+  const std::string yaml =
+      "tumble: 1\n"
+      "bodies:\n"
+      "  b: {shape: box, size: [0.1, 0.06, 0.03], mass: 0.3, position: [0, 0, 0.2],\n"
+      "      orientation: {axis: [1, 0.4, 0], angle: 25 deg}, velocity: [0.3, 0, 0],\n"
+      "      angular_velocity: [0, 4.5, 15]}\n"
+      "contacts:\n"
+      "  - {name: floor, type: plane, body: b, plane: {point: [0, 0, 0], normal: [0.1, 0, 1]},\n"
+      "     friction: 1, restitution: 0.6}\n"
+      "simulate: {duration: 2, integrator: dop853, rtol: 1e-8, atol: 1e-11, output_every: 0.02}\n";
+  const auto run = run_inline_scenario(yaml, "spinning_box");
+  test::expect_energy_never_rises(run, 1e-8);
+  const Row& end = run.rows.back();
+  const Vec3 n = Vec3(0.1, 0, 1).normalized();
+  EXPECT_EQ(end.extras.contacts[0].mode, 2);
+  EXPECT_NEAR(end.states[0].r_G.dot(n), 0.015, 1e-10);
+  EXPECT_LT(end.states[0].v_G.norm() + 0.1 * end.states[0].omega_W.norm(), 1e-10);
+  EXPECT_NEAR(end.extras.contacts[0].normal_force, 0.3 * kG * n.z(), 1e-8 * 0.3 * kG);
+}
+
 }  // namespace
 }  // namespace tumble

@@ -34,7 +34,9 @@ void solve_in_place(MatX& A, VecX& b, Eigen::Index n) {
     for (Eigen::Index r = col + 1; r < n; ++r) {
       if (std::abs(A(r, col)) > std::abs(A(pivot, col))) pivot = r;
     }
-    if (!(std::abs(A(pivot, col)) > 0.0)) {
+    // A pivot of exactly zero: redundant rows. A non-finite one (a stage that blew up) goes
+    // through as NaN, and the integrator retries that step shorter.
+    if (A(pivot, col) == 0.0) {
       throw std::runtime_error(
           "the contacts' constraints are redundant (two contacts hold the same freedom)");
     }

@@ -68,6 +68,8 @@ BENCHMARK_CAPTURE(BM_ContactExample, box_slides_to_rest, "box_slides_to_rest")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ContactExample, boxes_on_ramps, "boxes_on_ramps")
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ContactExample, cone_rolling_on_its_side, "cone_rolling_on_its_side")
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace tumble

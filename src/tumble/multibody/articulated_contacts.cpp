@@ -230,7 +230,8 @@ Vec3 ArticulatedFormulation::moving_point_acceleration_W(const Workspace& w, con
   // d/dt R (v_G + omega x p), with p moving over the body at p'_B:
   //   R (a_G + alpha x p + omega x (v_G + omega x p) + omega x p'_B),
   // from the spatial acceleration (alpha; a_O), whose classical value at the COM is
-  // a_O + omega x v_G, plus the g that ground's acceleration carries in it.
+  // a_O + omega x v_G. The passes give ground the acceleration -g (gravity as a fictitious
+  // lift), so every acceleration they give is short of the true one by g: it is added back.
   const Vec3 omega_B = w.velocity.head<3>();
   const Vec3 v_P_B = w.velocity.tail<3>() + omega_B.cross(p_B);
   const Vec3 psi_B = w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p_B) +

@@ -116,8 +116,10 @@ TEST(SlipOnset, ASquatConeWhereFrictionWouldPressItOnLiftsOffAndFliesFree) {
   // jerk is against it, so it cannot grow), while with no force the rim point leaves the ramp.
   // Lifting off is the consistent mode: from then on it flies, its COM on a parabola under g and
   // its angular momentum about the COM constant, until it lands.
-  const double r = 0.1, h = 0.15;
-  const auto run = run_inline_scenario(cone_over_its_rim(r, h), "squat_cone");
+  // examples/cone_lifted_by_friction.yaml: cone_over_its_rim(0.1, 0.15).
+  const double h = 0.15;
+  const auto run = test::run_scenario(
+      load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/cone_lifted_by_friction.yaml", {}));
   ASSERT_GE(run.contact_events.size(), 3u);
   EXPECT_EQ(run.contact_events[0].what, "rolls on its rim");
   EXPECT_EQ(run.contact_events[1].what, "lifts off: sliding would need friction pressing it on");

@@ -3,7 +3,9 @@
 // throughout, which alternates rolling and sliding with Coulomb's law holding at every row and no
 // chatter; and a cone rolling over its rim on a steep ramp with high friction, which slides if the
 // slip can grow (slender) and lifts off where friction would have to press it on to slide
-// (squat: Painleve's case), after which it flies free. Every run asks rtol 1e-10.
+// (squat: Painleve's case), after which it flies free; and a top falling onto its side with
+// friction so high that no mode holds it, whose cascade of landings ends the run with a message.
+// Every run asks rtol 1e-10.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

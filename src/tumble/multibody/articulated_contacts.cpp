@@ -334,11 +334,21 @@ void ArticulatedFormulation::calc_contact_matrix(Eigen::Index count, double mode
       w.qdd.setZero();
     }
     const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
-    work_[slot_of_body_[model_.contacts[u.contact].body]].external += u.wrench_B;
-    solve(mode_time, true);
+    const std::size_t slot = slot_of_body_[model_.contacts[u.contact].body];
+    work_[slot].external += u.wrench_B;
+    // Only the bodies hung (through joints) from the same ground joint move: the others' rows
+    // respond with nothing, and their passes are skipped (three bodies racing down a ramp: a
+    // third of the work).
+    const std::size_t tree = tree_root_[slot];
+    solve(mode_time, true, tree);
     for (Eigen::Index i = 0; i < count; ++i) {
       const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
-      const Workspace& w = work_[slot_of_body_[model_.contacts[row.contact].body]];
+      const std::size_t row_slot = slot_of_body_[model_.contacts[row.contact].body];
+      if (tree_root_[row_slot] != tree) {
+        contact_matrix_(i, j) = 0.0;
+        continue;
+      }
+      const Workspace& w = work_[row_slot];
       // The linear response of the row: no velocity terms in the impulsive passes.
       const Vec3 alpha_B = w.acceleration.head<3>();
       contact_matrix_(i, j) =

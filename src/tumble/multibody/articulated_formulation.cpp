@@ -92,9 +92,16 @@ ArticulatedFormulation::ArticulatedFormulation(Model model)
     w.qdd.resize(nv);
   }
   has_children_.assign(tree_.size(), false);
-  for (const TreeJoint& joint : tree_) {
-    if (joint.parent != kGround)
-      has_children_[slot_of_body_[static_cast<std::size_t>(joint.parent)]] = true;
+  tree_root_.assign(tree_.size(), 0);
+  for (std::size_t k = 0; k < tree_.size(); ++k) {  // parents come before their children
+    const TreeJoint& joint = tree_[k];
+    if (joint.parent == kGround) {
+      tree_root_[k] = k;
+    } else {
+      const std::size_t parent = slot_of_body_[static_cast<std::size_t>(joint.parent)];
+      has_children_[parent] = true;
+      tree_root_[k] = tree_root_[parent];
+    }
   }
   states_.resize(body_count());
   rates_.resize(entries);
@@ -220,9 +227,13 @@ void ArticulatedFormulation::accumulate_element_loads(const VecX& y, double mode
   if (elastic_energy != nullptr) *elastic_energy = elastic;
 }
 
-void ArticulatedFormulation::solve(double mode_time, bool impulsive) const {
+void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t only_tree) const {
+  const auto skipped = [&](std::size_t k) {
+    return only_tree != kEveryTree && tree_root_[k] != only_tree;
+  };
   // Pass 1: each body alone.
   for (std::size_t k = 0; k < tree_.size(); ++k) {
+    if (skipped(k)) continue;
     const TreeJoint& joint = tree_[k];
     const RigidBody& body = model_.bodies[joint.child];
     Workspace& w = work_[k];
@@ -244,6 +255,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive) const {
   }
   // Pass 2: articulated inertias and bias forces, from the leaves in.
   for (std::size_t k = tree_.size(); k-- > 0;) {
+    if (skipped(k)) continue;
     const TreeJoint& joint = tree_[k];
     Workspace& w = work_[k];
     const Vec6 c = impulsive ? Vec6::Zero() : w.bias;
@@ -292,6 +304,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive) const {
   Vec6 a_ground = Vec6::Zero();
   if (!impulsive) a_ground.tail<3>() = -model_.gravity_W;
   for (std::size_t k = 0; k < tree_.size(); ++k) {
+    if (skipped(k)) continue;
     const TreeJoint& joint = tree_[k];
     Workspace& w = work_[k];
     const Vec6& a_P =

@@ -204,7 +204,10 @@ class ArticulatedFormulation final : public Formulation {
   // accelerations (impulsive = false), or the jumps of the speeds that the impulses in
   // Workspace::external cause with the prescribed joints jumping by their Workspace::qdd
   // (impulsive = true: no velocity terms, no gravity).
-  void solve(double mode_time, bool impulsive) const;
+  // With `only_tree` (a tree index whose parent is ground), only that subtree: the bodies of
+  // the others do not move under loads on it (their workspaces are left as they were).
+  static constexpr std::size_t kEveryTree = static_cast<std::size_t>(-1);
+  void solve(double mode_time, bool impulsive, std::size_t only_tree = kEveryTree) const;
   // Locked hinges, hinges driven at a speed, fixed joints: their acceleration is known.
   bool prescribed(std::size_t tree_index, double mode_time) const;
   // Applied loads and force elements on each body (into Workspace::external); their powers into
@@ -357,6 +360,7 @@ class ArticulatedFormulation final : public Formulation {
   std::vector<TreeJoint> tree_;
   std::vector<std::size_t> slot_of_body_;  // tree index of each body's inbound joint
   std::vector<bool> has_children_;         // per tree joint: another body hangs from its child
+  std::vector<std::size_t> tree_root_;     // per tree joint: its ancestor hung from ground
   std::vector<int> slot_of_joint_;         // tree index of each model joint
   std::vector<Eigen::Index> quaternion_offsets_;
   Eigen::Index speeds_ = 0, ledger_ = 0, dimension_ = 0;

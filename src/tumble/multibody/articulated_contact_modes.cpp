@@ -88,10 +88,9 @@ void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within
   touching_.clear();
   for (std::size_t i = 0; i < contact.surface.vertices.size(); ++i) {
     const Vec3& p = contact.surface.vertices[i];
-    const double height = (w.r_G_W + w.R_WC * p - contact.point_W).dot(n);
+    const double height = height_above_plane(c, p);
     if (height > within) continue;
-    const double vn = n.dot(w.R_WC * (w.velocity.tail<3>() + w.velocity.head<3>().cross(p)));
-    if (height <= status.touching_height || vn <= status.slip_zero) {
+    if (height <= status.touching_height || normal_speed(c, p) <= status.slip_zero) {
       touching_.push_back(static_cast<int>(i));
     }
   }
@@ -188,6 +187,19 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
 
 void ArticulatedFormulation::note_contact(double t, std::size_t contact, std::string what) {
   contact_events_.push_back({t, contact, std::move(what)});
+}
+
+double ArticulatedFormulation::height_above_plane(std::size_t c, const Vec3& p_B) const {
+  const PlaneContact& contact = model_.contacts[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  return (w.r_G_W + w.R_WC * p_B - contact.point_W).dot(contact.normal_W);
+}
+
+double ArticulatedFormulation::normal_speed(std::size_t c, const Vec3& p_B) const {
+  const PlaneContact& contact = model_.contacts[c];
+  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Vec3 v_P_B = w.velocity.tail<3>() + w.velocity.head<3>().cross(p_B);
+  return contact.normal_W.dot(w.R_WC * v_P_B);
 }
 
 double ArticulatedFormulation::normal_acceleration(std::size_t c, const Vec3& p_B) const {
@@ -318,7 +330,7 @@ bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
     case ConePart::Rim: {
       // The other end, if it is at the plane too, must not go into it.
       const Vec3 other = cone_other_end_B(c);
-      const bool at_plane = cone_point_at_plane(c, other);
+      const bool at_plane = height_above_plane(c, other) <= status.touching_height;
       return settle_on_feature(c, t, y, at_plane ? one(other) : std::span<const Vec3>());
     }
     default:
@@ -333,13 +345,6 @@ Vec3 ArticulatedFormulation::cone_other_end_B(std::size_t c) const {
   const Vec3 n_B =
       work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
   return cone.rim_centre_B + cone.radius * rim_direction(n_B, status.rim_direction_B);
-}
-
-bool ArticulatedFormulation::cone_point_at_plane(std::size_t c, const Vec3& p_B) const {
-  const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
-  const double height = (w.r_G_W + w.R_WC * p_B - contact.point_W).dot(contact.normal_W);
-  return height <= contact_status_[c].touching_height;
 }
 
 void ArticulatedFormulation::tip_cone(std::size_t c, int side) {
@@ -381,9 +386,9 @@ void ArticulatedFormulation::find_touching_cone_part(std::size_t c, double withi
   const Vec3 n_B = w.R_WC.transpose() * n;
   const Vec3 omega_B = w.velocity.head<3>();
   const auto touches = [&](const Vec3& p_B) {
-    const double height = (w.r_G_W + w.R_WC * p_B - contact.point_W).dot(n);
+    const double height = height_above_plane(c, p_B);
     if (height > within) return false;
-    const bool not_leaving = n_B.dot(w.velocity.tail<3>() + omega_B.cross(p_B)) <= status.slip_zero;
+    const bool not_leaving = normal_speed(c, p_B) <= status.slip_zero;
     return resting ? not_leaving : height <= status.touching_height || not_leaving;
   };
   // The rim's lowest point; with the whole rim within `within` (the base nearly flat), the rim
@@ -511,8 +516,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   y(ledger_ + contact_entry(c)) += work;
   calc_kinematics(y, true);
   const Workspace& w = work_[slot_of_body_[contact.body]];
-  const double vn_after =
-      n.dot(w.R_WC * (w.velocity.tail<3>() + w.velocity.head<3>().cross(landing_B)));
+  const double vn_after = normal_speed(c, landing_B);
   const std::string on = polyhedron ? fmt::format(" on {}", feature_name(status.feature.size()))
                          : cone     ? fmt::format(" on {}", cone_part_name(status.cone_part))
                                     : std::string();
@@ -550,8 +554,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   touching_.clear();
   for (const int i : status.feature.polygon) {
     const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
-    const double vn = n.dot(w.R_WC * (w.velocity.tail<3>() + w.velocity.head<3>().cross(p)));
-    if (vn <= status.slip_zero) touching_.push_back(i);
+    if (normal_speed(c, p) <= status.slip_zero) touching_.push_back(i);
   }
   if (touching_.empty()) {
     set_apart(c);

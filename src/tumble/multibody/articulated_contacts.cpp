@@ -139,9 +139,8 @@ void ArticulatedFormulation::calc_contact_points() const {
       }
       now.support.p_GC_B =
           lowest >= 0 ? surface.vertices[static_cast<std::size_t>(lowest)] : Vec3::Zero();
-      now.support.height = lowest >= 0
-                               ? (w.r_G_W + w.R_WC * now.support.p_GC_B - contact.point_W).dot(n)
-                               : 1.0;  // every vertex touches: nothing left to land
+      now.support.height = lowest >= 0 ? height_above_plane(c, now.support.p_GC_B)
+                                       : 1.0;  // every vertex touches: nothing left to land
       now.reference_B = feature.reference_B;
       now.reference_rate_B.setZero();
       now.normal_point_count = feature.normal_point_count;
@@ -151,7 +150,7 @@ void ArticulatedFormulation::calc_contact_points() const {
                 feature.normal_points[static_cast<std::size_t>(k)])];
       }
     }
-    now.support_normal_speed = n.dot(w.R_WC * (v_G_B + omega_B.cross(now.support.p_GC_B)));
+    now.support_normal_speed = normal_speed(c, now.support.p_GC_B);
     now.velocity_W = w.R_WC * (v_G_B + omega_B.cross(now.reference_B));
     const double spin = (w.R_WC * omega_B).dot(n);
     now.slip_W = now.velocity_W - n * n.dot(now.velocity_W) + now.spin_radius * spin * n;

@@ -326,14 +326,16 @@ class ArticulatedFormulation final : public Formulation {
   // A cone on its apex: its rim's lowest point; on its rim point: its apex (after
   // calc_kinematics).
   Vec3 cone_other_end_B(std::size_t contact) const;
-  // Whether the body point p_B is at the plane (within touching_height; after calc_kinematics).
-  bool cone_point_at_plane(std::size_t contact, const Vec3& p_B) const;
   // A cone on its side or base tips onto the end of the side (support margin's side 0: the apex,
   // 1: the rim point), or the base's rim point where the CoP leaves it (after a solve).
   void tip_cone(std::size_t contact, int side);
   void set_apart(std::size_t contact);
   // The acceleration along the plane's normal of the body's material point p_B (after a solve).
   double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
+  // The height above the plane of the body's point p_B, and its material velocity along the
+  // plane's normal (after calc_kinematics).
+  double height_above_plane(std::size_t contact, const Vec3& p_B) const;
+  double normal_speed(std::size_t contact, const Vec3& p_B) const;
   // A polyhedron that starts sticking: its anchor where it is now (after calc_contact_points).
   void anchor_contact(std::size_t contact);
   // Whether contact c, sticking, is held at an anchor: a polyhedron, a cone on its apex or base

@@ -114,7 +114,7 @@ void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, con
   }
   if (status.cone_part == ConePart::Apex || status.cone_part == ConePart::Rim) {
     const Vec3 other = cone_other_end_B(c);
-    if (cone_point_at_plane(c, other)) points_B[count++] = other;
+    if (height_above_plane(c, other) <= status.touching_height) points_B[count++] = other;
   }
   set_apart(c);
   solve_contacts_at(y);

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "ramp_checks.hpp"
 #include "scenario_run.hpp"
 
 namespace tumble {
@@ -108,13 +109,7 @@ TEST(ConeOnItsBase, BelowTheFrictionAngleItStaysAtRestFor100Seconds) {
           ramp_scenario(cone, theta, 1.05 * std::tan(theta), 0, 100), "cone_at_rest");
       ASSERT_EQ(run.contact_events.size(), 1u);
       EXPECT_EQ(run.contact_events[0].what, "sticks on its base");
-      const Vec3 r0 = run.rows.front().states[0].r_G;
-      for (const Row& row : run.rows) {
-        EXPECT_LT((row.states[0].r_G - r0).norm(), 1e-12) << "t " << row.t;
-        EXPECT_LT(row.states[0].v_G.norm() + row.states[0].omega_W.norm(), 1e-12);
-        EXPECT_NEAR(row.extras.contacts[0].normal_force, kMass * kG * std::cos(theta),
-                    1e-12 * kMass * kG);
-      }
+      test::expect_at_rest_on_ramp(run, kMass, theta);
     }
   }
 }
@@ -130,15 +125,7 @@ TEST(ConeOnItsBase, AboveTheFrictionAngleItSlidesWithTheExactAcceleration) {
       const auto run = run_inline_scenario(ramp_scenario(cone, theta, mu, 0, 2), "cone_slides");
       ASSERT_EQ(run.contact_events.size(), 1u);
       EXPECT_EQ(run.contact_events[0].what, "slides on its base");
-      const Vec3 r0 = run.rows.front().states[0].r_G;
-      const Vec3 down(std::cos(theta), 0, -std::sin(theta));
-      for (const Row& row : run.rows) {
-        const double s = 0.5 * a * row.t * row.t;
-        EXPECT_NEAR((row.states[0].r_G - r0).dot(down), s, 1e-10 * (1 + s));
-        EXPECT_LT(row.states[0].omega_W.norm(), 1e-10);
-        EXPECT_NEAR(row.extras.contacts[0].normal_force, kMass * kG * std::cos(theta),
-                    1e-10 * kMass * kG);
-      }
+      test::expect_sliding_down_ramp(run, kMass, theta, a);
     }
   }
 }

@@ -338,39 +338,6 @@ TEST(ContactScenario, StartingOnThePlaneAndMovingIntoItIsRefused) {
       5, 5, "contacts[0]", "starts touching the plane and moving into it at 1 m/s");
 }
 
-// A disk, ring or cylinder lying flat on a face touches along its whole rim, which the rim
-// models do not resolve (its contact point would run round the rim ever faster): starting so is
-// refused, and coming to lie so stops the run there (exit 4), each saying why.
-TEST(ContactScenario, ADiskOrCylinderLyingFlatOnAFaceIsRefusedOrStopsTheRun) {
-  const std::string contacts =
-      "contacts:\n"
-      "  - {name: table, type: plane, body: b, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, "
-      "friction: 0.5}\n"
-      "simulate: {duration: 2, integrator: dop853, rtol: 1e-10, atol: 1e-13, output_every: "
-      "0.01}\n";
-  for (const std::string body :
-       {"  b: {shape: cylinder, radius: 0.033, length: 0.115, mass: 0.35, position: [0, 0, "
-        "0.0575]}\n",
-        "  b: {shape: ring, radius: 0.1, mass: 0.2}\n"}) {
-    test::expect_error("tumble: 1\nbodies:\n" + body + contacts, 5, 5, "contacts[0]",
-                       "body 'b' starts lying flat on a face: a disk, ring or cylinder on a face "
-                       "is not modelled yet");
-  }
-  // A coin dropped nearly flat: it lands on its rim, and its far side comes down at once.
-  PreparedSimulation coin = prepare_simulation(test::load_inline_scenario(
-      "tumble: 1\nbodies:\n  b: {shape: disk, radius: 0.0125, mass: 0.0075, position: [0, 0, "
-      "0.1], orientation: {axis: [1, 0, 0], angle: 10 deg}}\n" +
-          contacts,
-      "coin_falls_flat"));
-  const SimulationResult result = run_simulation(
-      coin, [](double, std::span<const BodyState>, const SystemQuantities&, const RowExtras&) {});
-  EXPECT_FALSE(result.report.completed);
-  EXPECT_NE(result.report.failure.find("contact 'table': body 'b' comes to lie flat on a face"),
-            std::string::npos)
-      << result.report.failure;
-  EXPECT_LT(result.report.stats.accepted_steps, 100);
-}
-
 TEST(ContactScenario, TheBackspinExampleWritesContactColumnsAndEvents) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "tumble_contact_cli_columns";

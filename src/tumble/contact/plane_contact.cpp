@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tumble/contact/round_contact.hpp"
+
 namespace tumble {
 
-// A disk or a ring lying flat touches along all of its rim: a face contact that these surface
-// models do not resolve (a cone's base does: cone_contact.hpp; see rim_rise).
 Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length) {
   const Vec3 projected(n_B.x(), n_B.y(), 0.0);
   projected_length = projected.norm();
@@ -16,40 +16,25 @@ Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length) {
 
 namespace {
 
-// A cylinder whose axis is within this angle (rad) of the plane lies on its side: it touches
-// along a line. Rolling keeps the axis parallel to the plane to round-off (~1e-16), far inside.
-constexpr double kLineContactTilt = 1e-9;
-
-// Whether a cone's apex is lower along -n_B than every point of its base's rim.
-bool apex_is_lowest(const ContactSurface& cone, const Vec3& n_B) {
+// Which end of a round surface is the lower along -n_B (0: A, 1: B; B of equals), and the
+// direction of its lowest rim point.
+int lower_end(const RoundEnds& ends, const Vec3& n_B, Vec3& u_B) {
   double projected = 0.0;
-  const Vec3 rim = cone.rim_centre_B + cone.radius * lowest_in_plane(n_B, projected);
-  return cone.vertices[0].dot(n_B) < rim.dot(n_B);
+  u_B = lowest_in_plane(n_B, projected);
+  if (ends.one_rim) return 1;
+  return rim_point(ends, 0, u_B).dot(n_B) < rim_point(ends, 1, u_B).dot(n_B) ? 0 : 1;
 }
 
 }  // namespace
 
-double rim_rise(const ContactSurface& surface, const Vec3& n_B) {
-  double projected = 0.0;
-  lowest_in_plane(n_B, projected);
-  return 2.0 * surface.radius * projected;
-}
-
-bool lies_flat_on_faces(const ContactSurface& surface) {
-  return surface.kind == ContactSurface::Kind::Circle ||
-         surface.kind == ContactSurface::Kind::Cylinder;
-}
-
 double contact_size(const ContactSurface& surface) {
+  if (surface.kind == ContactSurface::Kind::Sphere) return surface.radius;
   double size = 0.0;
-  switch (surface.kind) {
-    case ContactSurface::Kind::Polyhedron:
-      break;
-    case ContactSurface::Kind::Cone:
-      size = std::hypot(surface.radius, surface.rim_centre_B.norm());
-      break;
-    default:
-      return surface.radius;
+  if (is_round(surface)) {
+    const RoundEnds ends = round_ends(surface);
+    for (std::size_t k = 0; k < 2; ++k) {
+      size = std::max(size, std::hypot(ends.radius[k], ends.centre_B[k].norm()));
+    }
   }
   for (const Vec3& p : surface.vertices) size = std::max(size, p.norm());
   return size;
@@ -74,24 +59,13 @@ SupportPoint support_point(const PlaneContact& contact, const Vec3& r_G_W, const
     case ContactSurface::Kind::Sphere:
       support.p_GC_B = -s.radius * n_B;
       break;
-    case ContactSurface::Kind::Circle:
-    case ContactSurface::Kind::Cylinder: {
-      double projected = 0.0;
-      support.p_GC_B = s.radius * lowest_in_plane(n_B, projected);
-      if (s.kind == ContactSurface::Kind::Cylinder && std::abs(n_B.z()) > kLineContactTilt) {
-        // The end rim nearer the plane: z against the normal.
-        support.p_GC_B.z() = n_B.z() > 0.0 ? -s.half_length : s.half_length;
-      }
-      break;
-    }
     case ContactSurface::Kind::Polyhedron:
       support.p_GC_B = s.vertices[static_cast<std::size_t>(lowest_vertex(s, n_B))];
       break;
-    case ContactSurface::Kind::Cone: {
-      double projected = 0.0;
-      support.p_GC_B = apex_is_lowest(s, n_B)
-                           ? s.vertices[0]
-                           : Vec3(s.rim_centre_B + s.radius * lowest_in_plane(n_B, projected));
+    default: {
+      const RoundEnds ends = round_ends(s);
+      Vec3 u = Vec3::UnitX();
+      support.p_GC_B = rim_point(ends, lower_end(ends, n_B, u), u);
       break;
     }
   }
@@ -105,23 +79,21 @@ Vec3 support_rate_B(const PlaneContact& contact, const Vec3& n_B, const Vec3& om
   switch (s.kind) {
     case ContactSurface::Kind::Sphere:
       return -s.radius * n_rate_B;
-    case ContactSurface::Kind::Cone:
-      if (apex_is_lowest(s, n_B)) return Vec3::Zero();
-      [[fallthrough]];
-    case ContactSurface::Kind::Circle:
-    case ContactSurface::Kind::Cylinder: {
+    case ContactSurface::Kind::Polyhedron:
+      return Vec3::Zero();  // a vertex: fixed in the body
+    default: {
+      const RoundEnds ends = round_ends(s);
+      Vec3 u = Vec3::UnitX();
+      const double r = ends.radius[static_cast<std::size_t>(lower_end(ends, n_B, u))];
       double projected = 0.0;
-      const Vec3 u = lowest_in_plane(n_B, projected);
-      if (projected == 0.0) return Vec3::Zero();
+      lowest_in_plane(n_B, projected);
+      if (projected == 0.0 || r == 0.0) return Vec3::Zero();
       // u = -P n / |P n| with P the projection on x-y: u' = -(1 - u u^T) P n' / |P n|.
       const Vec3 projected_rate(n_rate_B.x(), n_rate_B.y(), 0.0);
       const Vec3 u_rate = -(projected_rate - u * u.dot(projected_rate)) / projected;
-      return s.radius * u_rate;
+      return r * u_rate;
     }
-    case ContactSurface::Kind::Polyhedron:
-      return Vec3::Zero();  // a vertex: fixed in the body
   }
-  return Vec3::Zero();
 }
 
 }  // namespace tumble

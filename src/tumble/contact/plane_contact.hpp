@@ -1,14 +1,14 @@
 #pragma once
 // A body touching a fixed plane (the ground, a ramp): the plane, the Coulomb and restitution
-// coefficients, and the part of the body's surface that can touch it. The surfaces are those
-// whose lowest point is one point that moves smoothly over the body as it turns:
-//  - a sphere or a shell (its centre at the COM);
-//  - a circle in the body's x-y plane about the z axis: the rim of a disk or a ring, a cylinder
-//    on one of its end rims;
-//  - a cylinder lying on its side touches along a line; the resultant of an even pressure on it
-//    acts at the line's middle, the lowest point of the circle z = 0.
-// For each the contact point is the lowest point of the surface (its support point in -n), and
-// it moves over the body at a rate that the rolling constraint needs (see support_rate_B).
+// coefficients, and the part of the body's surface that can touch it:
+//  - a sphere or a shell (its centre at the COM), whose lowest point moves smoothly over it as
+//    it turns;
+//  - a round body: a disk or ring, a cylinder or tube, a cone (round_contact.hpp), which touches
+//    at a rim point, along its side or on a face;
+//  - a polyhedron: a box, a plate, a mesh (contact_feature.hpp), which touches at a vertex,
+//    along an edge or on a face.
+// Apart, the contact point watched for touchdown is the surface's lowest point (its support
+// point in -n).
 #include <string>
 #include <vector>
 
@@ -16,16 +16,16 @@
 
 namespace tumble {
 
-// A polyhedron (a box, a plate, a mesh) touches a plane at its vertices: at one, along an edge
-// between two, or on a face (contact_feature.hpp); its support point is its lowest vertex.
-// A cone touches at its apex, at a point of its base's rim, along a line of its side or on its
-// base (cone_contact.hpp); its support point is the lower of its apex and its rim's lowest point.
+// A polyhedron's support point is its lowest vertex; a round body's, the lower of its two ends'
+// lowest rim points (round_contact.hpp).
 struct ContactSurface {
   enum class Kind { Sphere, Circle, Cylinder, Polyhedron, Cone } kind = Kind::Sphere;
   double radius = 0.0;               // m; a cone's base
   double half_length = 0.0;          // m, cylinder: the end rims are at z = +-half_length
   std::vector<Vec3> vertices;        // m, polyhedron: from the COM, body axes; a cone: its apex
   Vec3 rim_centre_B = Vec3::Zero();  // m, a cone's base centre (its rim about the z axis)
+  // m: a ring's or tube's end faces are annuli from this radius out (0: full disks)
+  double face_inner_radius = 0.0;
 };
 
 struct PlaneContact {
@@ -60,16 +60,8 @@ int lowest_vertex(const ContactSurface& surface, const Vec3& n_B);
 // flat (projection zero) has no lowest point, and x is returned.
 Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length);
 
-// A disk's, ring's or cylinder's rim (Circle, Cylinder): how far its highest point rises above its
-// lowest along the plane's normal, 2 r sin(tilt); zero where it lies flat on a face, which these
-// surface models do not resolve (its contact point would run round the rim ever faster).
-double rim_rise(const ContactSurface& surface, const Vec3& n_B);
-
-// Whether the surface is a rim that can lie flat on a face (rim_rise applies).
-bool lies_flat_on_faces(const ContactSurface& surface);
-
-// A length that sets the scale of the contact's tolerances: the surface's radius, or a
-// polyhedron's (a cone's) farthest vertex (or rim point) from the COM.
+// A length that sets the scale of the contact's tolerances: a sphere's radius, or a polyhedron's
+// (a round body's) farthest vertex (or rim point) from the COM.
 double contact_size(const ContactSurface& surface);
 
 }  // namespace tumble

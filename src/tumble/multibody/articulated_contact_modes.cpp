@@ -32,14 +32,17 @@ constexpr double kSlipFloor = 1e-3;
 // A grown slip that a step leaves below slip_zero stops this fraction of the time scale later
 // (the slip-stop event), unless it crosses zero first.
 constexpr double kSlipStopWait = 1e-6;
+// Where the slip's component along its direction vanishes (the slip-stop event), a slip left
+// within this many slip_zero (1e-6 of the speed scale) has stopped: in 3D it passes near zero,
+// not through it, turning faster than steps resolve, and would hover there, friction flipping.
+constexpr double kSlipStoppedNear = 1e3;
+// A slip that has been above that, and comes back within it to hover there (no smaller at the
+// end of a step than at its start), stops this fraction of the time scale later.
+constexpr double kHoverStopWait = 1e-9;
 // Settled landings that go apart at once, each within this fraction of the time scale of the
 // last, this many in a row: a cascade that would not end (docs/design.md, "Painleve").
 constexpr double kCascadeGap = 1e-6;
 constexpr int kCascadeLandings = 1000;
-// A disk, ring or cylinder whose rim rises less than this fraction of its size (a tilt of ~1e-3
-// rad) lies flat on a face, which is not modelled: nearer flat, its rim's contact point runs
-// round ever faster (as 1 / sin(tilt): Euler's disk), and steps shrink with it.
-constexpr double kFlatRise = 1e-3;
 // Touchdowns whose bounce would rise less than this fraction of the contact's size settle
 // (restitution 0): the cascade of ever smaller bounces ends after finitely many.
 constexpr double kSettleHeight = 1e-6;
@@ -57,9 +60,9 @@ double ArticulatedFormulation::support_margin_of(std::size_t c, int& side) const
   const ContactNow& now = contact_now_[c];
   const ContactStatus& status = contact_status_[c];
   const ContactSurface& surface = model_.contacts[c].surface;
-  if (status.cone_part != ConePart::None) {
-    return cone_support_margin(surface, status.cone_part, now.normal_points_B[1], now.reference_B,
-                               now.n_B, now.normal_force, now.moment_about_O_B, side);
+  if (status.round_part != RoundPart::None) {
+    return round_support_margin(surface, status.round_part, now.normal_points_B, now.reference_B,
+                                now.n_B, now.normal_force, now.moment_about_O_B, side);
   }
   return support_margin(status.feature, surface.vertices, now.n_B, now.normal_force,
                         now.moment_about_O_B, side);
@@ -117,23 +120,17 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
     const ContactStatus& status = contact_status_[c];
     const PlaneContact& contact = model_.contacts[c];
     g(base) = g(base + 1) = g(base + 2) = 1.0;
-    if (status.mode == ContactMode::Apart ||
-        contact.surface.kind == ContactSurface::Kind::Polyhedron ||
-        contact.surface.kind == ContactSurface::Kind::Cone) {
+    if (status.mode == ContactMode::Apart || contact.surface.kind != ContactSurface::Kind::Sphere) {
       // Height, but kept positive while the point is not approaching the plane: a bounce may
       // rise and land again within one step (its flight is a parabola, which a high-order method
       // steps over), and the height alone would not change sign between the impact (h = 0) and
       // the landing (h < 0); a polyhedron's vertices that just left the plane start at h = 0.
+      // Touching, a polyhedron or a round body watches the part that may land next.
       g(base) = now.support_normal_speed > -status.slip_zero
                     ? std::max(now.support.height, status.touching_height)
                     : now.support.height;
     }
     if (status.mode == ContactMode::Apart) continue;
-    // A disk, ring or cylinder on its rim: the rim's far side landing, the face flat (not
-    // modelled: the run stops there, saying so).
-    if (lies_flat_on_faces(contact.surface)) {
-      g(base) = rim_rise(contact.surface, now.n_B) - kFlatRise * contact_size(contact.surface);
-    }
     int side = -1;
     g(base + 1) = support_margin_of(c, side);
     if (status.mode == ContactMode::Sliding) {
@@ -153,14 +150,15 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
 bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
   time_now_ = t;
   bool refresh = false;
-  for (const ContactStatus& s : contact_status_) {
-    refresh |= s.mode == ContactMode::Sliding || s.cone_part == ConePart::Rim ||
-               s.cone_part == ConePart::Side;
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const ContactStatus& s = contact_status_[c];
+    refresh |=
+        s.mode == ContactMode::Sliding || holds_rim_point(model_.contacts[c].surface, s.round_part);
   }
   if (!refresh) return false;
   // The slip-stop event watches the slip's component along the direction it had at the start of
-  // the step: in 3D the slip may turn, and it stops where that component first vanishes. A cone's
-  // rim point leans towards where it was (cone_contact.hpp): that is kept up with it.
+  // the step: in 3D the slip may turn, and it stops where that component first vanishes. A round
+  // body's rim point leans towards where it was (round_contact.hpp): that is kept up with it.
   calc_kinematics(y, true);
   calc_contact_points();
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
@@ -172,13 +170,24 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
       status.slide_turn_W.setZero();  // the slip itself says where it goes
       status.slip_grown = true;
     }
-    const bool in_band =
-        status.mode == ContactMode::Sliding && status.slip_grown && slip <= status.slip_zero;
-    if (in_band && !status.slip_stop_armed) {
+    const bool sliding = status.mode == ContactMode::Sliding;
+    const double near = kSlipStoppedNear * status.slip_zero;
+    if (sliding && slip > near) status.slip_left_near = true;
+    const bool in_band = sliding && status.slip_grown && slip <= status.slip_zero;
+    // Back near zero and no smaller than a step ago: it hovers (friction flips it this way and
+    // that in steps ever shorter) instead of running straight into zero as a stop does.
+    const bool hovers = sliding && status.slip_left_near && slip <= near &&
+                        slip >= status.slip_last_step && !in_band;
+    if (hovers && !status.slip_stop_armed) {
+      status.slip_stop_by = t + kHoverStopWait * status.time_scale;
+    } else if (in_band && !status.slip_stop_armed) {
       status.slip_stop_by = t + kSlipStopWait * status.time_scale;
     }
-    status.slip_stop_armed = in_band;
-    if (status.cone_part == ConePart::Rim || status.cone_part == ConePart::Side) {
+    status.slip_stop_armed =
+        in_band || hovers ||
+        (status.slip_stop_armed && sliding && status.slip_left_near && slip <= near);
+    status.slip_last_step = sliding ? slip : 0.0;
+    if (holds_rim_point(model_.contacts[c].surface, status.round_part)) {
       status.rim_direction_B = rim_direction(contact_now_[c].n_B, status.rim_direction_B);
     }
   }
@@ -238,6 +247,7 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
     status.slide_direction_W = now.slip_W / slip;
     status.slide_turn_W.setZero();
     status.slip_grown = true;
+    status.slip_left_near = false;
     status.slip_stop_armed = false;
     solve_contacts_at(y);
   } else if (contact.friction > 0.0 && now.normal_force > 0.0 &&
@@ -257,19 +267,19 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
   const PlaneContact& contact = model_.contacts[c];
   const ContactMode before = status.mode;
   const int size_before = status.feature.size();
-  const ConePart part_before = status.cone_part;
+  const RoundPart part_before = status.round_part;
   const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
   const bool held = settle_on_candidates(c, t, y);
   if (!held) set_apart(c);
   const int size = status.feature.size();
-  if (status.mode == before && size == size_before && status.cone_part == part_before) return;
+  if (status.mode == before && size == size_before && status.round_part == part_before) return;
   std::string what = status.mode == ContactMode::Apart     ? "apart"
                      : status.mode == ContactMode::Sliding ? "slides"
                      : anchored(c)                         ? "sticks"
                                                            : "rolls";
   if (polyhedron && size > 0) what += fmt::format(" on {}", feature_name(size));
-  if (status.cone_part != ConePart::None)
-    what += fmt::format(" on {}", cone_part_name(status.cone_part));
+  if (status.round_part != RoundPart::None)
+    what += fmt::format(" on {}", round_part_name(contact.surface, status.round_part));
   note_contact(t, c, std::move(what));
 }
 
@@ -279,7 +289,7 @@ bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX&
   // The candidates, in order: the whole feature; a face's edges; its (or an edge's) vertices;
   // apart. The first whose forces are consistent is the one (for these few, enumerating them
   // solves the complementarity problem exactly).
-  if (status.cone_part != ConePart::None) return settle_cone(c, t, y);
+  if (status.round_part != RoundPart::None) return settle_round(c, t, y);
   touching_.assign(status.feature.polygon.begin(), status.feature.polygon.end());
   const int k = static_cast<int>(touching_.size());
   const int edges = k >= 3 ? k : 0;
@@ -305,32 +315,35 @@ bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX&
   return false;
 }
 
-bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
+bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
   ContactStatus& status = contact_status_[c];
-  const ContactSurface& cone = model_.contacts[c].surface;
-  touching_.clear();  // the cone's left-out points are named per candidate
+  const RoundEnds ends = round_ends(model_.contacts[c].surface);
+  touching_.clear();  // the round body's left-out points are named per candidate
   calc_kinematics(y, false);
   const Vec3 n_B =
       work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
-  const Vec3& apex = cone.vertices[0];
-  const Vec3 rim = cone.rim_centre_B + cone.radius * rim_direction(n_B, status.rim_direction_B);
+  const Vec3 u = rim_direction(n_B, status.rim_direction_B);
+  const std::array<Vec3, 2> end_points = {rim_point(ends, 0, u), rim_point(ends, 1, u)};
   const auto one = [](const Vec3& p) { return std::span<const Vec3>(&p, 1); };
-  switch (status.cone_part) {
-    case ConePart::Side:
+  const RoundPart part = status.round_part;
+  switch (part) {
+    case RoundPart::Side:
       if (settle_on_feature(c, t, y)) return true;
-      status.cone_part = ConePart::Apex;  // the rim point lifts
-      if (settle_on_feature(c, t, y, one(rim))) return true;
-      status.cone_part = ConePart::Rim;  // the apex lifts
-      return settle_on_feature(c, t, y, one(apex));
-    case ConePart::Base:
+      status.round_part = RoundPart::EndA;  // end B's rim point lifts
+      if (settle_on_feature(c, t, y, one(end_points[1]))) return true;
+      status.round_part = RoundPart::EndB;  // end A's lifts
+      return settle_on_feature(c, t, y, one(end_points[0]));
+    case RoundPart::FaceA:
+    case RoundPart::FaceB:
       if (settle_on_feature(c, t, y)) return true;
-      tip_cone(c, 0);  // onto the rim where the CoP went (the base's forces, in contact_now_)
-      return settle_on_feature(c, t, y, one(cone.rim_centre_B));
-    case ConePart::Apex:
-    case ConePart::Rim: {
+      tip_round(c, 0);  // onto the rim where the CoP went (the face's forces, in contact_now_)
+      return settle_on_feature(c, t, y, one(ends.centre_B[static_cast<std::size_t>(end_of(part))]));
+    case RoundPart::EndA:
+    case RoundPart::EndB: {
       // The other end, if it is at the plane too, must not go into it.
-      const Vec3 other = cone_other_end_B(c);
-      const bool at_plane = height_above_plane(c, other) <= status.touching_height;
+      Vec3 other = Vec3::Zero();
+      const bool at_plane =
+          round_other_end_B(c, other) && height_above_plane(c, other) <= status.touching_height;
       return settle_on_feature(c, t, y, at_plane ? one(other) : std::span<const Vec3>());
     }
     default:
@@ -338,24 +351,26 @@ bool ArticulatedFormulation::settle_cone(std::size_t c, double t, VecX& y) {
   }
 }
 
-Vec3 ArticulatedFormulation::cone_other_end_B(std::size_t c) const {
+bool ArticulatedFormulation::round_other_end_B(std::size_t c, Vec3& other_B) const {
   const ContactStatus& status = contact_status_[c];
-  const ContactSurface& cone = model_.contacts[c].surface;
-  if (status.cone_part == ConePart::Rim) return cone.vertices[0];
+  const RoundEnds ends = round_ends(model_.contacts[c].surface);
+  if (ends.one_rim) return false;
   const Vec3 n_B =
       work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
-  return cone.rim_centre_B + cone.radius * rim_direction(n_B, status.rim_direction_B);
+  const int other = status.round_part == RoundPart::EndA ? 1 : 0;
+  other_B = rim_point(ends, other, rim_direction(n_B, status.rim_direction_B));
+  return true;
 }
 
-void ArticulatedFormulation::tip_cone(std::size_t c, int side) {
+void ArticulatedFormulation::tip_round(std::size_t c, int side) {
   ContactStatus& status = contact_status_[c];
   const ContactNow& now = contact_now_[c];
-  if (status.cone_part == ConePart::Side) {
-    status.cone_part = side == 0 ? ConePart::Apex : ConePart::Rim;
-  } else if (status.cone_part == ConePart::Base) {
+  if (status.round_part == RoundPart::Side) {
+    status.round_part = side == 0 ? RoundPart::EndA : RoundPart::EndB;
+  } else if (is_face(status.round_part)) {
     status.rim_direction_B =
-        base_tip_direction(now.n_B, now.moment_about_O_B, status.rim_direction_B);
-    status.cone_part = ConePart::Rim;
+        face_tip_direction(now.n_B, now.moment_about_O_B, status.rim_direction_B);
+    status.round_part = end_of(status.round_part) == 0 ? RoundPart::EndA : RoundPart::EndB;
   }
 }
 
@@ -367,21 +382,22 @@ void ArticulatedFormulation::set_apart(std::size_t c) {
   status.feature.polygon.clear();  // keeps its reserved room
   status.feature.inward_B.clear();
   status.feature.spin_radius = 0.0;
-  status.cone_part = ConePart::None;
+  status.round_part = RoundPart::None;
 }
 
 bool ArticulatedFormulation::anchored(std::size_t c) const {
-  const ContactSurface::Kind kind = model_.contacts[c].surface.kind;
-  const ConePart part = contact_status_[c].cone_part;
-  return kind == ContactSurface::Kind::Polyhedron ||
-         (kind == ContactSurface::Kind::Cone && (part == ConePart::Apex || part == ConePart::Base));
+  const ContactSurface& surface = model_.contacts[c].surface;
+  const RoundPart part = contact_status_[c].round_part;
+  if (surface.kind == ContactSurface::Kind::Polyhedron || is_face(part)) return true;
+  // A point fixed in the body: a cone's apex (an end of radius 0).
+  return part == RoundPart::EndA && round_ends(surface).radius[0] == 0.0;
 }
 
-void ArticulatedFormulation::find_touching_cone_part(std::size_t c, double within, bool resting) {
+void ArticulatedFormulation::find_touching_round_part(std::size_t c, double within, bool resting) {
   const PlaneContact& contact = model_.contacts[c];
   ContactStatus& status = contact_status_[c];
   const Workspace& w = work_[slot_of_body_[contact.body]];
-  const ContactSurface& cone = contact.surface;
+  const RoundEnds ends = round_ends(contact.surface);
   const Vec3& n = contact.normal_W;
   const Vec3 n_B = w.R_WC.transpose() * n;
   const Vec3 omega_B = w.velocity.head<3>();
@@ -391,32 +407,40 @@ void ArticulatedFormulation::find_touching_cone_part(std::size_t c, double withi
     const bool not_leaving = normal_speed(c, p_B) <= status.slip_zero;
     return resting ? not_leaving : height <= status.touching_height || not_leaving;
   };
-  // The rim's lowest point; with the whole rim within `within` (the base nearly flat), the rim
-  // point moving down the fastest, which leads if the base tilts: a point C + r e has normal
+  // The rims' lowest points; with a whole rim within `within` (a face nearly flat), the rim
+  // point moving down the fastest, which leads if the face tilts: a point C + r e has normal
   // speed v_C.n + r e.(n x omega).
   double projected = 0.0;
   Vec3 u = lowest_in_plane(n_B, projected);
-  if (2.0 * cone.radius * projected <= within) {
+  const double widest = std::max(ends.radius[0], ends.radius[1]);
+  if (2.0 * widest * projected <= within) {
     const Vec3 tilting = n_B.cross(omega_B);
-    const Vec3 in_base(tilting.x(), tilting.y(), 0.0);
-    u = in_base.norm() > 0.0 ? Vec3(-in_base.normalized()) : status.rim_direction_B;
+    const Vec3 in_plane(tilting.x(), tilting.y(), 0.0);
+    u = in_plane.norm() > 0.0 ? Vec3(-in_plane.normalized()) : status.rim_direction_B;
   }
   status.rim_direction_B = u;
-  const bool rim = touches(cone.rim_centre_B + cone.radius * u);
-  const bool apex = touches(cone.vertices[0]);
-  if (rim && touches(cone.rim_centre_B - cone.radius * u)) {
-    status.cone_part = ConePart::Base;
-  } else if (rim) {
-    status.cone_part = apex ? ConePart::Side : ConePart::Rim;
-  } else if (apex) {
-    status.cone_part = ConePart::Apex;
+  // Per end: its lowest rim point touches; its whole face does (the far rim point too).
+  std::array<bool, 2> low{}, face{};
+  for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) {
+    const auto e = static_cast<std::size_t>(k);
+    low[e] = touches(rim_point(ends, k, u));
+    face[e] = low[e] && ends.radius[e] > 0.0 && touches(rim_point(ends, k, -u));
+  }
+  if (face[1]) {
+    status.round_part = RoundPart::FaceB;
+  } else if (face[0]) {
+    status.round_part = RoundPart::FaceA;
+  } else if (low[0] && low[1]) {
+    status.round_part = RoundPart::Side;
+  } else if (low[0] || low[1]) {
+    status.round_part = low[0] ? RoundPart::EndA : RoundPart::EndB;
   } else if (resting) {
-    status.cone_part = ConePart::None;
+    status.round_part = RoundPart::None;
   } else {
-    // A landing located to round-off is at the plane: at least the lower of the two.
-    const Vec3 rim_point = cone.rim_centre_B + cone.radius * u;
-    status.cone_part =
-        cone.vertices[0].dot(n_B) < rim_point.dot(n_B) ? ConePart::Apex : ConePart::Rim;
+    // A landing located to round-off is at the plane: at least the lower end.
+    const bool a_lower =
+        !ends.one_rim && rim_point(ends, 0, u).dot(n_B) < rim_point(ends, 1, u).dot(n_B);
+    status.round_part = a_lower ? RoundPart::EndA : RoundPart::EndB;
   }
 }
 
@@ -442,22 +466,18 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   ContactStatus& status = contact_status_[c];
   const Vec3& n = contact.normal_W;
   const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
-  const bool cone = contact.surface.kind == ContactSurface::Kind::Cone;
+  const bool round = is_round(contact.surface);
   calc_kinematics(y, true);
   calc_contact_points();
   const double vn_before = contact_now_[c].support_normal_speed;
-  if (lies_flat_on_faces(contact.surface) &&
-      rim_rise(contact.surface, contact_now_[c].n_B) <= kFlatRise * contact_size(contact.surface)) {
-    stop_on_flat_face(c, t);
-  }
   const Vec3 landing_B = contact_now_[c].support.p_GC_B;
   const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
   const double energy_before = kinetic_energy();
   // Vertices about to land with it (within the settling height) land together: a box falling
   // flat would otherwise rattle between its corners in ever shorter bounces.
   if (polyhedron) find_touching_vertices(c, status.landing_height);
-  if (cone) find_touching_cone_part(c, status.landing_height, false);
-  const ConePart landing_part = status.cone_part;
+  if (round) find_touching_round_part(c, status.landing_height, false);
+  const RoundPart landing_part = status.round_part;
   const Vec3 landing_rim_direction_B = status.rim_direction_B;
 
   // Newton's restitution on the normal motion, Coulomb on the tangential impulse: the impulse
@@ -471,7 +491,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   for (const double e : {settles ? 0.0 : contact.restitution, 0.0}) {
     if (polyhedron)
       make_feature(contact.surface.vertices, touching_, contact_now_[c].n_B, status.feature);
-    status.cone_part = landing_part;
+    status.round_part = landing_part;
     status.rim_direction_B = landing_rim_direction_B;
     for (int attempt = 0; attempt < 3; ++attempt) {
       calc_kinematics(y, true);
@@ -500,8 +520,8 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
         tip_onto_side(contact.surface.vertices, side, now.n_B, status.feature);
         continue;
       }
-      if (cone && support_margin_of(c, side) < 0.0 && side >= 0) {
-        tip_cone(c, side);
+      if (round && support_margin_of(c, side) < 0.0 && side >= 0) {
+        tip_round(c, side);
         continue;
       }
       break;
@@ -517,9 +537,10 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   calc_kinematics(y, true);
   const Workspace& w = work_[slot_of_body_[contact.body]];
   const double vn_after = normal_speed(c, landing_B);
-  const std::string on = polyhedron ? fmt::format(" on {}", feature_name(status.feature.size()))
-                         : cone     ? fmt::format(" on {}", cone_part_name(status.cone_part))
-                                    : std::string();
+  const std::string on =
+      polyhedron ? fmt::format(" on {}", feature_name(status.feature.size()))
+      : round    ? fmt::format(" on {}", round_part_name(contact.surface, status.round_part))
+                 : std::string();
   if (settles) {
     note_contact(t, c,
                  fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before));
@@ -529,9 +550,9 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       find_touching_vertices(c, status.touching_height);
       make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
     }
-    // A cone on what landed with it: its points within the landing height that the plastic
-    // impulse stopped (a base lands with its far side that high, not yet at the plane).
-    if (cone) find_touching_cone_part(c, status.landing_height, false);
+    // A round body on what landed with it: its points within the landing height that the
+    // plastic impulse stopped (a face lands with its far side that high, not yet at the plane).
+    if (round) find_touching_round_part(c, status.landing_height, false);
     classify_contact(c, t, y);
     check_landing_cascade(c, t, -vn_before);
     return;
@@ -539,10 +560,10 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   note_contact(t, c,
                fmt::format("impact{}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", on,
                            -vn_before, vn_after, -work));
-  if (cone) {
+  if (round) {
     // The part's points that did not bounce off stay on the plane.
-    find_touching_cone_part(c, status.touching_height, true);
-    if (status.cone_part == ConePart::None) {
+    find_touching_round_part(c, status.touching_height, true);
+    if (status.round_part == RoundPart::None) {
       set_apart(c);
       return;
     }
@@ -562,14 +583,6 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   }
   make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
   classify_contact(c, t, y);
-}
-
-void ArticulatedFormulation::stop_on_flat_face(std::size_t c, double t) const {
-  throw std::runtime_error(fmt::format(
-      "contact '{}': body '{}' comes to lie flat on a face at t = {:.9g} s; a disk, ring or "
-      "cylinder lying on a face is not modelled yet (a cone's base and a box's face are), so the "
-      "run stops here",
-      model_.contacts[c].name, model_.bodies[model_.contacts[c].body].name, t));
 }
 
 void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, double speed) {
@@ -598,9 +611,6 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
   ContactStatus& status = contact_status_[c];
   switch (event_index % 3) {
     case 0:  // touchdown
-      if (status.mode != ContactMode::Apart && lies_flat_on_faces(model_.contacts[c].surface)) {
-        stop_on_flat_face(c, t);
-      }
       impact(c, t, y);
       break;
     case 1: {  // support: lift-off, or the CoP at the feature's side
@@ -614,9 +624,11 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
         classify_contact(c, t, y);
         break;
       }
-      if (side >= 0 && status.cone_part != ConePart::None && contact_now_[c].normal_force > 0.0) {
-        tip_cone(c, side);
-        note_contact(t, c, fmt::format("tips onto {}", cone_part_name(status.cone_part)));
+      if (side >= 0 && status.round_part != RoundPart::None && contact_now_[c].normal_force > 0.0) {
+        tip_round(c, side);
+        note_contact(t, c,
+                     fmt::format("tips onto {}",
+                                 round_part_name(model_.contacts[c].surface, status.round_part)));
         classify_contact(c, t, y);
         break;
       }
@@ -629,7 +641,7 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
         calc_kinematics(y, true);
         calc_contact_points();
         const double slip = contact_now_[c].slip_W.norm();
-        if (slip > status.slip_zero) {
+        if (slip > kSlipStoppedNear * status.slip_zero) {
           // The slip turned away from the direction it had (3D); it did not stop.
           status.slide_direction_W = contact_now_[c].slip_W / slip;
           status.slide_turn_W.setZero();
@@ -638,6 +650,12 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
           break;
         }
         note_contact(t, c, "slip stops");
+        if (slip > status.slip_zero) {
+          // What is left of it goes: the least kinetic-energy change that leaves no slip.
+          status.mode = ContactMode::Rolling;
+          project(t, y);
+          status.mode = ContactMode::Sliding;
+        }
         classify_contact(c, t, y);
       } else {
         solve_contacts_at(y);
@@ -690,14 +708,6 @@ ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
                          model_.bodies[contact.body].name, -now.support.height)};
     }
     const double vn = now.support_normal_speed;
-    if (now.support.height <= scales.touching_height && lies_flat_on_faces(contact.surface) &&
-        rim_rise(contact.surface, now.n_B) <= kFlatRise * contact_size(contact.surface)) {
-      return ContactStartProblem{
-          c, fmt::format("body '{}' starts lying flat on a face: a disk, ring or cylinder on a "
-                         "face is not modelled yet (a cone's base and a box's face are); tilt it "
-                         "off the face, or start it above the plane",
-                         model_.bodies[contact.body].name)};
-    }
     if (now.support.height <= scales.touching_height && vn < -scales.slip_zero) {
       return ContactStartProblem{
           c, fmt::format("body '{}' starts touching the plane and moving into it at {:.6g} m/s; "
@@ -724,6 +734,7 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
     status.rim_direction_B = Vec3::UnitX();
     status.slide_direction_W = Vec3::UnitX();
     status.slip_grown = false;
+    status.slip_left_near = false;
     status.cascade_landings = 0;
     status.cascade_last_t = -std::numeric_limits<double>::infinity();
     status.slip_zero = scales.slip_zero;
@@ -747,8 +758,8 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
       make_feature(model_.contacts[c].surface.vertices, touching_, now.n_B,
                    contact_status_[c].feature);
     }
-    if (model_.contacts[c].surface.kind == ContactSurface::Kind::Cone) {
-      find_touching_cone_part(c, contact_status_[c].touching_height, false);
+    if (is_round(model_.contacts[c].surface)) {
+      find_touching_round_part(c, contact_status_[c].touching_height, false);
     }
     classify_contact(c, t0, y_start);
   }

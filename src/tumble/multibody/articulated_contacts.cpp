@@ -115,10 +115,10 @@ void ArticulatedFormulation::calc_contact_points() const {
     const ContactFeature& feature = status.feature;
     now.normal_point_rates_B.fill(Vec3::Zero());
     now.spin_radius = feature.spin_radius;
-    if (status.cone_part != ConePart::None) {
-      calc_cone_contact_points(c, omega_B);
+    if (status.round_part != RoundPart::None) {
+      calc_round_contact_points(c, omega_B);
     } else if (feature.size() == 0) {
-      // A curved surface, or a polyhedron or cone apart: its support point is the contact point.
+      // A sphere, or a polyhedron or round body apart: its support point is the contact point.
       now.support = support_point(contact, w.r_G_W, w.R_WC);
       now.reference_B = now.support.p_GC_B;
       now.reference_rate_B = support_rate_B(contact, now.n_B, omega_B);
@@ -162,50 +162,44 @@ void ArticulatedFormulation::calc_contact_points() const {
   }
 }
 
-void ArticulatedFormulation::calc_cone_contact_points(std::size_t c, const Vec3& omega_B) const {
+void ArticulatedFormulation::calc_round_contact_points(std::size_t c, const Vec3& omega_B) const {
   const PlaneContact& contact = model_.contacts[c];
   const ContactStatus& status = contact_status_[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
-  const ContactSurface& cone = contact.surface;
   ContactNow& now = contact_now_[c];
-  const ConePartPoints part =
-      cone_part_points(cone, status.cone_part, now.n_B, omega_B, status.rim_direction_B);
+  const RoundEnds ends = round_ends(contact.surface);
+  const RoundPartPoints part =
+      round_part_points(ends, status.round_part, now.n_B, omega_B, status.rim_direction_B);
   now.normal_points_B = part.points_B;
   now.normal_point_rates_B = part.rates_B;
   now.normal_point_count = part.count;
   now.reference_B = part.reference_B;
   now.reference_rate_B = part.reference_rate_B;
   now.spin_radius = part.spin_radius;
-  // Touchdown watches what may land next: on the apex, the rim's lowest point; on the rim, the
-  // apex, or the base: its highest rim point, 2 r sin(tilt) above the plane, lands with the rest
-  // of the rim within the landing height of it. (Nearer flat, a rim point that rolls or slides
-  // runs round the rim ever faster, as 1 / sin(tilt): Euler's disk.) On the side or the base:
-  // nothing.
-  const double height_of_COM = (w.r_G_W - contact.point_W).dot(contact.normal_W);
-  const Vec3& apex = cone.vertices[0];
-  double projected = 0.0;
-  const Vec3 lowest = lowest_in_plane(now.n_B, projected);
-  switch (status.cone_part) {
-    case ConePart::Apex:
-      now.support.p_GC_B = cone.rim_centre_B + cone.radius * lowest;
-      now.support.height = height_of_COM + now.support.p_GC_B.dot(now.n_B);
-      break;
-    case ConePart::Rim: {
-      const double base_height = 2.0 * cone.radius * projected - status.landing_height;
-      const double apex_height = height_of_COM + apex.dot(now.n_B);
-      if (apex_height <= base_height) {
-        now.support.p_GC_B = apex;
-        now.support.height = apex_height;
-      } else {
-        now.support.p_GC_B = cone.rim_centre_B - cone.radius * lowest;
-        now.support.height = base_height;
-      }
-      break;
-    }
-    default:
-      now.support.p_GC_B.setZero();
-      now.support.height = 1.0;  // nothing left to land
-      break;
+  // Touchdown watches what may land next, on one end's rim point (a cone's apex): the other
+  // end's lowest rim point, or this end's face: its highest rim point, 2 r sin(tilt) above the
+  // plane, lands with the rest of the rim within the landing height of it. (Nearer flat, a rim
+  // point that rolls or slides runs round the rim ever faster, as 1 / sin(tilt): Euler's disk.)
+  // On the side or a face: nothing (they tip onto a rim point first).
+  now.support.p_GC_B.setZero();
+  now.support.height = 1.0;  // nothing left to land
+  if (status.round_part != RoundPart::EndA && status.round_part != RoundPart::EndB) return;
+  const int end = end_of(status.round_part);
+  const double radius = ends.radius[static_cast<std::size_t>(end)];
+  // The rim point's direction u (part.points_B[0] = C + r u): the lowest point, to ~1e-12.
+  const Vec3& centre = ends.centre_B[static_cast<std::size_t>(end)];
+  const Vec3 u = radius > 0.0 ? Vec3((part.points_B[0] - centre) / radius)
+                              : rim_direction(now.n_B, status.rim_direction_B);
+  if (radius > 0.0) {
+    now.support.p_GC_B = rim_point(ends, end, -u);
+    now.support.height =
+        2.0 * radius * std::hypot(now.n_B.x(), now.n_B.y()) - status.landing_height;
+  }
+  if (ends.one_rim) return;
+  const Vec3 other = rim_point(ends, 1 - end, u);
+  const double other_height = height_above_plane(c, other);
+  if (radius == 0.0 || other_height <= now.support.height) {
+    now.support.p_GC_B = other;
+    now.support.height = other_height;
   }
 }
 
@@ -466,7 +460,8 @@ void turn_quaternion(VecX& y, Eigen::Index o, const Vec3& angle_B) {
 void ArticulatedFormulation::project_feature_positions(VecX& y) const {
   // The smallest move in the mass metric (the response to impulses along the rows) that puts the
   // normal points back on their planes, to first order (a face or an edge turns back flat as well
-  // as moving), and a sticking polyhedron (or cone on its apex or base) back on its anchor. A
+  // as moving), and a sticking polyhedron (a cone on its apex, a round body on a face) back on
+  // its anchor. A
   // curved surface's single point moves the least too.
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Position);
   for (Eigen::Index i = 0; i < count; ++i) {
@@ -514,10 +509,16 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
       std::any_of(contact_status_.begin(), contact_status_.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (!touching) return;
+  // A sphere's point, or a disk's, ring's or cylinder's rim point, is its support point: moving
+  // the body along the normal puts it back. A polyhedron, a cone, a side or a face has more.
   bool features = false;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const ContactSurface::Kind kind = model_.contacts[c].surface.kind;
-    features |= (kind == ContactSurface::Kind::Polyhedron || kind == ContactSurface::Kind::Cone) &&
+    const RoundPart part = contact_status_[c].round_part;
+    const bool rim_point =
+        (kind == ContactSurface::Kind::Circle || kind == ContactSurface::Kind::Cylinder) &&
+        (part == RoundPart::EndA || part == RoundPart::EndB);
+    features |= kind != ContactSurface::Kind::Sphere && !rim_point &&
                 contact_status_[c].mode != ContactMode::Apart;
   }
   if (features) {
@@ -532,7 +533,16 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
       if (contact_status_[c].mode == ContactMode::Apart) continue;
       const PlaneContact& contact = model_.contacts[c];
       const Workspace& w = work_[slot_of_body_[contact.body]];
-      const double height = support_point(contact, w.r_G_W, w.R_WC).height;
+      const RoundPart part = contact_status_[c].round_part;
+      double height = 0.0;
+      if (part == RoundPart::None) {
+        height = support_point(contact, w.r_G_W, w.R_WC).height;
+      } else {
+        // The rim point it touches at (not the other end's, which may be as low).
+        const Vec3 n_B = w.R_WC.transpose() * contact.normal_W;
+        const Vec3 u = rim_direction(n_B, contact_status_[c].rim_direction_B);
+        height = height_above_plane(c, rim_point(round_ends(contact.surface), end_of(part), u));
+      }
       y.segment<3>(tree_[slot_of_body_[contact.body]].q) -= height * contact.normal_W;
     }
   }

@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "tumble/contact/cone_contact.hpp"
 #include "tumble/contact/contact_feature.hpp"
 #include "tumble/contact/plane_contact.hpp"
+#include "tumble/contact/round_contact.hpp"
 
 #include "tumble/dynamics/formulation.hpp"
 #include "tumble/multibody/kinematic_tree.hpp"
@@ -129,9 +129,9 @@ class ArticulatedFormulation final : public Formulation {
   struct ContactStatus {
     ContactMode mode = ContactMode::Apart;
     ContactFeature feature;  // a polyhedron's touching vertex, edge or face (empty: apart)
-    ConePart cone_part = ConePart::None;  // a cone's touching part
-    // Where a cone's rim point was at the last step (body axes, unit): refreshed after each step,
-    // it fixes the rim point where the base is flat (cone_contact.hpp's rim_direction).
+    RoundPart round_part = RoundPart::None;  // a round body's touching part
+    // Where a round body's rim points were at the last step (body axes, unit): refreshed after
+    // each step, it fixes them where a face is flat (round_contact.hpp's rim_direction).
     Vec3 rim_direction_B = Vec3::UnitX();
     // Slip direction (slip_W's) while the slip speed is ~0.
     Vec3 slide_direction_W = Vec3::UnitX();
@@ -139,7 +139,9 @@ class ArticulatedFormulation final : public Formulation {
     // it) from slide_start_t on, until it is above slip_zero (articulated_slip_onset.cpp).
     Vec3 slide_turn_W = Vec3::Zero();
     double slide_start_t = 0.0;
-    bool slip_grown = false;  // the slip has been above slip_zero at the end of a step
+    bool slip_grown = false;      // the slip has been above slip_zero at the end of a step
+    bool slip_left_near = false;  // ... and above kSlipStoppedNear slip_zero
+    double slip_last_step = 0.0;  // m/s, sliding: the slip at the end of the last step
     // A grown slip left below slip_zero by the last step stops at slip_stop_by (s).
     bool slip_stop_armed = false;
     double slip_stop_by = 0.0;
@@ -152,9 +154,10 @@ class ArticulatedFormulation final : public Formulation {
     double touching_height = 0.0;  // m: nearer the plane counts as touching
     double landing_height = 0.0;   // m: vertices this near the plane land with a touchdown
     double time_scale = 0.0;       // s: the contact's size over its speed scale
-    // Where a polyhedron (a cone on its apex or base) sticks (mode rolling): the points its rows
-    // hold (a vertex or face centroid, or an edge's ends) and the body's orientation, so that
-    // projection keeps it exactly there rather than letting round-off walk it away.
+    // Where a polyhedron (a cone on its apex, a round body on a face) sticks (mode rolling): the
+    // points its rows hold (a vertex or face centroid, or an edge's ends) and the body's
+    // orientation, so that projection keeps it exactly there rather than letting round-off walk it
+    // away.
     std::array<Vec3, 2> anchor_W = {Vec3::Zero(), Vec3::Zero()};
     Mat3 anchor_R_WB = Mat3::Identity();
   };
@@ -232,8 +235,8 @@ class ArticulatedFormulation final : public Formulation {
   void apply_jumps_at(double t, VecX& y);
   // Contact points, reference points and their velocities, after calc_kinematics.
   void calc_contact_points() const;
-  // calc_contact_points for a touching cone: its part's points, and what may land next.
-  void calc_cone_contact_points(std::size_t contact, const Vec3& omega_B) const;
+  // calc_contact_points for a touching round body: its part's points, and what may land next.
+  void calc_round_contact_points(std::size_t contact, const Vec3& omega_B) const;
   // solve() with the contact forces of the current modes, after calc_kinematics and
   // accumulate_element_loads; fills contact_now_.
   void solve_with_contacts(double mode_time) const;
@@ -269,7 +272,8 @@ class ArticulatedFormulation final : public Formulation {
   // Jump the speeds by the impulses x_j along unknowns_[j].
   void apply_contact_impulses(Eigen::Index count, const VecX& impulses, double mode_time,
                               VecX& y) const;
-  // project()'s position step when a polyhedron or a cone touches (after calc_contact_points).
+  // project()'s position step when a polyhedron or a round body touches (after
+  // calc_contact_points).
   void project_feature_positions(VecX& y) const;
   // The current slip direction of a sliding contact (at time_now_).
   Vec3 slide_direction(std::size_t contact) const;
@@ -283,7 +287,7 @@ class ArticulatedFormulation final : public Formulation {
   // slip back (Painleve's case: friction high enough that it presses the contact on).
   bool start_sliding(std::size_t contact, double t, const VecX& y);
   // Where the rolling contact c cannot start sliding: it lifts off if, with no force, its points
-  // (a cone's other end too, if it is at the plane) leave the plane; if not, no mode is
+  // (a round body's other end too, if it is at the plane) leave the plane; if not, no mode is
   // consistent, and it slides along the pushed direction.
   void lift_off_or_hold_slide(std::size_t contact, double t, const VecX& y);
   // At the cone's edge: the rate the starting slip's direction turns at (into slide_turn_W);
@@ -313,22 +317,23 @@ class ArticulatedFormulation final : public Formulation {
   // Tries contact c on its current feature: sticking if the friction fits, else sliding; true
   // if the forces are consistent (N > 0, the CoP in the feature, no touching vertex left out
   // going into the plane). Touching vertices: touching_.
-  // A cone's candidates also name the points they leave out (left_out_B).
+  // A round body's candidates also name the points they leave out (left_out_B).
   bool settle_on_feature(std::size_t contact, double t, VecX& y,
                          std::span<const Vec3> left_out_B = {});
   // classify_contact's candidates for contact c (settle_on_feature on the feature, its edges,
-  // its vertices; settle_cone); true if one holds.
+  // its vertices; settle_round); true if one holds.
   bool settle_on_candidates(std::size_t contact, double t, VecX& y);
-  // classify_contact for a cone: its touching part, then (if that is inconsistent) the parts it
-  // may tip onto: the side onto its apex or its rim point, the base onto the rim point where its
-  // CoP left. True if one holds.
-  bool settle_cone(std::size_t contact, double t, VecX& y);
-  // A cone on its apex: its rim's lowest point; on its rim point: its apex (after
-  // calc_kinematics).
-  Vec3 cone_other_end_B(std::size_t contact) const;
-  // A cone on its side or base tips onto the end of the side (support margin's side 0: the apex,
-  // 1: the rim point), or the base's rim point where the CoP leaves it (after a solve).
-  void tip_cone(std::size_t contact, int side);
+  // classify_contact for a round body: its touching part, then (if that is inconsistent) the
+  // parts it may tip onto: the side onto either end's rim point, a face onto the rim point where
+  // its CoP left. True if one holds.
+  bool settle_round(std::size_t contact, double t, VecX& y);
+  // A round body on one end's rim point (a cone's apex): the other end's lowest rim point, into
+  // other_B; false for a disk or ring, whose ends are one rim (after calc_kinematics).
+  bool round_other_end_B(std::size_t contact, Vec3& other_B) const;
+  // A round body on its side or a face tips onto the end of the side (support margin's side 0:
+  // end A's rim point, 1: end B's), or the face's rim point where the CoP leaves it (after a
+  // solve).
+  void tip_round(std::size_t contact, int side);
   void set_apart(std::size_t contact);
   // The acceleration along the plane's normal of the body's material point p_B (after a solve).
   double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
@@ -338,17 +343,15 @@ class ArticulatedFormulation final : public Formulation {
   double normal_speed(std::size_t contact, const Vec3& p_B) const;
   // A polyhedron that starts sticking: its anchor where it is now (after calc_contact_points).
   void anchor_contact(std::size_t contact);
-  // Whether contact c, sticking, is held at an anchor: a polyhedron, a cone on its apex or base
-  // (the parts fixed in the body); rolling parts move over the body and are not.
+  // Whether contact c, sticking, is held at an anchor: a polyhedron, a cone on its apex, a round
+  // body on a face (the parts fixed in the body); rolling parts move over the body and are not.
   bool anchored(std::size_t contact) const;
-  // The part of a cone contact that touches (into its status, after calc_kinematics): the base
-  // if its whole rim is within `within` of the plane, else the side if the apex and the rim's
-  // lowest point are, else the one that is (at least the lower). A point counts if it is at the
-  // plane, or within `within` and not moving away; with `resting`, only if not moving away.
-  void find_touching_cone_part(std::size_t contact, double within, bool resting);
+  // The part of a round body that touches (into its status, after calc_kinematics): a face if
+  // its whole rim is within `within` of the plane, else the side if both ends' lowest rim points
+  // are, else the end that is (at least the lower). A point counts if it is at the plane, or
+  // within `within` and not moving away; with `resting`, only if not moving away.
+  void find_touching_round_part(std::size_t contact, double within, bool resting);
   void impact(std::size_t contact, double t, VecX& y);
-  // Throws std::runtime_error: contact c's disk, ring or cylinder lies flat on a face at t.
-  [[noreturn]] void stop_on_flat_face(std::size_t contact, double t) const;
   // After a settled landing at `speed`: throws std::runtime_error where such landings have
   // come kCascadeLandings in a row, each going apart at once (no consistent mode).
   void check_landing_cascade(std::size_t contact, double t, double speed);

@@ -40,6 +40,7 @@ bool ArticulatedFormulation::start_sliding(std::size_t c, double t, const VecX& 
   status.slide_turn_W.setZero();
   status.slide_start_t = t;
   status.slip_grown = false;
+  status.slip_left_near = false;
   status.slip_stop_armed = false;
   const Vec3 a = slip_acceleration_at(c, y, d0);
   if (model_.contacts[c].friction == 0.0) return true;  // nothing can drive it back
@@ -112,9 +113,10 @@ void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, con
   for (int k = 0; k < now.normal_point_count; ++k) {
     points_B[count++] = now.normal_points_B[static_cast<std::size_t>(k)];
   }
-  if (status.cone_part == ConePart::Apex || status.cone_part == ConePart::Rim) {
-    const Vec3 other = cone_other_end_B(c);
-    if (height_above_plane(c, other) <= status.touching_height) points_B[count++] = other;
+  Vec3 other = Vec3::Zero();
+  if ((status.round_part == RoundPart::EndA || status.round_part == RoundPart::EndB) &&
+      round_other_end_B(c, other) && height_above_plane(c, other) <= status.touching_height) {
+    points_B[count++] = other;
   }
   set_apart(c);
   solve_contacts_at(y);

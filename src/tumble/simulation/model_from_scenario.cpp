@@ -23,12 +23,15 @@ ContactSurface contact_surface(const Shape& shape) {
     case ShapeKind::Ring:
       surface.kind = ContactSurface::Kind::Circle;
       surface.radius = shape.radius;
+      // A ring lying flat touches along its rim only (its face's torsional friction).
+      if (shape.kind == ShapeKind::Ring) surface.face_inner_radius = shape.radius;
       break;
     case ShapeKind::Cylinder:
     case ShapeKind::Tube:
       surface.kind = ContactSurface::Kind::Cylinder;
       surface.radius = shape.kind == ShapeKind::Tube ? shape.outer_radius : shape.radius;
       surface.half_length = shape.length / 2;
+      if (shape.kind == ShapeKind::Tube) surface.face_inner_radius = shape.inner_radius;
       break;
     case ShapeKind::Box:
     case ShapeKind::Plate: {

@@ -1,0 +1,187 @@
+#include "tumble/contact/round_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tumble {
+
+namespace {
+
+// How much the rim direction leans towards the last one known, against the projection of n_B
+// on the ends' plane (the sine of the ends' tilt from the plane).
+constexpr double kRimLean = 1e-12;
+
+// The unnormalised rim direction: the projection's opposite, leaning towards `previous`.
+Vec3 leaning_direction(const Vec3& n_B, const Vec3& previous_B) {
+  return Vec3(-n_B.x(), -n_B.y(), 0.0) + kRimLean * previous_B;
+}
+
+// The mean distance from the centre of an even pressure on a face: 2r/3 on a disk, r on a ring,
+// (2/3)(r^3 - q^3)/(r^2 - q^2) on an annulus of inner radius q.
+double face_spin_radius(double r, double q) {
+  if (!(q > 0.0)) return 2.0 * r / 3.0;
+  if (q >= r) return r;
+  return 2.0 * (r * r * r - q * q * q) / (3.0 * (r * r - q * q));
+}
+
+}  // namespace
+
+bool is_round(const ContactSurface& surface) {
+  return surface.kind == ContactSurface::Kind::Circle ||
+         surface.kind == ContactSurface::Kind::Cylinder ||
+         surface.kind == ContactSurface::Kind::Cone;
+}
+
+RoundEnds round_ends(const ContactSurface& surface) {
+  RoundEnds ends;
+  ends.face_inner_radius = surface.face_inner_radius;
+  switch (surface.kind) {
+    case ContactSurface::Kind::Cone:
+      ends.centre_B = {surface.vertices[0], surface.rim_centre_B};
+      ends.radius = {0.0, surface.radius};
+      break;
+    case ContactSurface::Kind::Cylinder:
+      ends.centre_B = {Vec3(0.0, 0.0, -surface.half_length), Vec3(0.0, 0.0, surface.half_length)};
+      ends.radius = {surface.radius, surface.radius};
+      break;
+    default:  // a disk or ring: one rim about the COM
+      ends.radius = {surface.radius, surface.radius};
+      ends.one_rim = true;
+      break;
+  }
+  return ends;
+}
+
+int end_of(RoundPart part) {
+  return part == RoundPart::EndA || part == RoundPart::FaceA ? 0 : 1;
+}
+
+bool is_face(RoundPart part) {
+  return part == RoundPart::FaceA || part == RoundPart::FaceB;
+}
+
+bool holds_rim_point(const ContactSurface& surface, RoundPart part) {
+  return part == RoundPart::Side || part == RoundPart::EndB ||
+         (part == RoundPart::EndA && round_ends(surface).radius[0] > 0.0);
+}
+
+Vec3 rim_direction(const Vec3& n_B, const Vec3& previous_B) {
+  const Vec3 w = leaning_direction(n_B, previous_B);
+  const double length = w.norm();
+  return length > 0.0 ? Vec3(w / length) : previous_B;
+}
+
+void rim_direction_and_rate(const Vec3& n_B, const Vec3& omega_B, const Vec3& previous_B, Vec3& u_B,
+                            Vec3& u_rate_B) {
+  // u = w / |w| with w = -P n + lean: u' = (1 - u u^T) w' / |w|, w' = -P n', n' = n x omega.
+  const Vec3 w = leaning_direction(n_B, previous_B);
+  const double length = w.norm();
+  if (!(length > 0.0)) {
+    u_B = previous_B;
+    u_rate_B.setZero();
+    return;
+  }
+  u_B = w / length;
+  const Vec3 n_rate = n_B.cross(omega_B);
+  const Vec3 w_rate(-n_rate.x(), -n_rate.y(), 0.0);
+  u_rate_B = (w_rate - u_B * u_B.dot(w_rate)) / length;
+}
+
+Vec3 rim_point(const RoundEnds& ends, int k, const Vec3& u_B) {
+  const auto i = static_cast<std::size_t>(k);
+  return ends.centre_B[i] + ends.radius[i] * u_B;
+}
+
+RoundPartPoints round_part_points(const RoundEnds& ends, RoundPart part, const Vec3& n_B,
+                                  const Vec3& omega_B, const Vec3& rim_direction_B) {
+  RoundPartPoints p;
+  Vec3 u = Vec3::UnitX(), u_rate = Vec3::Zero();
+  if (!is_face(part)) rim_direction_and_rate(n_B, omega_B, rim_direction_B, u, u_rate);
+  const int k = end_of(part);
+  const auto r = ends.radius[static_cast<std::size_t>(k)];
+  switch (part) {
+    case RoundPart::None:
+    case RoundPart::EndA:
+    case RoundPart::EndB:
+      p.points_B[0] = rim_point(ends, k, u);
+      p.rates_B[0] = r * u_rate;
+      p.count = 1;
+      break;
+    case RoundPart::Side:
+      for (std::size_t e = 0; e < 2; ++e) {
+        p.points_B[e] = rim_point(ends, static_cast<int>(e), u);
+        p.rates_B[e] = ends.radius[e] * u_rate;
+      }
+      p.count = 2;
+      p.reference_B = 0.5 * (p.points_B[0] + p.points_B[1]);
+      p.reference_rate_B = 0.5 * (p.rates_B[0] + p.rates_B[1]);
+      p.spin_radius = 0.25 * (p.points_B[1] - p.points_B[0]).norm();  // mean |x| on [-L/2, L/2]
+      return p;
+    case RoundPart::FaceA:
+    case RoundPart::FaceB:
+      for (std::size_t j = 0; j < 3; ++j) {
+        const double angle =
+            std::numbers::pi / 2 + 2 * std::numbers::pi * static_cast<double>(j) / 3;
+        p.points_B[j] = rim_point(ends, k, Vec3(std::cos(angle), std::sin(angle), 0.0));
+      }
+      p.count = 3;
+      p.reference_B = ends.centre_B[static_cast<std::size_t>(k)];
+      p.spin_radius = face_spin_radius(r, ends.face_inner_radius);
+      return p;
+  }
+  p.reference_B = p.points_B[0];
+  p.reference_rate_B = p.rates_B[0];
+  return p;
+}
+
+double round_support_margin(const ContactSurface& surface, RoundPart part,
+                            const std::array<Vec3, 3>& points_B, const Vec3& O_B, const Vec3& n_B,
+                            double N, const Vec3& M_O_B, int& side) {
+  side = -1;
+  // N (c - O) = n x M_O for the resultant's CoP c (contact_feature.hpp's support_margin).
+  const Vec3 N_offset = n_B.cross(M_O_B);
+  if (is_face(part)) {
+    side = 0;
+    const RoundEnds ends = round_ends(surface);
+    return N * ends.radius[static_cast<std::size_t>(end_of(part))] - N_offset.norm();
+  }
+  if (part != RoundPart::Side) return N;
+  const Vec3 N_c = N_offset + N * O_B;
+  const Vec3& a = points_B[0];
+  const Vec3& b = points_B[1];
+  const Vec3 along = (b - a).normalized();
+  const double at_a = along.dot(N_c - N * a);
+  const double at_b = -along.dot(N_c - N * b);
+  side = at_a <= at_b ? 0 : 1;
+  return std::min(at_a, at_b);
+}
+
+Vec3 face_tip_direction(const Vec3& n_B, const Vec3& M_O_B, const Vec3& otherwise_B) {
+  const Vec3 N_offset = n_B.cross(M_O_B);
+  const Vec3 in_face(N_offset.x(), N_offset.y(), 0.0);
+  const double length = in_face.norm();
+  return length > 0.0 ? Vec3(in_face / length) : otherwise_B;
+}
+
+const char* round_part_name(const ContactSurface& surface, RoundPart part) {
+  const bool cone = surface.kind == ContactSurface::Kind::Cone;
+  const bool cylinder = surface.kind == ContactSurface::Kind::Cylinder;
+  switch (part) {
+    case RoundPart::EndA:
+      return cone ? "its apex" : cylinder ? "its -z rim" : "its rim";
+    case RoundPart::EndB:
+      return cylinder ? "its +z rim" : "its rim";
+    case RoundPart::Side:
+      return "its side";
+    case RoundPart::FaceA:
+      return cylinder ? "its -z face" : "its face";
+    case RoundPart::FaceB:
+      return cone ? "its base" : cylinder ? "its +z face" : "its face";
+    case RoundPart::None:
+      break;
+  }
+  return "nothing";
+}
+
+}  // namespace tumble

@@ -32,6 +32,8 @@ constexpr double kSlipFloor = 1e-3;
 // A grown slip that a step leaves below slip_zero stops this fraction of the time scale later
 // (the slip-stop event), unless it crosses zero first.
 constexpr double kSlipStopWait = 1e-6;
+// A rim point's direction is kept up with, step by step, where its tilt's sine is below this.
+constexpr double kRimKeptUpTilt = 1e-2;
 // Where the slip's component along its direction vanishes (the slip-stop event), a slip left
 // within this many slip_zero (1e-6 of the speed scale) has stopped: in 3D it passes near zero,
 // not through it, turning faster than steps resolve, and would hover there, friction flipping.
@@ -152,8 +154,7 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
   bool refresh = false;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const ContactStatus& s = contact_status_[c];
-    refresh |=
-        s.mode == ContactMode::Sliding || holds_rim_point(model_.contacts[c].surface, s.round_part);
+    refresh |= s.mode == ContactMode::Sliding || rim_direction_kept_up(c);
   }
   if (!refresh) return false;
   // The slip-stop event watches the slip's component along the direction it had at the start of
@@ -187,11 +188,20 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
         in_band || hovers ||
         (status.slip_stop_armed && sliding && status.slip_left_near && slip <= near);
     status.slip_last_step = sliding ? slip : 0.0;
-    if (holds_rim_point(model_.contacts[c].surface, status.round_part)) {
+    if (rim_direction_kept_up(c)) {
       status.rim_direction_B = rim_direction(contact_now_[c].n_B, status.rim_direction_B);
     }
   }
   return true;
+}
+
+bool ArticulatedFormulation::rim_direction_kept_up(std::size_t c) const {
+  // Only near flat does the lean towards the last direction count (round_contact.hpp); above
+  // kRimKeptUpTilt it moves the rim point by less than 1e-10 of the radius, so the direction is
+  // kept up with only there (judged by the last evaluation's normal in body axes).
+  const Vec3& n_B = contact_now_[c].n_B;
+  return holds_rim_point(model_.contacts[c].surface, contact_status_[c].round_part) &&
+         std::hypot(n_B.x(), n_B.y()) < kRimKeptUpTilt;
 }
 
 void ArticulatedFormulation::note_contact(double t, std::size_t contact, std::string what) {

@@ -335,6 +335,9 @@ class ArticulatedFormulation final : public Formulation {
   // solve).
   void tip_round(std::size_t contact, int side);
   void set_apart(std::size_t contact);
+  // Whether contact c holds a rim point near flat, where its direction is kept up with after
+  // each step.
+  bool rim_direction_kept_up(std::size_t contact) const;
   // The acceleration along the plane's normal of the body's material point p_B (after a solve).
   double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
   // The height above the plane of the body's point p_B, and its material velocity along the

@@ -272,7 +272,7 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
   return consistent();
 }
 
-void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) {
+void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y, bool always_note) {
   ContactStatus& status = contact_status_[c];
   const PlaneContact& contact = model_.contacts[c];
   const ContactMode before = status.mode;
@@ -282,7 +282,9 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y) 
   const bool held = settle_on_candidates(c, t, y);
   if (!held) set_apart(c);
   const int size = status.feature.size();
-  if (status.mode == before && size == size_before && status.round_part == part_before) return;
+  const bool same =
+      status.mode == before && size == size_before && status.round_part == part_before;
+  if (same && !always_note) return;
   std::string what = status.mode == ContactMode::Apart     ? "apart"
                      : status.mode == ContactMode::Sliding ? "slides"
                      : anchored(c)                         ? "sticks"
@@ -563,7 +565,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
     // A round body on what landed with it: its points within the landing height that the
     // plastic impulse stopped (a face lands with its far side that high, not yet at the plane).
     if (round) find_touching_round_part(c, status.landing_height, false);
-    classify_contact(c, t, y);
+    classify_contact(c, t, y, true);  // the impact set the part: say what holds it
     check_landing_cascade(c, t, -vn_before);
     return;
   }

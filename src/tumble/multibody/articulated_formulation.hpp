@@ -314,7 +314,8 @@ class ArticulatedFormulation final : public Formulation {
   // The mode a touching contact takes now (slip stopped, touchdown settled, start): rolling or
   // sticking if the friction that needs fits in the cone, else sliding the way the body is
   // pushed; a polyhedron tips onto a smaller feature while its CoP would leave the feature.
-  void classify_contact(std::size_t contact, double t, VecX& y);
+  // Notes the mode if it changed (or, with always_note, in any case).
+  void classify_contact(std::size_t contact, double t, VecX& y, bool always_note = false);
   // Tries contact c on its current feature: sticking if the friction fits, else sliding; true
   // if the forces are consistent (N > 0, the CoP in the feature, no touching vertex left out
   // going into the plane). Touching vertices: touching_.

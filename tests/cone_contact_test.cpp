@@ -285,5 +285,48 @@ TEST(ConeDropped, ASquatConeRockingOntoItsBaseComesToRestThere) {
   }
 }
 
+TEST(ConeTumbling, ItsApexLandsWhereItFirstReachesThePlaneThoughADipLastsLessThanAStep) {
+  // No gravity: the cone turns steadily at w about a transverse principal axis, its COM at rest a
+  // depth less than the apex's reach ha = 3h/4 above the floor. The apex's height is
+  // d - ha sin(w t): it reaches the floor at t = asin(d / ha) / w at the speed w sqrt(ha^2 - d^2),
+  // and without the floor would dip through it for 2 acos(d / ha) / w (0.02 to 0.0006 s here). A
+  // steady turn is smooth, so the method's steps span more than that (a whole dip can lie inside
+  // one); the landing is found all the same, to the event location's round-off.
+  const Cone& cone = kCones[0];
+  const double ha = 0.75 * cone.h;
+  for (const double w : {10.0, 40.0}) {
+    for (const double depth : {1e-3, 1e-5}) {
+      const double d = ha - depth;
+      const std::string yaml = fmt::format(
+          "tumble: 1\n"
+          "gravity: [0, 0, 0]\n"
+          "bodies:\n"
+          "  cone: {{{}, position: [0, 0, {}],\n"
+          "          orientation: {{axis: [1, 0, 0], angle: 90 deg}}, angular_velocity: [{}, 0, "
+          "0]}}\n"
+          "contacts:\n"
+          "  - {{name: floor, type: plane, body: cone, plane: {{point: [0, 0, 0], normal: [0, 0, "
+          "1]}},\n"
+          "      friction: 0.5, restitution: 0.5}}\n"
+          "simulate: {{duration: {}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
+          "output_every: {}}}\n",
+          cone_keys(cone), d, w, 4 / w, 0.04 / w);
+      const auto run = run_inline_scenario(yaml, "tumbling");
+      SCOPED_TRACE(fmt::format("w {} rad/s, depth {} m", w, depth));
+      ASSERT_FALSE(run.contact_events.empty());
+      const double t_land = std::asin(d / ha) / w;
+      EXPECT_NEAR(run.contact_events[0].t, t_land, 1e-9 * t_land);
+      const std::string& what = run.contact_events[0].what;
+      EXPECT_EQ(what.rfind("impact on its apex: normal speed ", 0), 0u) << what;
+      EXPECT_NEAR(
+          std::stod(what.substr(what.find("speed ") + 6)) / (w * std::sqrt(ha * ha - d * d)), 1.0,
+          5e-4);  // the message's 4 digits
+      // Never through the floor: every row's apex at or above it.
+      for (const Row& row : run.rows) EXPECT_GE(apex_W(row, cone).z(), -1e-9) << "t = " << row.t;
+      test::expect_energy_never_rises(run, 1e-8);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tumble

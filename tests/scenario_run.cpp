@@ -25,6 +25,7 @@ ScenarioRun run_scenario(Scenario scenario) {
     run.contact_events = a->contact_events();
   }
   run.bodies = simulation.formulation->model().bodies;
+  run.contacts = simulation.formulation->model().contacts;
   return run;
 }
 

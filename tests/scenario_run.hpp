@@ -27,7 +27,8 @@ struct ScenarioRun {
   SimulationResult result;
   std::vector<JumpRecord> jumps;  // articulated systems only
   std::vector<ContactEventRecord> contact_events;
-  std::vector<RigidBody> bodies;  // the model's, as the run integrated them
+  std::vector<RigidBody> bodies;       // the model's, as the run integrated them
+  std::vector<PlaneContact> contacts;  // the model's
 };
 
 // The file goes into a directory of the running test's own: ctest runs tests in parallel.

@@ -87,7 +87,7 @@ StepOutcome Dopri5::step(double t_stop) {
   const double rtol = control_.rtol;
   const double threshold = control_.atol / rtol;
   const double h_min = step_control::minimum_step(t_);
-  double h_abs = std::min(h_max_, std::max(h_min, h_));
+  double h_abs = std::min({h_max_, std::max(h_min, step_bound_), std::max(h_min, h_)});
   bool rejected_before = false;
 
   for (;;) {

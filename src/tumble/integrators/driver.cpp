@@ -114,6 +114,7 @@ void drive(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
   bool stopped_by_event = false;
   while (integrator.t() < t_end) {
     const double t_stop = std::min(t_end, system.next_breakpoint(integrator.t()));
+    integrator.bound_next_step(system.step_limit(integrator.t(), integrator.y()));
     const StepOutcome outcome = integrator.step(t_stop);
     if (outcome != StepOutcome::Ok) {
       report.failure =

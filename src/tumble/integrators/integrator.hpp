@@ -3,6 +3,7 @@
 // never past a stop time the driver gives it (an output time is NOT a stop: outputs come from the
 // continuous extension), and can evaluate the state anywhere inside its last step. The driver
 // (driver.hpp) builds outputs, event location, breakpoints and jumps on these three calls.
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -46,6 +47,10 @@ class Integrator {
   // One accepted step that ends at or before t_stop (and lands on it exactly if it would pass).
   virtual StepOutcome step(double t_stop) = 0;
 
+  // Bounds the next step's length (s; +infinity: no bound) for an adaptive method, on top of its
+  // error control and max_step; a fixed-step method ignores it.
+  void bound_next_step(double h_abs) { step_bound_ = h_abs; }
+
   // The state at t in [t_previous(), t()] from the method's continuous extension.
   virtual void dense_output(double t, VecX& y_out) const = 0;
 
@@ -61,6 +66,7 @@ class Integrator {
   double t_ = 0.0;
   double t_previous_ = 0.0;
   double h_ = 0.0;
+  double step_bound_ = std::numeric_limits<double>::infinity();  // see bound_next_step
   VecX y_;
   VecX y_previous_;
   // mutable: a lazy continuous extension (dop853) evaluates f inside the const dense_output()

@@ -43,6 +43,10 @@ EventAction OdeSystem::on_event(std::size_t /*event_index*/, double /*t*/, VecX&
   return EventAction::Record;
 }
 
+double OdeSystem::step_limit(double /*t*/, const VecX& /*y*/) const {
+  return std::numeric_limits<double>::infinity();
+}
+
 double OdeSystem::next_breakpoint(double /*t*/) const {
   return std::numeric_limits<double>::infinity();
 }

@@ -63,6 +63,11 @@ class OdeSystem {
   // evaluates g again.
   virtual bool refresh_event_functions(double t, const VecX& y);
 
+  // The longest step (s) the method may take from (t, y), or +infinity: what the event functions
+  // could not see from the ends of a longer step (a dip through zero and back) is kept out of
+  // it. Adaptive methods honour it; fixed-step methods keep their step.
+  virtual double step_limit(double t, const VecX& y) const;
+
   // The first time strictly after t at which f is discontinuous (a force switching on, an
   // impulse, a lock), or +infinity. The driver lands a step exactly on it, calls at_breakpoint
   // (which may change y, e.g. apply an impulse, and switches the mode of f), and restarts the

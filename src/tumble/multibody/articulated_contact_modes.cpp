@@ -48,6 +48,10 @@ constexpr int kCascadeLandings = 1000;
 // Touchdowns whose bounce would rise less than this fraction of the contact's size settle
 // (restitution 0): the cascade of ever smaller bounces ends after finitely many.
 constexpr double kSettleHeight = 1e-6;
+// Impacts at one instant on one contact, at most: each takes energy out (or none, elastic), and
+// an impulse on one vertex drives another into the plane less each time.
+constexpr int kImpactRounds = 100;
+
 // An impact's work counts as none (not a gain) within this fraction of the kinetic energy: an
 // elastic impact's is zero up to round-off.
 constexpr double kWorkRoundOff = 1e-12;
@@ -85,9 +89,17 @@ Vec3 ArticulatedFormulation::friction_demand(std::size_t c) const {
   return now.friction_W + (now.moment_about_O_B.dot(now.n_B) / rho) * n;
 }
 
+bool ArticulatedFormulation::lands_with(std::size_t c, double height, double normal_speed) const {
+  // Not moving away from the plane; or at it (a landing located to round-off), unless it leaves
+  // faster than a settling touchdown lands: that point has just bounced off, and an impulse or a
+  // contact that held it there would take its bounce.
+  const ContactStatus& status = contact_status_[c];
+  return normal_speed <= status.slip_zero ||
+         (height <= status.touching_height && normal_speed <= status.settle_speed);
+}
+
 void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within) const {
   const PlaneContact& contact = model_.contacts[c];
-  const ContactStatus& status = contact_status_[c];
   const Workspace& w = work_[slot_of_body_[contact.body]];
   const Vec3& n = contact.normal_W;
   touching_.clear();
@@ -95,14 +107,59 @@ void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within
     const Vec3& p = contact.surface.vertices[i];
     const double height = height_above_plane(c, p);
     if (height > within) continue;
-    if (height <= status.touching_height || normal_speed(c, p) <= status.slip_zero) {
-      touching_.push_back(static_cast<int>(i));
-    }
+    if (lands_with(c, height, normal_speed(c, p))) touching_.push_back(static_cast<int>(i));
   }
   // At least the lowest vertex (a landing located to round-off is at the plane).
   if (touching_.empty()) {
     touching_.push_back(lowest_vertex(contact.surface, w.R_WC.transpose() * n));
   }
+}
+
+double ArticulatedFormulation::watched_height(std::size_t c, double height,
+                                              double normal_speed) const {
+  // The height, but kept positive while the point is at the plane (within the landing height)
+  // and not moving into it: a bounce may rise and land again within one step (its flight is a
+  // parabola, which a high-order method steps over), and the height alone would not change sign
+  // between the impact (h = 0) and the landing (h < 0); a polyhedron's vertices that just left
+  // the plane start at h = 0. Right after an event, whatever it left at the plane counts as not
+  // yet landed, however it moves (a contact that lifts off, with round-off of normal speed, may
+  // turn straight back): the event function must start above zero to see it cross. A point
+  // deeper than the landing height has crossed the plane, even if it now rises (a tumbling
+  // body's end that dipped through it and is turning back at the end of a step; step_limit keeps
+  // a whole dip from fitting inside one).
+  const ContactStatus& status = contact_status_[c];
+  const bool at_plane = height >= -status.landing_height;
+  const bool after_event = time_now_ == last_event_t_;
+  return at_plane && (normal_speed > -status.slip_zero || after_event)
+             ? std::max(height, status.touching_height)
+             : height;
+}
+
+double ArticulatedFormulation::landing_watch(std::size_t c, Vec3& landing_B) const {
+  // Every point that may land first: a polyhedron's vertices (the lowest may be leaving the plane
+  // while another comes down through it), a round body's ends' lowest rim points, a sphere's
+  // lowest point.
+  const PlaneContact& contact = model_.contacts[c];
+  const ContactNow& now = contact_now_[c];
+  double least = std::numeric_limits<double>::infinity();
+  const auto watch = [&](const Vec3& p_B) {
+    const double g = watched_height(c, height_above_plane(c, p_B), normal_speed(c, p_B));
+    if (g < least) {
+      least = g;
+      landing_B = p_B;
+    }
+  };
+  if (contact.surface.kind == ContactSurface::Kind::Polyhedron) {
+    for (const Vec3& p : contact.surface.vertices) watch(p);
+  } else if (is_round(contact.surface)) {
+    const RoundEnds ends = round_ends(contact.surface);
+    double projected = 0.0;
+    const Vec3 u = lowest_in_plane(now.n_B, projected);
+    for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) watch(rim_point(ends, k, u));
+  } else {
+    watch(now.support.p_GC_B);
+  }
+  return least;
 }
 
 void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) const {
@@ -122,15 +179,13 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
     const ContactStatus& status = contact_status_[c];
     const PlaneContact& contact = model_.contacts[c];
     g(base) = g(base + 1) = g(base + 2) = 1.0;
-    if (status.mode == ContactMode::Apart || contact.surface.kind != ContactSurface::Kind::Sphere) {
-      // Height, but kept positive while the point is not approaching the plane: a bounce may
-      // rise and land again within one step (its flight is a parabola, which a high-order method
-      // steps over), and the height alone would not change sign between the impact (h = 0) and
-      // the landing (h < 0); a polyhedron's vertices that just left the plane start at h = 0.
-      // Touching, a polyhedron or a round body watches the part that may land next.
-      g(base) = now.support_normal_speed > -status.slip_zero
-                    ? std::max(now.support.height, status.touching_height)
-                    : now.support.height;
+    // Apart, the point nearest to landing; touching, a polyhedron or a round body watches the
+    // part that may land next.
+    Vec3 landing_B = Vec3::Zero();
+    if (status.mode == ContactMode::Apart) {
+      g(base) = landing_watch(c, landing_B);
+    } else if (contact.surface.kind != ContactSurface::Kind::Sphere) {
+      g(base) = watched_height(c, now.support.height, now.support_normal_speed);
     }
     if (status.mode == ContactMode::Apart) continue;
     int side = -1;
@@ -416,8 +471,8 @@ void ArticulatedFormulation::find_touching_round_part(std::size_t c, double with
   const auto touches = [&](const Vec3& p_B) {
     const double height = height_above_plane(c, p_B);
     if (height > within) return false;
-    const bool not_leaving = normal_speed(c, p_B) <= status.slip_zero;
-    return resting ? not_leaving : height <= status.touching_height || not_leaving;
+    const double speed = normal_speed(c, p_B);
+    return resting ? speed <= status.slip_zero : lands_with(c, height, speed);
   };
   // The rims' lowest points; with a whole rim within `within` (a face nearly flat), the rim
   // point moving down the fastest, which leads if the face tilts: a point C + r e has normal
@@ -481,8 +536,10 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   const bool round = is_round(contact.surface);
   calc_kinematics(y, true);
   calc_contact_points();
-  const double vn_before = contact_now_[c].support_normal_speed;
-  const Vec3 landing_B = contact_now_[c].support.p_GC_B;
+  // The point that landed: apart, the one the event watched (not always the lowest).
+  Vec3 landing_B = contact_now_[c].support.p_GC_B;
+  if (status.mode == ContactMode::Apart) landing_watch(c, landing_B);
+  const double vn_before = normal_speed(c, landing_B);
   const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
   const double energy_before = kinetic_energy();
   // Vertices about to land with it (within the settling height) land together: a box falling
@@ -497,10 +554,18 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   // with mu of it against the slip). A polyhedron lands on every vertex at the plane; if the
   // impulse's centre would leave that feature, it lands on the smaller feature there. Should the
   // impulse add energy (it can, where rotation couples normal and tangential motion), the impact
-  // is taken as plastic (e = 0), which never does.
+  // is taken as plastic (e = 0). Should a plastic sliding impulse still add energy (its friction,
+  // held along the slip before it, can drive the slip the other way: a box landing on an edge
+  // while it tumbles), it is taken plastic and frictionless, which never does (the normal rows'
+  // velocities go to zero: -v.W^-1 v / 2 of kinetic energy) and lies in the cone.
+  struct ImpactLaw {
+    double e;
+    bool friction;
+  };
+  const ImpactLaw laws[] = {{settles ? 0.0 : contact.restitution, true}, {0.0, true}, {0.0, false}};
   double work = 0.0;
   Eigen::Index count = 0;
-  for (const double e : {settles ? 0.0 : contact.restitution, 0.0}) {
+  for (const ImpactLaw& law : laws) {
     if (polyhedron)
       make_feature(contact.surface.vertices, touching_, contact_now_[c].n_B, status.feature);
     status.round_part = landing_part;
@@ -509,22 +574,29 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       calc_kinematics(y, true);
       calc_contact_points();
       const ContactNow& now = contact_now_[c];
-      count = append_contact_unknowns(c, ContactMode::Rolling, ContactRows::Projection,
-                                      Vec3::Zero(), 0);
       const auto solve_for_restitution = [&] {
         for (Eigen::Index i = 0; i < count; ++i) {
           const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
-          contact_x_(i) = -(row.normal ? 1.0 + e : 1.0) * row_velocity(row);
+          contact_x_(i) = -(row.normal ? 1.0 + law.e : 1.0) * row_velocity(row);
         }
         calc_contact_matrix(count, schedule_time_);
         solve_contact_system(count, contact_x_);
         set_contact_resultants(count, contact_x_);  // the impulse, as a force would be
       };
-      solve_for_restitution();
-      if (!(friction_demand(c).norm() <= contact.friction * now.normal_force)) {
-        const double slip = now.slip_W.norm();
-        const Vec3 slide = slip > 0.0 ? Vec3(now.slip_W / slip) : pushed_direction(c);
-        count = append_contact_unknowns(c, ContactMode::Sliding, ContactRows::Motion, slide, 0);
+      if (law.friction) {
+        count = append_contact_unknowns(c, ContactMode::Rolling, ContactRows::Projection,
+                                        Vec3::Zero(), 0);
+        solve_for_restitution();
+        if (!(friction_demand(c).norm() <= contact.friction * now.normal_force)) {
+          const double slip = now.slip_W.norm();
+          const Vec3 slide = slip > 0.0 ? Vec3(now.slip_W / slip) : pushed_direction(c);
+          count = append_contact_unknowns(c, ContactMode::Sliding, ContactRows::Motion, slide, 0);
+          solve_for_restitution();
+        }
+      } else {
+        // Sliding's rows for projection: the normal ones, with no friction on them.
+        count = append_contact_unknowns(c, ContactMode::Sliding, ContactRows::Projection,
+                                        Vec3::Zero(), 0);
         solve_for_restitution();
       }
       int side = -1;
@@ -619,11 +691,21 @@ void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, doub
 
 EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, VecX& y) {
   time_now_ = t;
+  last_event_t_ = -std::numeric_limits<double>::infinity();  // until it is handled
   const std::size_t c = event_index / 3;
   ContactStatus& status = contact_status_[c];
   switch (event_index % 3) {
     case 0:  // touchdown
       impact(c, t, y);
+      // Left apart with a point at the plane moving into it (the impulse on one vertex of an
+      // edge can drive the other down), it lands again at once, rather than a step later.
+      for (int round = 1; round < kImpactRounds && status.mode == ContactMode::Apart; ++round) {
+        calc_kinematics(y, true);
+        calc_contact_points();
+        Vec3 p_B = Vec3::Zero();
+        if (landing_watch(c, p_B) > 0.0 || !(normal_speed(c, p_B) < -status.slip_zero)) break;
+        impact(c, t, y);
+      }
       break;
     case 1: {  // support: lift-off, or the CoP at the feature's side
       solve_contacts_at(y);
@@ -665,6 +747,7 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
         if (slip > status.slip_zero) {
           // What is left of it goes: the least kinetic-energy change that leaves no slip.
           status.mode = ContactMode::Rolling;
+          anchor_contact(c);  // held where it is now, not where it last stuck
           project(t, y);
           status.mode = ContactMode::Sliding;
         }
@@ -679,6 +762,7 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
       }
       break;
   }
+  last_event_t_ = t;
   return EventAction::Jump;
 }
 
@@ -732,6 +816,7 @@ ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
 
 void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
   contact_events_.clear();
+  last_event_t_ = -std::numeric_limits<double>::infinity();
   if (model_.contacts.empty()) return;
   calc_kinematics(y, true);  // the bodies' states set the scales
   VecX y_start = y;          // classifying may project it; the run starts from y itself

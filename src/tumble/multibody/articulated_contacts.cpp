@@ -547,16 +547,25 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
     }
   }
   // Velocities: the least kinetic-energy change (impulses at the contacts) that zeroes the
-  // velocity along each mode's constraints.
+  // velocity along each mode's constraints. Those impulses do work, which goes into each
+  // contact's ledger entry like an impact's: after a step it is the drift's, ~rtol; after an
+  // event it can be a point that the mode now holds coming down onto the plane (a cone landing
+  // on its apex, whose rim then comes down too: held on the side, the rim's approach is stopped).
   calc_kinematics(y, true);
   calc_contact_points();
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Projection);
   for (Eigen::Index i = 0; i < count; ++i) {
     contact_x_(i) = -row_velocity(unknowns_[static_cast<std::size_t>(i)]);
   }
+  contact_rhs_.head(count) = contact_x_.head(count);  // minus each row's velocity before
   calc_contact_matrix(count, schedule_time_);
   solve_contact_system(count, contact_x_);
   apply_contact_impulses(count, contact_x_, schedule_time_, y);
+  // An impulse P on a row whose velocity goes from v to 0 does P v / 2 of work.
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const std::size_t c = unknowns_[static_cast<std::size_t>(i)].contact;
+    y(ledger_ + contact_entry(c)) -= 0.5 * contact_x_(i) * contact_rhs_(i);
+  }
 }
 
 }  // namespace tumble

@@ -20,6 +20,7 @@
 // to unit forces; project() puts positions and velocities back on the constraints after every
 // step. Touchdowns are impacts (restitution and friction on the impulse).
 #include <array>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -85,6 +86,9 @@ class ArticulatedFormulation final : public Formulation {
   // constraints (no normal velocity; rolling: no slip).
   void project(double t, VecX& y) const override;
   bool refresh_event_functions(double t, const VecX& y) override;
+  // While a contact is apart: no step so long that a point of its surface could dip through the
+  // plane and back unseen (contact/landing_bound.hpp).
+  double step_limit(double t, const VecX& y) const override;
   const std::vector<ContactEventRecord>& contact_events() const { return contact_events_; }
   // Why the bodies cannot start where the scenario puts them (a contact inside its plane, or
   // touching it and moving into it), if they cannot.
@@ -346,6 +350,14 @@ class ArticulatedFormulation final : public Formulation {
   // plane's normal (after calc_kinematics).
   double height_above_plane(std::size_t contact, const Vec3& p_B) const;
   double normal_speed(std::size_t contact, const Vec3& p_B) const;
+  // Whether a point at this height (within the landing height) moving at this normal speed lands
+  // with the one that touches down.
+  bool lands_with(std::size_t contact, double height, double normal_speed) const;
+  // What the touchdown event sees of a point at this height moving at this normal speed.
+  double watched_height(std::size_t contact, double height, double normal_speed) const;
+  // Apart: the touchdown event's value, the least watched height over the points that may land
+  // first, and the point that sets it (after calc_contact_points).
+  double landing_watch(std::size_t contact, Vec3& landing_B) const;
   // A polyhedron that starts sticking: its anchor where it is now (after calc_contact_points).
   void anchor_contact(std::size_t contact);
   // Whether contact c, sticking, is held at an anchor: a polyhedron, a cone on its apex, a round
@@ -389,6 +401,8 @@ class ArticulatedFormulation final : public Formulation {
   VecX onset_y_, onset_dydt_;          // scratch of turn_starting_slip()
   // The time of the state being evaluated: a starting slip's direction turns with it.
   mutable double time_now_ = 0.0;
+  // The time of the last event handled, once on_event is done (watched_height).
+  double last_event_t_ = -std::numeric_limits<double>::infinity();
   // Scratch of derivative() and the other const queries, sized once here: no allocation per call.
   mutable std::vector<Workspace> work_;
   mutable std::vector<BodyState> states_;

@@ -1,0 +1,98 @@
+#include "tumble/contact/landing_bound.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tumble/contact/round_contact.hpp"
+
+namespace tumble {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// The first t > 0 with c + b t - A t^2 / 2 = 0, for c > 0 (the height above the depth), b its
+// rate, A >= 0; in the form that keeps its digits when b^2 >> A c. A point already deeper has
+// crossed the plane where the event functions see it: it sets no bound.
+double first_root(double c, double b, double A) {
+  if (!(c > 0.0)) return kNever;
+  const double denominator = -b + std::sqrt(b * b + 2.0 * A * c);
+  return denominator > 0.0 ? 2.0 * c / denominator : kNever;
+}
+
+// The circle's lowest point carried along by the velocity field, less A t^2 / 2, plus the depth:
+// concave in t.
+struct CircleHeight {
+  double centre_height, centre_rate;  // its centre's height (plus the depth) and normal speed
+  double a0, a1, b0, b1;              // n.e1(t) = a0 + a1 t, n.e2(t) = b0 + b1 t
+  double radius, turning;
+  double operator()(double t) const {
+    return centre_height + centre_rate * t - radius * std::hypot(a0 + a1 * t, b0 + b1 * t) -
+           0.5 * turning * t * t;
+  }
+};
+
+double circle_time(const CircleHeight& f) {
+  if (!(f(0.0) > 0.0)) return kNever;  // as first_root
+  // A lower bound on the root, from |(a, b)(t)| <= |(a0, b0)| + t |(a1, b1)|: below it f > 0.
+  double lo = first_root(f(0.0), f.centre_rate - f.radius * std::hypot(f.a1, f.b1), f.turning);
+  if (!std::isfinite(lo)) return kNever;
+  double hi = 2.0 * lo;
+  for (int doubling = 0; f(hi) > 0.0; ++doubling) {
+    if (doubling == 64) return lo;  // f keeps above zero this long (no turning, not approaching)
+    lo = hi;
+    hi *= 2.0;
+  }
+  // A step bound needs no more than a few digits; lo keeps f > 0.
+  while (hi - lo > 1e-3 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) > 0.0 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+double time_to_reach_depth(const PlaneContact& contact, const SurfaceMotion& motion, double turning,
+                           double depth) {
+  const Vec3& n = contact.normal_W;
+  const ContactSurface& surface = contact.surface;
+  const auto height_of = [&](const Vec3& x_W) { return n.dot(x_W - contact.point_W) + depth; };
+  const auto point_time = [&](const Vec3& p_B) {
+    const Vec3 r_W = motion.R_WB * p_B;
+    const Vec3 v_W = motion.v_G_W + motion.omega_W.cross(r_W);
+    return first_root(height_of(motion.r_G_W + r_W), n.dot(v_W), turning);
+  };
+  if (surface.kind == ContactSurface::Kind::Sphere) {
+    // Turning moves no point of a sphere lower: its lowest point is its centre's less r.
+    return first_root(height_of(motion.r_G_W) - surface.radius, n.dot(motion.v_G_W), turning);
+  }
+  if (surface.kind == ContactSurface::Kind::Polyhedron) {
+    double t = kNever;
+    for (const Vec3& p : surface.vertices) t = std::min(t, point_time(p));
+    return t;
+  }
+  const RoundEnds ends = round_ends(surface);
+  const Vec3 e1 = motion.R_WB.col(0), e2 = motion.R_WB.col(1);
+  double t = kNever;
+  for (std::size_t k = ends.one_rim ? 1 : 0; k < 2; ++k) {
+    if (ends.radius[k] == 0.0) {  // a cone's apex
+      t = std::min(t, point_time(ends.centre_B[k]));
+      continue;
+    }
+    const Vec3 c_W = motion.R_WB * ends.centre_B[k];
+    const CircleHeight f{height_of(motion.r_G_W + c_W),
+                         n.dot(motion.v_G_W + motion.omega_W.cross(c_W)),
+                         n.dot(e1),
+                         n.dot(motion.omega_W.cross(e1)),
+                         n.dot(e2),
+                         n.dot(motion.omega_W.cross(e2)),
+                         ends.radius[k],
+                         turning};
+    t = std::min(t, circle_time(f));
+  }
+  return t;
+}
+
+}  // namespace tumble

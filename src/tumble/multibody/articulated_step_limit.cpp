@@ -1,0 +1,53 @@
+// The longest step the contacts allow (docs/design.md, "Contact"): while a contact is apart, its
+// touchdown event sees the heights of the surface's points only at the ends of steps, so no step
+// may be long enough for a point to reach the landing height below the plane and come back.
+#include <algorithm>
+#include <limits>
+
+#include "tumble/contact/landing_bound.hpp"
+#include "tumble/contact/plane_contact.hpp"
+#include "tumble/multibody/articulated_formulation.hpp"
+
+namespace tumble {
+
+namespace {
+
+// The bound on how fast a point's normal velocity turns towards the plane is taken at the start
+// of the step. Its rotational part (alpha x r + omega x (omega x r)) turns with the body within
+// a step the bound allows; this factor covers that. The COM's acceleration into the plane is
+// gravity's, exact, plus loads that change little over such a step: taken as it is, so that a
+// falling body's step ends near its landing rather than well short of it.
+constexpr double kTurningMargin = 2.0;
+
+}  // namespace
+
+double ArticulatedFormulation::step_limit(double t, const VecX& y) const {
+  double limit = std::numeric_limits<double>::infinity();
+  const bool any_apart =
+      std::any_of(contact_status_.begin(), contact_status_.end(),
+                  [](const ContactStatus& s) { return s.mode == ContactMode::Apart; });
+  if (!any_apart) return limit;
+  time_now_ = t;
+  solve_contacts_at(y);  // the accelerations, for how fast the points' normal velocities turn
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    if (contact_status_[c].mode != ContactMode::Apart) continue;
+    const PlaneContact& contact = model_.contacts[c];
+    const Workspace& w = work_[slot_of_body_[contact.body]];
+    const Vec3& n = contact.normal_W;
+    const SurfaceMotion motion{w.r_G_W, w.R_WC, w.R_WC * w.velocity.tail<3>(),
+                               w.R_WC * w.velocity.head<3>()};
+    const Vec3 a_G_W = moving_point_acceleration_W(w, Vec3::Zero(), Vec3::Zero());
+    // A point r from the COM: n . (a_G + alpha x r + omega x (omega x r)) >= -turning; a
+    // sphere's lowest point does not move with its turning.
+    const double reach =
+        contact.surface.kind == ContactSurface::Kind::Sphere ? 0.0 : contact_size(contact.surface);
+    const double turning =
+        std::max(0.0, -n.dot(a_G_W)) +
+        kTurningMargin * (w.acceleration.head<3>().norm() + motion.omega_W.squaredNorm()) * reach;
+    limit = std::min(
+        limit, time_to_reach_depth(contact, motion, turning, contact_status_[c].landing_height));
+  }
+  return limit;
+}
+
+}  // namespace tumble

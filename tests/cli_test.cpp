@@ -171,6 +171,27 @@ TEST(Cli, FailedIntegrationLeavesAValidPartialCsvAndExitsFour) {
   EXPECT_LT(std::stod(rows.back()[0]), 20.0);
 }
 
+TEST(Cli, ARunStoppedByASignalLeavesNoPartialFile) {
+  // A run far longer than the half second it is given, stopped by SIGTERM, then by SIGINT (as
+  // Ctrl-C does): it ends by the signal, and neither its CSV nor a temporary file is left.
+  const fs::path dir = fresh_dir("stopped");
+  const fs::path p = write_file(dir, "long.yaml",
+                                "tumble: 1\n"
+                                "gravity: [0, 0, 0]\n"
+                                "bodies:\n"
+                                "  b: {shape: box, size: [4, 1, 2], mass: 12,"
+                                " angular_velocity: [0, 0.01, 1]}\n"
+                                "simulate: {duration: 1000000, rtol: 1e-10, output_every: 1000}\n");
+  for (const char* signal_name : {"TERM", "INT"}) {
+    const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string(),
+                                       std::string("timeout -s ") + signal_name + " 0.5 ");
+    EXPECT_EQ(r.status, 124) << signal_name << ": " << r.out;  // timeout's: it was stopped
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      EXPECT_EQ(entry.path().filename(), "long.yaml") << signal_name << " left " << entry.path();
+    }
+  }
+}
+
 TEST(Cli, UnwritableOutputDirectoryExitsFive) {
   const CommandResult r =
       run_tumble("run " + example("tumbling_prism.yaml") + " --out /proc/no_such_dir");

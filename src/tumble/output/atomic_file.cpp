@@ -1,23 +1,86 @@
 #include "tumble/output/atomic_file.hpp"
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 
 namespace tumble {
 
+namespace {
+
+// The temporary files being written, for the signal handler: a run stopped by Ctrl-C or a kill
+// removes them as a failed one does (only unlink(), which is async-signal-safe, runs there).
+constexpr std::size_t kLiveFiles = 8;
+constexpr std::size_t kPathBytes = 4096;
+char g_live_paths[kLiveFiles][kPathBytes];
+volatile std::sig_atomic_t g_live[kLiveFiles] = {};
+constexpr std::array<int, 3> kStopSignals = {SIGINT, SIGTERM, SIGHUP};
+
+extern "C" void remove_partial_files(int signal_number) {
+  for (std::size_t i = 0; i < kLiveFiles; ++i) {
+    if (g_live[i] != 0) ::unlink(g_live_paths[i]);
+  }
+  // Then end as the signal would have: the caller sees the same status.
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+// Installs the handler for the stop signals whose action is still the default (a command that
+// handles them itself, as the video export does while its child runs, is left alone).
+void install_handler_once() {
+  static const bool installed = [] {
+    for (const int signal_number : kStopSignals) {
+      struct sigaction current {};
+      ::sigaction(signal_number, nullptr, &current);
+      if (current.sa_handler != SIG_DFL) continue;
+      struct sigaction action {};
+      action.sa_handler = remove_partial_files;
+      sigemptyset(&action.sa_mask);
+      ::sigaction(signal_number, &action, nullptr);
+    }
+    return true;
+  }();
+  (void)installed;
+}
+
+// The slot the path now holds, or kLiveFiles if none is free or the path is too long (then a
+// stop leaves that file behind, as before).
+std::size_t hold_for_signals(const std::filesystem::path& path) {
+  const std::string& text = path.native();
+  if (text.size() >= kPathBytes) return kLiveFiles;
+  for (std::size_t i = 0; i < kLiveFiles; ++i) {
+    if (g_live[i] != 0) continue;
+    std::memcpy(g_live_paths[i], text.c_str(), text.size() + 1);
+    g_live[i] = 1;
+    return i;
+  }
+  return kLiveFiles;
+}
+
+void release_for_signals(std::size_t slot) {
+  if (slot < kLiveFiles) g_live[slot] = 0;
+}
+
+}  // namespace
+
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
   // A name unique to this process, so two runs writing the same destination do not collide.
   temporary_ = path_;
   temporary_ += fmt::format(".partial-{}", static_cast<long>(::getpid()));
+  install_handler_once();
   file_ = std::fopen(temporary_.c_str(), "wb");
   if (file_ == nullptr) {
     throw std::runtime_error(
         fmt::format("cannot write {}: {}", path_.string(), std::generic_category().message(errno)));
   }
+  signal_slot_ = hold_for_signals(temporary_);
 }
 
 AtomicFile::~AtomicFile() {
@@ -26,6 +89,7 @@ AtomicFile::~AtomicFile() {
     std::error_code ignored;
     std::filesystem::remove(temporary_, ignored);
   }
+  release_for_signals(signal_slot_);
 }
 
 void AtomicFile::finish() {
@@ -41,6 +105,8 @@ void AtomicFile::finish() {
     throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(), error.message()));
   }
   renamed_ = true;
+  release_for_signals(signal_slot_);  // a stop from here finds no temporary file to remove
+  signal_slot_ = kLiveFiles;
 }
 
 }  // namespace tumble

@@ -1,7 +1,8 @@
 #pragma once
 // An output file that appears only when complete: it is written under a temporary name beside
 // its destination (same file system, so the final rename is atomic) and renamed by finish();
-// destroyed unfinished, it removes the temporary file and leaves nothing behind.
+// destroyed unfinished, it removes the temporary file and leaves nothing behind. A run stopped by
+// SIGINT, SIGTERM or SIGHUP while it writes removes the temporary file too.
 #include <cstdio>
 #include <filesystem>
 #include <span>
@@ -32,6 +33,7 @@ class AtomicFile {
   std::filesystem::path temporary_;
   std::FILE* file_ = nullptr;
   bool renamed_ = false;
+  std::size_t signal_slot_ = static_cast<std::size_t>(-1);  // none: the stop handler's entry
 };
 
 }  // namespace tumble

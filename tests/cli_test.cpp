@@ -40,6 +40,16 @@ fs::path write_file(const fs::path& dir, const std::string& name, const std::str
   return p;
 }
 
+// The chapter's prism, spun near its intermediate axis with no gravity, with `simulate` keys.
+std::string tumbling_box(const std::string& simulate) {
+  return "tumble: 1\n"
+         "gravity: [0, 0, 0]\n"
+         "bodies:\n"
+         "  b: {shape: box, size: [4, 1, 2], mass: 12, angular_velocity: [0, 0.01, 1]}\n"
+         "simulate: " +
+         simulate + "\n";
+}
+
 std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
   std::vector<std::vector<std::string>> rows;
   std::ifstream in(p);
@@ -154,13 +164,8 @@ TEST(Cli, InvalidScenarioExitsWithStatusThreeAndFileLineColumnKey) {
 // leaves a valid CSV of the rows it reached.
 TEST(Cli, FailedIntegrationLeavesAValidPartialCsvAndExitsFour) {
   const fs::path dir = fresh_dir("failed");
-  const fs::path p = write_file(dir, "short.yaml",
-                                "tumble: 1\n"
-                                "gravity: [0, 0, 0]\n"
-                                "bodies:\n"
-                                "  b: {shape: box, size: [4, 1, 2], mass: 12,"
-                                " angular_velocity: [0, 0.01, 1]}\n"
-                                "simulate: {duration: 20, rtol: 1e-10, max_steps: 25}\n");
+  const fs::path p =
+      write_file(dir, "short.yaml", tumbling_box("{duration: 20, rtol: 1e-10, max_steps: 25}"));
   const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
   EXPECT_EQ(r.status, 4) << r.out;
   EXPECT_NE(r.out.find("integration failed"), std::string::npos) << r.out;
@@ -175,13 +180,8 @@ TEST(Cli, ARunStoppedByASignalLeavesNoPartialFile) {
   // A run far longer than the half second it is given, stopped by SIGTERM, then by SIGINT (as
   // Ctrl-C does): it ends by the signal, and neither its CSV nor a temporary file is left.
   const fs::path dir = fresh_dir("stopped");
-  const fs::path p = write_file(dir, "long.yaml",
-                                "tumble: 1\n"
-                                "gravity: [0, 0, 0]\n"
-                                "bodies:\n"
-                                "  b: {shape: box, size: [4, 1, 2], mass: 12,"
-                                " angular_velocity: [0, 0.01, 1]}\n"
-                                "simulate: {duration: 1000000, rtol: 1e-10, output_every: 1000}\n");
+  const fs::path p = write_file(
+      dir, "long.yaml", tumbling_box("{duration: 1000000, rtol: 1e-10, output_every: 1000}"));
   for (const char* signal_name : {"TERM", "INT"}) {
     const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string(),
                                        std::string("timeout -s ") + signal_name + " 0.5 ");

@@ -61,6 +61,10 @@ bool is_face(RoundPart part) {
   return part == RoundPart::FaceA || part == RoundPart::FaceB;
 }
 
+bool is_end(RoundPart part) {
+  return part == RoundPart::EndA || part == RoundPart::EndB;
+}
+
 bool holds_rim_point(const ContactSurface& surface, RoundPart part) {
   return part == RoundPart::Side || part == RoundPart::EndB ||
          (part == RoundPart::EndA && round_ends(surface).radius[0] > 0.0);

@@ -20,8 +20,8 @@
 
 namespace tumble {
 
-// A face's ends: None, apart; EndA / EndB, a point of that end's rim (the cone's apex for A);
-// Side; FaceA / FaceB, lying on that end's face.
+// What of a round body touches: None, apart; EndA / EndB, a point of that end's rim (the cone's
+// apex for A); Side; FaceA / FaceB, lying on that end's face.
 enum class RoundPart { None, EndA, EndB, Side, FaceA, FaceB };
 
 // The two end circles of a round surface (ContactSurface::Kind Circle, Cylinder or Cone).
@@ -38,6 +38,8 @@ RoundEnds round_ends(const ContactSurface& surface);
 // 0 for the parts at end A, 1 at end B (its rim point or its face).
 int end_of(RoundPart part);
 bool is_face(RoundPart part);
+// EndA or EndB: one end's rim point (a cone's apex).
+bool is_end(RoundPart part);
 // Whether the part holds a rim point, which moves over the body (not a face, not a cone's apex).
 bool holds_rim_point(const ContactSurface& surface, RoundPart part);
 

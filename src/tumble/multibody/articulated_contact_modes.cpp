@@ -421,7 +421,7 @@ bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
 bool ArticulatedFormulation::round_other_end_B(std::size_t c, Vec3& other_B) const {
   const ContactStatus& status = contact_status_[c];
   const RoundEnds ends = round_ends(model_.contacts[c].surface);
-  if (ends.one_rim) return false;
+  if (ends.one_rim || !is_end(status.round_part)) return false;
   const Vec3 n_B =
       work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
   const int other = status.round_part == RoundPart::EndA ? 1 : 0;

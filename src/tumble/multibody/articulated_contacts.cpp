@@ -182,7 +182,7 @@ void ArticulatedFormulation::calc_round_contact_points(std::size_t c, const Vec3
   // On the side or a face: nothing (they tip onto a rim point first).
   now.support.p_GC_B.setZero();
   now.support.height = 1.0;  // nothing left to land
-  if (status.round_part != RoundPart::EndA && status.round_part != RoundPart::EndB) return;
+  if (!is_end(status.round_part)) return;
   const int end = end_of(status.round_part);
   const double radius = ends.radius[static_cast<std::size_t>(end)];
   // The rim point's direction u (part.points_B[0] = C + r u): the lowest point, to ~1e-12.
@@ -517,7 +517,7 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
     const RoundPart part = contact_status_[c].round_part;
     const bool rim_point =
         (kind == ContactSurface::Kind::Circle || kind == ContactSurface::Kind::Cylinder) &&
-        (part == RoundPart::EndA || part == RoundPart::EndB);
+        is_end(part);
     features |= kind != ContactSurface::Kind::Sphere && !rim_point &&
                 contact_status_[c].mode != ContactMode::Apart;
   }

@@ -334,7 +334,8 @@ class ArticulatedFormulation final : public Formulation {
   // its CoP left. True if one holds.
   bool settle_round(std::size_t contact, double t, VecX& y);
   // A round body on one end's rim point (a cone's apex): the other end's lowest rim point, into
-  // other_B; false for a disk or ring, whose ends are one rim (after calc_kinematics).
+  // other_B; false on no end's rim point, or for a disk or ring, whose ends are one rim (after
+  // calc_kinematics).
   bool round_other_end_B(std::size_t contact, Vec3& other_B) const;
   // A round body on its side or a face tips onto the end of the side (support margin's side 0:
   // end A's rim point, 1: end B's), or the face's rim point where the CoP leaves it (after a
@@ -365,8 +366,9 @@ class ArticulatedFormulation final : public Formulation {
   bool anchored(std::size_t contact) const;
   // The part of a round body that touches (into its status, after calc_kinematics): a face if
   // its whole rim is within `within` of the plane, else the side if both ends' lowest rim points
-  // are, else the end that is (at least the lower). A point counts if it is at the plane, or
-  // within `within` and not moving away; with `resting`, only if not moving away.
+  // are, else the end that is (at least the lower). A point counts if it lands with the touchdown
+  // (lands_with: within `within` and not moving away, or at the plane and not bouncing off);
+  // with `resting`, only if not moving away.
   void find_touching_round_part(std::size_t contact, double within, bool resting);
   void impact(std::size_t contact, double t, VecX& y);
   // After a settled landing at `speed`: throws std::runtime_error where such landings have

@@ -114,8 +114,7 @@ void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, con
     points_B[count++] = now.normal_points_B[static_cast<std::size_t>(k)];
   }
   Vec3 other = Vec3::Zero();
-  if ((status.round_part == RoundPart::EndA || status.round_part == RoundPart::EndB) &&
-      round_other_end_B(c, other) && height_above_plane(c, other) <= status.touching_height) {
+  if (round_other_end_B(c, other) && height_above_plane(c, other) <= status.touching_height) {
     points_B[count++] = other;
   }
   set_apart(c);

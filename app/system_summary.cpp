@@ -2,8 +2,6 @@
 
 #include <fmt/core.h>
 
-#include "tumble/multibody/articulated_formulation.hpp"
-
 namespace tumble::cli {
 
 bool energy_changes(const Scenario& scenario) {
@@ -46,9 +44,7 @@ bool external_moments_act(const Scenario& scenario) {
 void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                           const SimulationResult& result) {
   const std::vector<std::string> names = simulation.formulation->element_names();
-  const auto* articulated =
-      dynamic_cast<const ArticulatedFormulation*>(simulation.formulation.get());
-  if (articulated == nullptr) return;
+  if (!simulation.formulation->keeps_work_ledger()) return;
   const ConservationReport& c = result.conservation;
   fmt::print(
       "  work-energy    max |KE - KE0 - W| {:.3e} J ({:.1e} of the largest KE; W: the "
@@ -61,7 +57,7 @@ void print_system_summary(const Scenario& scenario, const PreparedSimulation& si
   }
   // Contact events in time order: the first ones in full (a bouncing ball has dozens).
   constexpr std::size_t kContactEventsShown = 24;
-  const std::vector<ContactEventRecord>& events = articulated->contact_events();
+  const std::vector<ContactEventRecord>& events = result.contact_events;
   for (std::size_t i = 0; i < events.size() && i < kContactEventsShown; ++i) {
     fmt::print("  t = {:<10.8g} {}: {}\n", events[i].t, scenario.contacts[events[i].contact].name,
                events[i].what);
@@ -71,7 +67,7 @@ void print_system_summary(const Scenario& scenario, const PreparedSimulation& si
                events.size() - kContactEventsShown, events.back().t,
                scenario.contacts[events.back().contact].name, events.back().what);
   }
-  for (const JumpRecord& jump : articulated->jumps()) {
+  for (const JumpRecord& jump : result.jumps) {
     fmt::print("  t = {:<10.6g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,
                jump.kinetic_energy_before, jump.kinetic_energy_after);
     const Vec3& L0 = jump.angular_momentum_before_W;

@@ -24,6 +24,7 @@
 #include "tumble/dynamics/formulation.hpp"
 #include "tumble/integrators/driver.hpp"
 #include "tumble/math/rotation.hpp"
+#include "tumble/simulation/make_formulation.hpp"
 #include "tumble/simulation/simulation.hpp"
 
 namespace tumble {

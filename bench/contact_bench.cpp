@@ -10,7 +10,6 @@
 #include <string>
 
 #include "example_timing.hpp"
-#include "tumble/multibody/articulated_formulation.hpp"
 #include "tumble/simulation/simulation.hpp"
 
 namespace tumble {
@@ -34,8 +33,7 @@ void BM_BackspinDiskSlide(benchmark::State& state, const char* integrator, doubl
     result = run_simulation(simulation, last_speed);
     benchmark::DoNotOptimize(v_end);
   }
-  const auto& events =
-      dynamic_cast<const ArticulatedFormulation&>(*simulation.formulation).contact_events();
+  const auto& events = result.contact_events;
   double t_stop = 0.0;
   for (const auto& event : events) {
     if (event.what == "slip stops") t_stop = event.t;

@@ -12,6 +12,7 @@
 #include "tumble/dynamics/body_frame_formulation.hpp"
 #include "tumble/dynamics/textbook_formulation.hpp"
 #include "tumble/integrators/driver.hpp"
+#include "tumble/simulation/make_formulation.hpp"
 
 namespace tumble {
 namespace {

@@ -11,6 +11,7 @@
 #include "tumble/exact/torque_free.hpp"
 #include "tumble/integrators/driver.hpp"
 #include "tumble/math/rotation.hpp"
+#include "tumble/simulation/make_formulation.hpp"
 
 namespace tumble {
 namespace {

@@ -12,6 +12,7 @@
 #include "tumble/dynamics/formulation.hpp"
 #include "tumble/integrators/integrator.hpp"
 #include "tumble/math/rotation.hpp"
+#include "tumble/simulation/make_formulation.hpp"
 
 namespace tumble {
 namespace {

@@ -15,6 +15,7 @@
 #include "tumble/integrators/driver.hpp"
 #include "tumble/math/rotation.hpp"
 #include "tumble/simulation/exact_integrator.hpp"
+#include "tumble/simulation/make_formulation.hpp"
 
 namespace tumble {
 namespace {

@@ -3,8 +3,6 @@
 #include <cmath>
 #include <utility>
 
-#include "tumble/multibody/articulated_formulation.hpp"
-
 namespace tumble::test {
 
 ScenarioRun run_inline_scenario(const std::string& yaml, const std::string& name) {
@@ -20,10 +18,8 @@ ScenarioRun run_scenario(Scenario scenario) {
     run.rows.push_back({t, std::vector<BodyState>(states.begin(), states.end()), q, e});
   });
   EXPECT_TRUE(run.result.report.completed) << run.result.report.failure;
-  if (const auto* a = dynamic_cast<const ArticulatedFormulation*>(simulation.formulation.get())) {
-    run.jumps = a->jumps();
-    run.contact_events = a->contact_events();
-  }
+  run.jumps = run.result.jumps;
+  run.contact_events = run.result.contact_events;
   run.bodies = simulation.formulation->model().bodies;
   run.contacts = simulation.formulation->model().contacts;
   return run;

@@ -2,7 +2,8 @@
 
 namespace tumble {
 
-BodyFrameFormulation::BodyFrameFormulation(Model model) : Formulation(std::move(model)) {
+BodyFrameFormulation::BodyFrameFormulation(std::shared_ptr<const Model> model)
+    : Formulation(std::move(model)) {
   for (std::size_t i = 0; i < body_count(); ++i) {
     quaternion_offsets_.push_back(static_cast<Eigen::Index>(i) * kPerBody + kQuaternion);
   }
@@ -34,7 +35,7 @@ void BodyFrameFormulation::derivative(double /*t*/, const VecX& y, VecX& dydt) c
       // projections.
       const Mat3 R_WB = Quat(q(0), q(1), q(2), q(3)).normalized().toRotationMatrix();
       Vec3 F_applied_W, M_applied_G_W;
-      calc_applied_loads(model_, i, schedule_time_, R_WB, F_applied_W, M_applied_G_W);
+      calc_applied_loads(model_, i, hybrid_.schedule_time, R_WB, F_applied_W, M_applied_G_W);
       F_W += F_applied_W;
       M_G_B += R_WB.transpose() * M_applied_G_W;
     }

@@ -18,7 +18,12 @@ class BodyFrameFormulation final : public Formulation {
   static constexpr Eigen::Index kPerBody = 13;
   static constexpr Eigen::Index kPosition = 0, kQuaternion = 3, kVelocity = 7, kOmegaBody = 10;
 
-  explicit BodyFrameFormulation(Model model);
+  explicit BodyFrameFormulation(std::shared_ptr<const Model> model);
+  explicit BodyFrameFormulation(Model model)
+      : BodyFrameFormulation(std::make_shared<const Model>(std::move(model))) {}
+  std::unique_ptr<Formulation> new_run() const override {
+    return std::make_unique<BodyFrameFormulation>(shared_model_);
+  }
 
   std::string_view name() const override { return "body"; }
   Eigen::Index dimension() const override;

@@ -26,7 +26,7 @@ void TextbookFormulation::derivative(double /*t*/, const VecX& y, VecX& dydt) co
     Vec3 M_G_W = Vec3::Zero();
     if (!model_.loads.empty()) {
       Vec3 F_applied_W;
-      calc_applied_loads(model_, i, schedule_time_, R_WB, F_applied_W, M_G_W);
+      calc_applied_loads(model_, i, hybrid_.schedule_time, R_WB, F_applied_W, M_G_W);
       F_W += F_applied_W;
     }
     const Mat3 I_G_W = R_WB * body.I_G_B * R_WB.transpose();

@@ -14,7 +14,13 @@ class TextbookFormulation final : public Formulation {
   static constexpr Eigen::Index kPerBody = 18;
   static constexpr Eigen::Index kPosition = 0, kVelocity = 3, kRotation = 6, kOmegaWorld = 15;
 
-  explicit TextbookFormulation(Model model) : Formulation(std::move(model)) {}
+  explicit TextbookFormulation(std::shared_ptr<const Model> model)
+      : Formulation(std::move(model)) {}
+  explicit TextbookFormulation(Model model)
+      : TextbookFormulation(std::make_shared<const Model>(std::move(model))) {}
+  std::unique_ptr<Formulation> new_run() const override {
+    return std::make_unique<TextbookFormulation>(shared_model_);
+  }
 
   std::string_view name() const override { return "textbook"; }
   Eigen::Index dimension() const override;

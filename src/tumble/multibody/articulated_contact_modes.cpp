@@ -63,8 +63,8 @@ const char* feature_name(int size) {
 }  // namespace
 
 double ArticulatedFormulation::support_margin_of(std::size_t c, int& side) const {
-  const ContactNow& now = contact_now_[c];
-  const ContactStatus& status = contact_status_[c];
+  const ContactNow& now = d_.contact_now[c];
+  const ContactStatus& status = s_.contacts[c];
   const ContactSurface& surface = model_.contacts[c].surface;
   if (status.round_part != RoundPart::None) {
     return round_support_margin(surface, status.round_part, now.normal_points_B, now.reference_B,
@@ -78,11 +78,11 @@ Vec3 ArticulatedFormulation::pushed_direction(std::size_t c) const {
   // Against the friction sticking needs, which then saturates at mu N.
   const Vec3 needed = friction_demand(c);
   const double size = needed.norm();
-  return size > 0.0 ? Vec3(-needed / size) : contact_status_[c].slide_direction_W;
+  return size > 0.0 ? Vec3(-needed / size) : s_.contacts[c].slide_direction_W;
 }
 
 Vec3 ArticulatedFormulation::friction_demand(std::size_t c) const {
-  const ContactNow& now = contact_now_[c];
+  const ContactNow& now = d_.contact_now[c];
   const double rho = now.spin_radius;
   const Vec3& n = model_.contacts[c].normal_W;
   if (!(rho > 0.0)) return now.friction_W;
@@ -93,25 +93,25 @@ bool ArticulatedFormulation::lands_with(std::size_t c, double height, double nor
   // Not moving away from the plane; or at it (a landing located to round-off), unless it leaves
   // faster than a settling touchdown lands: that point has just bounced off, and an impulse or a
   // contact that held it there would take its bounce.
-  const ContactStatus& status = contact_status_[c];
+  const ContactStatus& status = s_.contacts[c];
   return normal_speed <= status.slip_zero ||
          (height <= status.touching_height && normal_speed <= status.settle_speed);
 }
 
 void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within) const {
   const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
   const Vec3& n = contact.normal_W;
-  touching_.clear();
+  d_.touching.clear();
   for (std::size_t i = 0; i < contact.surface.vertices.size(); ++i) {
     const Vec3& p = contact.surface.vertices[i];
     const double height = height_above_plane(c, p);
     if (height > within) continue;
-    if (lands_with(c, height, normal_speed(c, p))) touching_.push_back(static_cast<int>(i));
+    if (lands_with(c, height, normal_speed(c, p))) d_.touching.push_back(static_cast<int>(i));
   }
   // At least the lowest vertex (a landing located to round-off is at the plane).
-  if (touching_.empty()) {
-    touching_.push_back(lowest_vertex(contact.surface, w.R_WC.transpose() * n));
+  if (d_.touching.empty()) {
+    d_.touching.push_back(lowest_vertex(contact.surface, w.R_WC.transpose() * n));
   }
 }
 
@@ -127,9 +127,9 @@ double ArticulatedFormulation::watched_height(std::size_t c, double height,
   // deeper than the landing height has crossed the plane, even if it now rises (a tumbling
   // body's end that dipped through it and is turning back at the end of a step; step_limit keeps
   // a whole dip from fitting inside one).
-  const ContactStatus& status = contact_status_[c];
+  const ContactStatus& status = s_.contacts[c];
   const bool at_plane = height >= -status.landing_height;
-  const bool after_event = time_now_ == last_event_t_;
+  const bool after_event = d_.time_now == s_.last_event_t;
   return at_plane && (normal_speed > -status.slip_zero || after_event)
              ? std::max(height, status.touching_height)
              : height;
@@ -140,7 +140,7 @@ double ArticulatedFormulation::landing_watch(std::size_t c, Vec3& landing_B) con
   // while another comes down through it), a round body's ends' lowest rim points, a sphere's
   // lowest point.
   const PlaneContact& contact = model_.contacts[c];
-  const ContactNow& now = contact_now_[c];
+  const ContactNow& now = d_.contact_now[c];
   double least = std::numeric_limits<double>::infinity();
   const auto watch = [&](const Vec3& p_B) {
     const double g = watched_height(c, height_above_plane(c, p_B), normal_speed(c, p_B));
@@ -163,9 +163,9 @@ double ArticulatedFormulation::landing_watch(std::size_t c, Vec3& landing_B) con
 }
 
 void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) const {
-  time_now_ = t;
+  d_.time_now = t;
   const bool touching =
-      std::any_of(contact_status_.begin(), contact_status_.end(),
+      std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (touching) {
     solve_contacts_at(y);
@@ -175,8 +175,8 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
   }
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const auto base = static_cast<Eigen::Index>(3 * c);
-    const ContactNow& now = contact_now_[c];
-    const ContactStatus& status = contact_status_[c];
+    const ContactNow& now = d_.contact_now[c];
+    const ContactStatus& status = s_.contacts[c];
     const PlaneContact& contact = model_.contacts[c];
     g(base) = g(base + 1) = g(base + 2) = 1.0;
     // Apart, the point nearest to landing; touching, a polyhedron or a round body watches the
@@ -205,10 +205,10 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
 }
 
 bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
-  time_now_ = t;
+  d_.time_now = t;
   bool refresh = false;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const ContactStatus& s = contact_status_[c];
+    const ContactStatus& s = s_.contacts[c];
     refresh |= s.mode == ContactMode::Sliding || rim_direction_kept_up(c);
   }
   if (!refresh) return false;
@@ -218,11 +218,11 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
   calc_kinematics(y, true);
   calc_contact_points();
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    ContactStatus& status = contact_status_[c];
-    const double slip = contact_now_[c].slip_W.norm();
+    ContactStatus& status = s_.contacts[c];
+    const double slip = d_.contact_now[c].slip_W.norm();
     if (status.mode == ContactMode::Sliding &&
         (slip > status.slip_zero || (status.slip_grown && slip > status.slip_floor))) {
-      status.slide_direction_W = contact_now_[c].slip_W / slip;
+      status.slide_direction_W = d_.contact_now[c].slip_W / slip;
       status.slide_turn_W.setZero();  // the slip itself says where it goes
       status.slip_grown = true;
     }
@@ -244,7 +244,7 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
         (status.slip_stop_armed && sliding && status.slip_left_near && slip <= near);
     status.slip_last_step = sliding ? slip : 0.0;
     if (rim_direction_kept_up(c)) {
-      status.rim_direction_B = rim_direction(contact_now_[c].n_B, status.rim_direction_B);
+      status.rim_direction_B = rim_direction(d_.contact_now[c].n_B, status.rim_direction_B);
     }
   }
   return true;
@@ -254,46 +254,46 @@ bool ArticulatedFormulation::rim_direction_kept_up(std::size_t c) const {
   // Only near flat does the lean towards the last direction count (round_contact.hpp); above
   // kRimKeptUpTilt it moves the rim point by less than 1e-10 of the radius, so the direction is
   // kept up with only there (judged by the last evaluation's normal in body axes).
-  const Vec3& n_B = contact_now_[c].n_B;
-  return holds_rim_point(model_.contacts[c].surface, contact_status_[c].round_part) &&
+  const Vec3& n_B = d_.contact_now[c].n_B;
+  return holds_rim_point(model_.contacts[c].surface, s_.contacts[c].round_part) &&
          std::hypot(n_B.x(), n_B.y()) < kRimKeptUpTilt;
 }
 
 void ArticulatedFormulation::note_contact(double t, std::size_t contact, std::string what) {
-  contact_events_.push_back({t, contact, std::move(what)});
+  s_.contact_events.push_back({t, contact, std::move(what)});
 }
 
 double ArticulatedFormulation::height_above_plane(std::size_t c, const Vec3& p_B) const {
   const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
   return (w.r_G_W + w.R_WC * p_B - contact.point_W).dot(contact.normal_W);
 }
 
 double ArticulatedFormulation::normal_speed(std::size_t c, const Vec3& p_B) const {
   const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
   const Vec3 v_P_B = w.velocity.tail<3>() + w.velocity.head<3>().cross(p_B);
   return contact.normal_W.dot(w.R_WC * v_P_B);
 }
 
 double ArticulatedFormulation::normal_acceleration(std::size_t c, const Vec3& p_B) const {
   const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
   return contact.normal_W.dot(moving_point_acceleration_W(w, p_B, Vec3::Zero()));
 }
 
 bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
                                                std::span<const Vec3> left_out_B) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   const PlaneContact& contact = model_.contacts[c];
-  const ContactNow& now = contact_now_[c];
+  const ContactNow& now = d_.contact_now[c];
   // Consistent: the plane pushes (N > 0) with its CoP in the feature, and the touching vertices
   // (points) left out of the feature do not go into the plane.
   const auto consistent = [&] {
     int side = -1;
     if (!(now.normal_force > 0.0) || support_margin_of(c, side) < 0.0) return false;
     const double tolerance = kSlipZero * std::max(model_.gravity_W.norm(), 1.0);
-    for (const int i : touching_) {
+    for (const int i : d_.touching) {
       if (status.feature.contains(i)) continue;
       const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
       if (normal_acceleration(c, p) < -tolerance) return false;
@@ -328,7 +328,7 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
 }
 
 void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y, bool always_note) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   const PlaneContact& contact = model_.contacts[c];
   const ContactMode before = status.mode;
   const int size_before = status.feature.size();
@@ -351,28 +351,28 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y, 
 }
 
 bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX& y) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   const PlaneContact& contact = model_.contacts[c];
   // The candidates, in order: the whole feature; a face's edges; its (or an edge's) vertices;
   // apart. The first whose forces are consistent is the one (for these few, enumerating them
   // solves the complementarity problem exactly).
   if (status.round_part != RoundPart::None) return settle_round(c, t, y);
-  touching_.assign(status.feature.polygon.begin(), status.feature.polygon.end());
-  const int k = static_cast<int>(touching_.size());
+  d_.touching.assign(status.feature.polygon.begin(), status.feature.polygon.end());
+  const int k = static_cast<int>(d_.touching.size());
   const int edges = k >= 3 ? k : 0;
   const int vertices = k >= 2 ? k : 0;
   calc_kinematics(y, false);
-  const Vec3 n_B = work_[slot_of_body_[contact.body]].R_WC.transpose() * contact.normal_W;
+  const Vec3 n_B = d_.work[m_.slot_of_body[contact.body]].R_WC.transpose() * contact.normal_W;
   for (int candidate = 0; candidate <= edges + vertices; ++candidate) {
     if (candidate > 0) {
       std::array<int, 2> pick{};
       std::size_t count = 1;
       if (candidate <= edges) {
-        pick = {touching_[static_cast<std::size_t>(candidate - 1)],
-                touching_[static_cast<std::size_t>(candidate % k)]};
+        pick = {d_.touching[static_cast<std::size_t>(candidate - 1)],
+                d_.touching[static_cast<std::size_t>(candidate % k)]};
         count = 2;
       } else {
-        pick[0] = touching_[static_cast<std::size_t>(candidate - 1 - edges)];
+        pick[0] = d_.touching[static_cast<std::size_t>(candidate - 1 - edges)];
       }
       make_feature(contact.surface.vertices, std::span<const int>(pick.data(), count), n_B,
                    status.feature);
@@ -383,12 +383,12 @@ bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX&
 }
 
 bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   const RoundEnds ends = round_ends(model_.contacts[c].surface);
-  touching_.clear();  // the round body's left-out points are named per candidate
+  d_.touching.clear();  // the round body's left-out points are named per candidate
   calc_kinematics(y, false);
-  const Vec3 n_B =
-      work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
+  const Vec3 n_B = d_.work[m_.slot_of_body[model_.contacts[c].body]].R_WC.transpose() *
+                   model_.contacts[c].normal_W;
   const Vec3 u = rim_direction(n_B, status.rim_direction_B);
   const std::array<Vec3, 2> end_points = {rim_point(ends, 0, u), rim_point(ends, 1, u)};
   const auto one = [](const Vec3& p) { return std::span<const Vec3>(&p, 1); };
@@ -403,7 +403,7 @@ bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
     case RoundPart::FaceA:
     case RoundPart::FaceB:
       if (settle_on_feature(c, t, y)) return true;
-      tip_round(c, 0);  // onto the rim where the CoP went (the face's forces, in contact_now_)
+      tip_round(c, 0);  // onto the rim where the CoP went (the face's forces, in d_.contact_now)
       return settle_on_feature(c, t, y, one(ends.centre_B[static_cast<std::size_t>(end_of(part))]));
     case RoundPart::EndA:
     case RoundPart::EndB: {
@@ -419,19 +419,19 @@ bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
 }
 
 bool ArticulatedFormulation::round_other_end_B(std::size_t c, Vec3& other_B) const {
-  const ContactStatus& status = contact_status_[c];
+  const ContactStatus& status = s_.contacts[c];
   const RoundEnds ends = round_ends(model_.contacts[c].surface);
   if (ends.one_rim || !is_end(status.round_part)) return false;
-  const Vec3 n_B =
-      work_[slot_of_body_[model_.contacts[c].body]].R_WC.transpose() * model_.contacts[c].normal_W;
+  const Vec3 n_B = d_.work[m_.slot_of_body[model_.contacts[c].body]].R_WC.transpose() *
+                   model_.contacts[c].normal_W;
   const int other = status.round_part == RoundPart::EndA ? 1 : 0;
   other_B = rim_point(ends, other, rim_direction(n_B, status.rim_direction_B));
   return true;
 }
 
 void ArticulatedFormulation::tip_round(std::size_t c, int side) {
-  ContactStatus& status = contact_status_[c];
-  const ContactNow& now = contact_now_[c];
+  ContactStatus& status = s_.contacts[c];
+  const ContactNow& now = d_.contact_now[c];
   if (status.round_part == RoundPart::Side) {
     status.round_part = side == 0 ? RoundPart::EndA : RoundPart::EndB;
   } else if (is_face(status.round_part)) {
@@ -442,7 +442,7 @@ void ArticulatedFormulation::tip_round(std::size_t c, int side) {
 }
 
 void ArticulatedFormulation::set_apart(std::size_t c) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   status.mode = ContactMode::Apart;
   status.slide_turn_W.setZero();
   status.slip_stop_armed = false;
@@ -454,7 +454,7 @@ void ArticulatedFormulation::set_apart(std::size_t c) {
 
 bool ArticulatedFormulation::anchored(std::size_t c) const {
   const ContactSurface& surface = model_.contacts[c].surface;
-  const RoundPart part = contact_status_[c].round_part;
+  const RoundPart part = s_.contacts[c].round_part;
   if (surface.kind == ContactSurface::Kind::Polyhedron || is_face(part)) return true;
   // A point fixed in the body: a cone's apex (an end of radius 0).
   return part == RoundPart::EndA && round_ends(surface).radius[0] == 0.0;
@@ -462,8 +462,8 @@ bool ArticulatedFormulation::anchored(std::size_t c) const {
 
 void ArticulatedFormulation::find_touching_round_part(std::size_t c, double within, bool resting) {
   const PlaneContact& contact = model_.contacts[c];
-  ContactStatus& status = contact_status_[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
+  ContactStatus& status = s_.contacts[c];
+  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
   const RoundEnds ends = round_ends(contact.surface);
   const Vec3& n = contact.normal_W;
   const Vec3 n_B = w.R_WC.transpose() * n;
@@ -514,9 +514,9 @@ void ArticulatedFormulation::find_touching_round_part(std::size_t c, double with
 void ArticulatedFormulation::anchor_contact(std::size_t c) {
   const PlaneContact& contact = model_.contacts[c];
   if (!anchored(c)) return;  // it rolls: no anchor
-  const ContactNow& now = contact_now_[c];
-  ContactStatus& status = contact_status_[c];
-  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const ContactNow& now = d_.contact_now[c];
+  ContactStatus& status = s_.contacts[c];
+  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
   const Vec3& n = contact.normal_W;
   const auto on_plane = [&](const Vec3& p_B) {
     const Vec3 x = w.r_G_W + w.R_WC * p_B;
@@ -530,14 +530,14 @@ void ArticulatedFormulation::anchor_contact(std::size_t c) {
 
 void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   const PlaneContact& contact = model_.contacts[c];
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   const Vec3& n = contact.normal_W;
   const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
   const bool round = is_round(contact.surface);
   calc_kinematics(y, true);
   calc_contact_points();
   // The point that landed: apart, the one the event watched (not always the lowest).
-  Vec3 landing_B = contact_now_[c].support.p_GC_B;
+  Vec3 landing_B = d_.contact_now[c].support.p_GC_B;
   if (status.mode == ContactMode::Apart) landing_watch(c, landing_B);
   const double vn_before = normal_speed(c, landing_B);
   const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
@@ -567,21 +567,21 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   Eigen::Index count = 0;
   for (const ImpactLaw& law : laws) {
     if (polyhedron)
-      make_feature(contact.surface.vertices, touching_, contact_now_[c].n_B, status.feature);
+      make_feature(contact.surface.vertices, d_.touching, d_.contact_now[c].n_B, status.feature);
     status.round_part = landing_part;
     status.rim_direction_B = landing_rim_direction_B;
     for (int attempt = 0; attempt < 3; ++attempt) {
       calc_kinematics(y, true);
       calc_contact_points();
-      const ContactNow& now = contact_now_[c];
+      const ContactNow& now = d_.contact_now[c];
       const auto solve_for_restitution = [&] {
         for (Eigen::Index i = 0; i < count; ++i) {
-          const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
-          contact_x_(i) = -(row.normal ? 1.0 + law.e : 1.0) * row_velocity(row);
+          const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
+          d_.contact_x(i) = -(row.normal ? 1.0 + law.e : 1.0) * row_velocity(row);
         }
-        calc_contact_matrix(count, schedule_time_);
-        solve_contact_system(count, contact_x_);
-        set_contact_resultants(count, contact_x_);  // the impulse, as a force would be
+        calc_contact_matrix(count, s_.schedule_time);
+        solve_contact_system(count, d_.contact_x);
+        set_contact_resultants(count, d_.contact_x);  // the impulse, as a force would be
       };
       if (law.friction) {
         count = append_contact_unknowns(c, ContactMode::Rolling, ContactRows::Projection,
@@ -610,16 +610,16 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       }
       break;
     }
-    impact_y_ = y;
-    apply_contact_impulses(count, contact_x_, schedule_time_, impact_y_);
-    calc_kinematics(impact_y_, true);
+    d_.impact_y = y;
+    apply_contact_impulses(count, d_.contact_x, s_.schedule_time, d_.impact_y);
+    calc_kinematics(d_.impact_y, true);
     work = kinetic_energy() - energy_before;
     if (work <= kWorkRoundOff * energy_before) break;
   }
-  y = impact_y_;
-  y(ledger_ + contact_entry(c)) += work;
+  y = d_.impact_y;
+  y(m_.ledger + m_.contact_entry(c)) += work;
   calc_kinematics(y, true);
-  const Workspace& w = work_[slot_of_body_[contact.body]];
+  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
   const double vn_after = normal_speed(c, landing_B);
   const std::string on =
       polyhedron ? fmt::format(" on {}", feature_name(status.feature.size()))
@@ -632,7 +632,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       // On everything now at the plane: which part carries it is the classification's to find
       // (the impulse's own centre may have left a vertex out that the forces need).
       find_touching_vertices(c, status.touching_height);
-      make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
+      make_feature(contact.surface.vertices, d_.touching, w.R_WC.transpose() * n, status.feature);
     }
     // A round body on what landed with it: its points within the landing height that the
     // plastic impulse stopped (a face lands with its far side that high, not yet at the plane).
@@ -656,21 +656,21 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   }
   if (!polyhedron) return;  // it bounces: apart
   // The feature's vertices that did not bounce off stay on the plane.
-  touching_.clear();
+  d_.touching.clear();
   for (const int i : status.feature.polygon) {
     const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
-    if (normal_speed(c, p) <= status.slip_zero) touching_.push_back(i);
+    if (normal_speed(c, p) <= status.slip_zero) d_.touching.push_back(i);
   }
-  if (touching_.empty()) {
+  if (d_.touching.empty()) {
     set_apart(c);
     return;
   }
-  make_feature(contact.surface.vertices, touching_, w.R_WC.transpose() * n, status.feature);
+  make_feature(contact.surface.vertices, d_.touching, w.R_WC.transpose() * n, status.feature);
   classify_contact(c, t, y);
 }
 
 void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, double speed) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   // A settled landing that nothing holds (it goes apart at once) and that follows the last one
   // within kCascadeGap of the time scale continues a cascade; anything else ends it.
   const bool unheld = status.mode == ContactMode::Apart;
@@ -690,10 +690,10 @@ void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, doub
 }
 
 EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, VecX& y) {
-  time_now_ = t;
-  last_event_t_ = -std::numeric_limits<double>::infinity();  // until it is handled
+  d_.time_now = t;
+  s_.last_event_t = -std::numeric_limits<double>::infinity();  // until it is handled
   const std::size_t c = event_index / 3;
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   switch (event_index % 3) {
     case 0:  // touchdown
       impact(c, t, y);
@@ -711,14 +711,15 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
       solve_contacts_at(y);
       int side = -1;
       support_margin_of(c, side);
-      if (status.feature.size() >= 2 && contact_now_[c].normal_force > 0.0) {
-        tip_onto_side(model_.contacts[c].surface.vertices, side, contact_now_[c].n_B,
+      if (status.feature.size() >= 2 && d_.contact_now[c].normal_force > 0.0) {
+        tip_onto_side(model_.contacts[c].surface.vertices, side, d_.contact_now[c].n_B,
                       status.feature);
         note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
         classify_contact(c, t, y);
         break;
       }
-      if (side >= 0 && status.round_part != RoundPart::None && contact_now_[c].normal_force > 0.0) {
+      if (side >= 0 && status.round_part != RoundPart::None &&
+          d_.contact_now[c].normal_force > 0.0) {
         tip_round(c, side);
         note_contact(t, c,
                      fmt::format("tips onto {}",
@@ -734,10 +735,10 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
       if (status.mode == ContactMode::Sliding) {
         calc_kinematics(y, true);
         calc_contact_points();
-        const double slip = contact_now_[c].slip_W.norm();
+        const double slip = d_.contact_now[c].slip_W.norm();
         if (slip > kSlipStoppedNear * status.slip_zero) {
           // The slip turned away from the direction it had (3D); it did not stop.
-          status.slide_direction_W = contact_now_[c].slip_W / slip;
+          status.slide_direction_W = d_.contact_now[c].slip_W / slip;
           status.slide_turn_W.setZero();
           status.slip_grown = true;
           status.slip_stop_armed = false;
@@ -762,7 +763,7 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
       }
       break;
   }
-  last_event_t_ = t;
+  s_.last_event_t = t;
   return EventAction::Jump;
 }
 
@@ -790,22 +791,22 @@ ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
 
 }  // namespace
 
-std::optional<ArticulatedFormulation::ContactStartProblem>
-ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
+std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
+    const VecX& y0) const {
   calc_kinematics(y0, true);
   calc_contact_points();
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const PlaneContact& contact = model_.contacts[c];
-    const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
-    const ContactNow& now = contact_now_[c];
+    const ContactScales scales = contact_scales(contact, model_.gravity_W, d_.states[contact.body]);
+    const ContactNow& now = d_.contact_now[c];
     if (now.support.height < -scales.touching_height) {
-      return ContactStartProblem{
+      return StartProblem{
           c, fmt::format("body '{}' starts {:.6g} m inside the plane; place it on or above it",
                          model_.bodies[contact.body].name, -now.support.height)};
     }
     const double vn = now.support_normal_speed;
     if (now.support.height <= scales.touching_height && vn < -scales.slip_zero) {
-      return ContactStartProblem{
+      return StartProblem{
           c, fmt::format("body '{}' starts touching the plane and moving into it at {:.6g} m/s; "
                          "start it above the plane, or without that speed",
                          model_.bodies[contact.body].name, -vn)};
@@ -815,18 +816,18 @@ ArticulatedFormulation::contact_start_problem(const VecX& y0) const {
 }
 
 void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
-  contact_events_.clear();
-  last_event_t_ = -std::numeric_limits<double>::infinity();
+  s_.contact_events.clear();
+  s_.last_event_t = -std::numeric_limits<double>::infinity();
   if (model_.contacts.empty()) return;
   calc_kinematics(y, true);  // the bodies' states set the scales
   VecX y_start = y;          // classifying may project it; the run starts from y itself
-  impact_y_.resize(y.size());
-  onset_y_.resize(y.size());
-  onset_dydt_.resize(y.size());
+  d_.impact_y.resize(y.size());
+  d_.onset_y.resize(y.size());
+  d_.onset_dydt.resize(y.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const PlaneContact& contact = model_.contacts[c];
-    const ContactScales scales = contact_scales(contact, model_.gravity_W, states_[contact.body]);
-    ContactStatus& status = contact_status_[c];
+    const ContactScales scales = contact_scales(contact, model_.gravity_W, d_.states[contact.body]);
+    ContactStatus& status = s_.contacts[c];
     set_apart(c);
     status.rim_direction_B = Vec3::UnitX();
     status.slide_direction_W = Vec3::UnitX();
@@ -844,19 +845,19 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     calc_kinematics(y_start, true);
     calc_contact_points();
-    const ContactNow& now = contact_now_[c];
-    const ContactStatus& status = contact_status_[c];
+    const ContactNow& now = d_.contact_now[c];
+    const ContactStatus& status = s_.contacts[c];
     if (now.support.height > status.touching_height ||
         now.support_normal_speed > status.slip_zero) {
       continue;
     }
     if (model_.contacts[c].surface.kind == ContactSurface::Kind::Polyhedron) {
-      find_touching_vertices(c, contact_status_[c].touching_height);
-      make_feature(model_.contacts[c].surface.vertices, touching_, now.n_B,
-                   contact_status_[c].feature);
+      find_touching_vertices(c, s_.contacts[c].touching_height);
+      make_feature(model_.contacts[c].surface.vertices, d_.touching, now.n_B,
+                   s_.contacts[c].feature);
     }
     if (is_round(model_.contacts[c].surface)) {
-      find_touching_round_part(c, contact_status_[c].touching_height, false);
+      find_touching_round_part(c, s_.contacts[c].touching_height, false);
     }
     classify_contact(c, t0, y_start);
   }
@@ -864,7 +865,7 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
 
 void ArticulatedFormulation::reclassify_contacts(double t, VecX& y) {
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    if (contact_status_[c].mode != ContactMode::Apart) classify_contact(c, t, y);
+    if (s_.contacts[c].mode != ContactMode::Apart) classify_contact(c, t, y);
   }
 }
 

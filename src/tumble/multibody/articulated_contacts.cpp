@@ -68,46 +68,13 @@ Vec6 wrench_at(const Mat3& R_WB, const Vec3& p_B, const Vec3& F_W, const Vec3& M
 
 }  // namespace
 
-void ArticulatedFormulation::set_up_contacts() {
-  const std::size_t count = model_.contacts.size();
-  std::size_t most_vertices = 0;
-  for (const PlaneContact& contact : model_.contacts) {
-    if (tree_[slot_of_body_[contact.body]].type != TreeJoint::Type::Free) {
-      throw std::invalid_argument("contact '" + contact.name + "': body '" +
-                                  model_.bodies[contact.body].name +
-                                  "' is held by a joint; a body in contact must be free");
-    }
-    event_specs_.push_back({contact.name + " touchdown", EventDirection::Falling});
-    event_specs_.push_back({contact.name + " lift-off", EventDirection::Falling});
-    event_specs_.push_back({contact.name + " stick-slip", EventDirection::Falling});
-    most_vertices = std::max(most_vertices, contact.surface.vertices.size());
-  }
-  contact_status_.resize(count);
-  for (std::size_t c = 0; c < count; ++c) {
-    reserve_feature(contact_status_[c].feature, model_.contacts[c].surface.vertices.size());
-  }
-  touching_.reserve(most_vertices);
-  contact_now_.resize(count);
-  unknowns_.resize(6 * count);
-  const auto rows = static_cast<Eigen::Index>(6 * count);
-  contact_matrix_.resize(rows, rows);
-  contact_rhs_.resize(rows);
-  contact_x_.resize(rows);
-}
-
-Eigen::Index ArticulatedFormulation::contact_entry(std::size_t contact) const {
-  return first_motor_entry() +
-         static_cast<Eigen::Index>(motor_joints_.size() + model_.impulses.size() +
-                                   lock_joints_.size() + contact);
-}
-
 void ArticulatedFormulation::calc_contact_points() const {
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const PlaneContact& contact = model_.contacts[c];
-    const ContactStatus& status = contact_status_[c];
-    const Workspace& w = work_[slot_of_body_[contact.body]];
+    const ContactStatus& status = s_.contacts[c];
+    const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
     const Vec3& n = contact.normal_W;
-    ContactNow& now = contact_now_[c];
+    ContactNow& now = d_.contact_now[c];
     now.n_B = w.R_WC.transpose() * n;
     const Vec3 omega_B = w.velocity.head<3>();
     const Vec3 v_G_B = w.velocity.tail<3>();
@@ -164,8 +131,8 @@ void ArticulatedFormulation::calc_contact_points() const {
 
 void ArticulatedFormulation::calc_round_contact_points(std::size_t c, const Vec3& omega_B) const {
   const PlaneContact& contact = model_.contacts[c];
-  const ContactStatus& status = contact_status_[c];
-  ContactNow& now = contact_now_[c];
+  const ContactStatus& status = s_.contacts[c];
+  ContactNow& now = d_.contact_now[c];
   const RoundEnds ends = round_ends(contact.surface);
   const RoundPartPoints part =
       round_part_points(ends, status.round_part, now.n_B, omega_B, status.rim_direction_B);
@@ -204,8 +171,8 @@ void ArticulatedFormulation::calc_round_contact_points(std::size_t c, const Vec3
 }
 
 Vec3 ArticulatedFormulation::slide_direction(std::size_t c) const {
-  const ContactStatus& status = contact_status_[c];
-  const Vec3& slip_W = contact_now_[c].slip_W;
+  const ContactStatus& status = s_.contacts[c];
+  const Vec3& slip_W = d_.contact_now[c].slip_W;
   const double slip = slip_W.norm();
   // Below slip_zero a grown slip is still followed while it keeps to the way it went at the start
   // of the step; past that (it stopped within the step) friction stays as it was, so that the
@@ -214,7 +181,7 @@ Vec3 ArticulatedFormulation::slide_direction(std::size_t c) const {
                                                     slip_W.dot(status.slide_direction_W) > 0.0);
   if (followed) return slip_W / slip;
   if (status.slide_turn_W.isZero(0.0)) return status.slide_direction_W;
-  const double since = time_now_ - status.slide_start_t;
+  const double since = d_.time_now - status.slide_start_t;
   return (status.slide_direction_W + since * status.slide_turn_W).normalized();
 }
 
@@ -236,14 +203,14 @@ Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, Cont
                                                              ContactRows rows, const Vec3& slide_W,
                                                              Eigen::Index count) const {
   const PlaneContact& contact = model_.contacts[c];
-  const ContactNow& now = contact_now_[c];
-  const Mat3& R = work_[slot_of_body_[contact.body]].R_WC;
+  const ContactNow& now = d_.contact_now[c];
+  const Mat3& R = d_.work[m_.slot_of_body[contact.body]].R_WC;
   const Vec3& n = contact.normal_W;
   const Vec3 zero = Vec3::Zero();
   const bool held_at_anchor = anchored(c);
   const auto add = [&](const Vec3& p_B, const Vec3& rate_B, const Vec3& linear_W,
                        const Vec3& angular_W, bool normal, const Vec6& wrench_B, int anchor) {
-    unknowns_[static_cast<std::size_t>(count++)] = {
+    d_.unknowns[static_cast<std::size_t>(count++)] = {
         c, p_B, rate_B, linear_W, angular_W, normal, held_at_anchor ? anchor : -1, wrench_B};
   };
   const bool points_only =
@@ -304,7 +271,7 @@ Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, Cont
 Eigen::Index ArticulatedFormulation::gather_contact_unknowns(ContactRows rows) const {
   Eigen::Index count = 0;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const ContactMode mode = contact_status_[c].mode;
+    const ContactMode mode = s_.contacts[c].mode;
     const Vec3 slide = mode == ContactMode::Sliding && rows == ContactRows::Motion
                            ? slide_direction(c)
                            : Vec3::Zero();
@@ -314,7 +281,7 @@ Eigen::Index ArticulatedFormulation::gather_contact_unknowns(ContactRows rows) c
 }
 
 double ArticulatedFormulation::row_velocity(const ContactUnknown& row) const {
-  const Workspace& w = work_[slot_of_body_[model_.contacts[row.contact].body]];
+  const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[row.contact].body]];
   const Vec3 omega_B = w.velocity.head<3>();
   return row.linear_W.dot(w.R_WC * (w.velocity.tail<3>() + omega_B.cross(row.point_B))) +
          row.angular_W.dot(w.R_WC * omega_B);
@@ -322,34 +289,34 @@ double ArticulatedFormulation::row_velocity(const ContactUnknown& row) const {
 
 void ArticulatedFormulation::calc_contact_matrix(Eigen::Index count, double mode_time) const {
   for (Eigen::Index j = 0; j < count; ++j) {
-    for (Workspace& w : work_) {
+    for (Workspace& w : d_.work) {
       w.external.setZero();
       w.qdd.setZero();
     }
-    const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
-    const std::size_t slot = slot_of_body_[model_.contacts[u.contact].body];
-    work_[slot].external += u.wrench_B;
+    const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
+    const std::size_t slot = m_.slot_of_body[model_.contacts[u.contact].body];
+    d_.work[slot].external += u.wrench_B;
     // Only the bodies hung (through joints) from the same ground joint move: the others' rows
     // respond with nothing, and their passes are skipped (three bodies racing down a ramp: a
     // third of the work).
-    const std::size_t tree = tree_root_[slot];
+    const std::size_t tree = m_.tree_root[slot];
     solve(mode_time, true, tree);
     for (Eigen::Index i = 0; i < count; ++i) {
-      const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
-      const std::size_t row_slot = slot_of_body_[model_.contacts[row.contact].body];
-      if (tree_root_[row_slot] != tree) {
-        contact_matrix_(i, j) = 0.0;
+      const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
+      const std::size_t row_slot = m_.slot_of_body[model_.contacts[row.contact].body];
+      if (m_.tree_root[row_slot] != tree) {
+        d_.contact_matrix(i, j) = 0.0;
         continue;
       }
-      const Workspace& w = work_[row_slot];
+      const Workspace& w = d_.work[row_slot];
       // The linear response of the row: no velocity terms in the impulsive passes.
       const Vec3 alpha_B = w.acceleration.head<3>();
-      contact_matrix_(i, j) =
+      d_.contact_matrix(i, j) =
           row.linear_W.dot(w.R_WC * (w.acceleration.tail<3>() + alpha_B.cross(row.point_B))) +
           row.angular_W.dot(w.R_WC * alpha_B);
     }
   }
-  for (Workspace& w : work_) w.external.setZero();
+  for (Workspace& w : d_.work) w.external.setZero();
 }
 
 void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
@@ -358,7 +325,7 @@ void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
     return;
   }
   calc_contact_points();
-  for (Workspace& w : work_) w.applied = w.external;
+  for (Workspace& w : d_.work) w.applied = w.external;
   solve(mode_time, false);
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Motion);
   if (count == 0) return;
@@ -367,36 +334,36 @@ void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
   // move over it (moving_point_acceleration_W); an angular row's is alpha (its direction is fixed
   // in the world).
   for (Eigen::Index i = 0; i < count; ++i) {
-    const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
-    const Workspace& w = work_[slot_of_body_[model_.contacts[row.contact].body]];
-    contact_rhs_(i) =
+    const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
+    const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[row.contact].body]];
+    d_.contact_rhs(i) =
         -row.linear_W.dot(moving_point_acceleration_W(w, row.point_B, row.point_rate_B)) -
         row.angular_W.dot(w.R_WC * w.acceleration.head<3>());
   }
   calc_contact_matrix(count, mode_time);
-  solve_contact_system(count, contact_rhs_);
-  set_contact_resultants(count, contact_rhs_);
-  for (Workspace& w : work_) w.external = w.applied;
+  solve_contact_system(count, d_.contact_rhs);
+  set_contact_resultants(count, d_.contact_rhs);
+  for (Workspace& w : d_.work) w.external = w.applied;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    work_[slot_of_body_[model_.contacts[c].body]].external += contact_now_[c].wrench_B;
+    d_.work[m_.slot_of_body[model_.contacts[c].body]].external += d_.contact_now[c].wrench_B;
   }
   solve(mode_time, false);
 }
 
 void ArticulatedFormulation::solve_contact_system(Eigen::Index count, VecX& x) const {
-  solve_in_place(contact_matrix_, x, count);
+  solve_in_place(d_.contact_matrix, x, count);
 }
 
 void ArticulatedFormulation::set_contact_resultants(Eigen::Index count, const VecX& x) const {
-  for (ContactNow& now : contact_now_) now.wrench_B.setZero();
+  for (ContactNow& now : d_.contact_now) now.wrench_B.setZero();
   for (Eigen::Index j = 0; j < count; ++j) {
-    const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
-    contact_now_[u.contact].wrench_B += x(j) * u.wrench_B;
+    const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
+    d_.contact_now[u.contact].wrench_B += x(j) * u.wrench_B;
   }
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    ContactNow& now = contact_now_[c];
+    ContactNow& now = d_.contact_now[c];
     const Vec3& n = model_.contacts[c].normal_W;
-    const Mat3& R = work_[slot_of_body_[model_.contacts[c].body]].R_WC;
+    const Mat3& R = d_.work[m_.slot_of_body[model_.contacts[c].body]].R_WC;
     const Vec3 F_B = now.wrench_B.tail<3>();
     now.force_W = R * F_B;
     now.normal_force = now.force_W.dot(n);
@@ -407,13 +374,13 @@ void ArticulatedFormulation::set_contact_resultants(Eigen::Index count, const Ve
 
 void ArticulatedFormulation::respond_to_contact_impulses(Eigen::Index count, const VecX& impulses,
                                                          double mode_time) const {
-  for (Workspace& w : work_) {
+  for (Workspace& w : d_.work) {
     w.external.setZero();
     w.qdd.setZero();
   }
   for (Eigen::Index j = 0; j < count; ++j) {
-    const ContactUnknown& u = unknowns_[static_cast<std::size_t>(j)];
-    work_[slot_of_body_[model_.contacts[u.contact].body]].external += impulses(j) * u.wrench_B;
+    const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
+    d_.work[m_.slot_of_body[model_.contacts[u.contact].body]].external += impulses(j) * u.wrench_B;
   }
   solve(mode_time, true);
 }
@@ -421,23 +388,23 @@ void ArticulatedFormulation::respond_to_contact_impulses(Eigen::Index count, con
 void ArticulatedFormulation::apply_contact_impulses(Eigen::Index count, const VecX& impulses,
                                                     double mode_time, VecX& y) const {
   respond_to_contact_impulses(count, impulses, mode_time);
-  for (std::size_t k = 0; k < tree_.size(); ++k) {
-    const TreeJoint& joint = tree_[k];
-    if (joint.nv > 0) y.segment(joint.v, joint.nv) += work_[k].qdd;
+  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
+    const TreeJoint& joint = m_.tree[k];
+    if (joint.nv > 0) y.segment(joint.v, joint.nv) += d_.work[k].qdd;
   }
 }
 
 void ArticulatedFormulation::write_contact_powers(VecX& rates, Eigen::Index offset) const {
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const Workspace& w = work_[slot_of_body_[model_.contacts[c].body]];
-    rates(offset + contact_entry(c)) = contact_now_[c].wrench_B.dot(w.velocity);
+    const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[c].body]];
+    rates(offset + m_.contact_entry(c)) = d_.contact_now[c].wrench_B.dot(w.velocity);
   }
 }
 
 void ArticulatedFormulation::solve_contacts_at(const VecX& y) const {
   calc_kinematics(y, true);
-  accumulate_element_loads(y, schedule_time_, rates_, 0, nullptr);
-  solve_with_contacts(schedule_time_);
+  accumulate_element_loads(y, s_.schedule_time, d_.rates, 0, nullptr);
+  solve_with_contacts(s_.schedule_time);
 }
 
 namespace {
@@ -465,30 +432,30 @@ void ArticulatedFormulation::project_feature_positions(VecX& y) const {
   // curved surface's single point moves the least too.
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Position);
   for (Eigen::Index i = 0; i < count; ++i) {
-    const ContactUnknown& row = unknowns_[static_cast<std::size_t>(i)];
+    const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
     const PlaneContact& contact = model_.contacts[row.contact];
-    const ContactStatus& status = contact_status_[row.contact];
-    const Workspace& w = work_[slot_of_body_[contact.body]];
+    const ContactStatus& status = s_.contacts[row.contact];
+    const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
     const Vec3 x_P = w.r_G_W + w.R_WC * row.point_B;
     if (row.anchor < 0) {
-      contact_x_(i) = -(x_P - contact.point_W).dot(contact.normal_W);
+      d_.contact_x(i) = -(x_P - contact.point_W).dot(contact.normal_W);
     } else {
       // Off the anchor: the point's offset, and the small turn R_WB R_anchor^T as a vector.
       const Eigen::AngleAxisd turn(w.R_WC * status.anchor_R_WB.transpose());
-      contact_x_(i) =
+      d_.contact_x(i) =
           -row.linear_W.dot(x_P - status.anchor_W[static_cast<std::size_t>(row.anchor)]) -
           row.angular_W.dot(turn.angle() * turn.axis());
     }
   }
-  calc_contact_matrix(count, schedule_time_);
-  solve_contact_system(count, contact_x_);
-  respond_to_contact_impulses(count, contact_x_, schedule_time_);
-  for (std::size_t k = 0; k < tree_.size(); ++k) {
-    const TreeJoint& joint = tree_[k];
-    const auto& move = work_[k].qdd;
+  calc_contact_matrix(count, s_.schedule_time);
+  solve_contact_system(count, d_.contact_x);
+  respond_to_contact_impulses(count, d_.contact_x, s_.schedule_time);
+  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
+    const TreeJoint& joint = m_.tree[k];
+    const auto& move = d_.work[k].qdd;
     switch (joint.type) {
       case TreeJoint::Type::Free:
-        y.segment<3>(joint.q) += work_[k].R_WC * move.tail<3>();
+        y.segment<3>(joint.q) += d_.work[k].R_WC * move.tail<3>();
         turn_quaternion(y, joint.q + 3, move.head<3>());
         break;
       case TreeJoint::Type::Ball:
@@ -506,7 +473,7 @@ void ArticulatedFormulation::project_feature_positions(VecX& y) const {
 void ArticulatedFormulation::project(double t, VecX& y) const {
   OdeSystem::project(t, y);
   const bool touching =
-      std::any_of(contact_status_.begin(), contact_status_.end(),
+      std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (!touching) return;
   // A sphere's point, or a disk's, ring's or cylinder's rim point, is its support point: moving
@@ -514,12 +481,12 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
   bool features = false;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const ContactSurface::Kind kind = model_.contacts[c].surface.kind;
-    const RoundPart part = contact_status_[c].round_part;
+    const RoundPart part = s_.contacts[c].round_part;
     const bool rim_point =
         (kind == ContactSurface::Kind::Circle || kind == ContactSurface::Kind::Cylinder) &&
         is_end(part);
     features |= kind != ContactSurface::Kind::Sphere && !rim_point &&
-                contact_status_[c].mode != ContactMode::Apart;
+                s_.contacts[c].mode != ContactMode::Apart;
   }
   if (features) {
     calc_kinematics(y, true);
@@ -530,20 +497,20 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
     // one point's height is all a curved surface's contact constrains.
     calc_kinematics(y, false);
     for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-      if (contact_status_[c].mode == ContactMode::Apart) continue;
+      if (s_.contacts[c].mode == ContactMode::Apart) continue;
       const PlaneContact& contact = model_.contacts[c];
-      const Workspace& w = work_[slot_of_body_[contact.body]];
-      const RoundPart part = contact_status_[c].round_part;
+      const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+      const RoundPart part = s_.contacts[c].round_part;
       double height = 0.0;
       if (part == RoundPart::None) {
         height = support_point(contact, w.r_G_W, w.R_WC).height;
       } else {
         // The rim point it touches at (not the other end's, which may be as low).
         const Vec3 n_B = w.R_WC.transpose() * contact.normal_W;
-        const Vec3 u = rim_direction(n_B, contact_status_[c].rim_direction_B);
+        const Vec3 u = rim_direction(n_B, s_.contacts[c].rim_direction_B);
         height = height_above_plane(c, rim_point(round_ends(contact.surface), end_of(part), u));
       }
-      y.segment<3>(tree_[slot_of_body_[contact.body]].q) -= height * contact.normal_W;
+      y.segment<3>(m_.tree[m_.slot_of_body[contact.body]].q) -= height * contact.normal_W;
     }
   }
   // Velocities: the least kinetic-energy change (impulses at the contacts) that zeroes the
@@ -555,16 +522,16 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
   calc_contact_points();
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Projection);
   for (Eigen::Index i = 0; i < count; ++i) {
-    contact_x_(i) = -row_velocity(unknowns_[static_cast<std::size_t>(i)]);
+    d_.contact_x(i) = -row_velocity(d_.unknowns[static_cast<std::size_t>(i)]);
   }
-  contact_rhs_.head(count) = contact_x_.head(count);  // minus each row's velocity before
-  calc_contact_matrix(count, schedule_time_);
-  solve_contact_system(count, contact_x_);
-  apply_contact_impulses(count, contact_x_, schedule_time_, y);
+  d_.contact_rhs.head(count) = d_.contact_x.head(count);  // minus each row's velocity before
+  calc_contact_matrix(count, s_.schedule_time);
+  solve_contact_system(count, d_.contact_x);
+  apply_contact_impulses(count, d_.contact_x, s_.schedule_time, y);
   // An impulse P on a row whose velocity goes from v to 0 does P v / 2 of work.
   for (Eigen::Index i = 0; i < count; ++i) {
-    const std::size_t c = unknowns_[static_cast<std::size_t>(i)].contact;
-    y(ledger_ + contact_entry(c)) -= 0.5 * contact_x_(i) * contact_rhs_(i);
+    const std::size_t c = d_.unknowns[static_cast<std::size_t>(i)].contact;
+    y(m_.ledger + m_.contact_entry(c)) -= 0.5 * d_.contact_x(i) * d_.contact_rhs(i);
   }
 }
 

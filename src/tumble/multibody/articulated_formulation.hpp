@@ -26,42 +26,29 @@
 #include <string>
 #include <vector>
 
-#include "tumble/contact/contact_feature.hpp"
-#include "tumble/contact/plane_contact.hpp"
-#include "tumble/contact/round_contact.hpp"
-
 #include "tumble/dynamics/formulation.hpp"
-#include "tumble/multibody/kinematic_tree.hpp"
+#include "tumble/multibody/articulated_data.hpp"
+#include "tumble/multibody/articulated_model.hpp"
 
 namespace tumble {
 
-// A jump of the speeds at a breakpoint, for the summary.
-// A contact's mode change or impact, for the summary.
-struct ContactEventRecord {
-  double t = 0.0;
-  std::size_t contact = 0;
-  std::string what;  // "touchdown, rolls", "impact: normal speed 4.4 -> 3.5 m/s", "slides", ...
-};
-
-struct JumpRecord {
-  double t = 0.0;
-  std::string what;  // "impulse hit", "lock knob", "motor wheel starts"
-  double kinetic_energy_before = 0.0, kinetic_energy_after = 0.0;
-  Vec3 angular_momentum_before_W = Vec3::Zero();  // about the world origin
-  Vec3 angular_momentum_after_W = Vec3::Zero();
-  std::vector<JointReaction> reaction_impulses;  // N s and N m s, one per Model::joints entry
-};
-
 class ArticulatedFormulation final : public Formulation {
  public:
-  // Throws std::invalid_argument if the joints close a loop.
+  // One run of a shared model, with its own scratch and state.
+  explicit ArticulatedFormulation(std::shared_ptr<const ArticulatedModel> model);
+  // Throws std::invalid_argument if the joints close a loop, or a body in contact is not free.
   explicit ArticulatedFormulation(Model model);
 
+  std::unique_ptr<Formulation> new_run() const override {
+    return std::make_unique<ArticulatedFormulation>(shared_articulated_);
+  }
+  const ArticulatedModel& articulated_model() const { return m_; }
+
   std::string_view name() const override { return "body, joint coordinates"; }
-  Eigen::Index dimension() const override { return dimension_; }
+  Eigen::Index dimension() const override { return m_.dimension; }
   void derivative(double t, const VecX& y, VecX& dydt) const override;
   std::span<const Eigen::Index> unit_quaternion_offsets() const override {
-    return quaternion_offsets_;
+    return m_.quaternion_offsets;
   }
   // Joint coordinates from the bodies' states: each joint takes the relative angular velocity
   // its freedoms allow (a hinge the component along its axis); velocities the joints forbid are
@@ -79,7 +66,7 @@ class ArticulatedFormulation final : public Formulation {
   // polyhedron's centre of pressure reaches its feature's side: it tips), and stick-slip
   // (sliding: the slip stops; rolling or sticking: the friction it needs reaches the cone's
   // edge).
-  std::span<const EventSpec> events() const override { return event_specs_; }
+  std::span<const EventSpec> events() const override { return m_.event_specs; }
   void event_functions(double t, const VecX& y, VecX& g) const override;
   EventAction on_event(std::size_t event_index, double t, VecX& y) override;
   // Also puts each touching contact back on the plane and its velocity on the mode's
@@ -89,123 +76,27 @@ class ArticulatedFormulation final : public Formulation {
   // While a contact is apart: no step so long that a point of its surface could dip through the
   // plane and back unseen (contact/landing_bound.hpp).
   double step_limit(double t, const VecX& y) const override;
-  const std::vector<ContactEventRecord>& contact_events() const { return contact_events_; }
-  // Why the bodies cannot start where the scenario puts them (a contact inside its plane, or
-  // touching it and moving into it), if they cannot.
-  struct ContactStartProblem {
-    std::size_t contact = 0;
-    std::string why;
-  };
-  std::optional<ContactStartProblem> contact_start_problem(const VecX& y0) const;
+  const std::vector<ContactEventRecord>& contact_events() const { return hybrid_.contact_events; }
+  std::optional<StartProblem> start_problem(const VecX& y0) const override;
 
-  std::vector<std::string> element_names() const override;
+  std::vector<std::string> element_names() const override { return m_.element_names(); }
+  bool keeps_work_ledger() const override { return true; }
   void calc_row_extras(double t, const VecX& y, RowExtras& extras) const override;
 
-  const std::vector<TreeJoint>& tree() const { return tree_; }
-  const std::vector<JumpRecord>& jumps() const { return jumps_; }
+  const std::vector<TreeJoint>& tree() const { return m_.tree; }
+  const std::vector<JumpRecord>& jumps() const { return hybrid_.jumps; }
   // The hinge angle and rate of a model joint (its sign as the scenario states it).
-  double hinge_angle(const VecX& y, std::size_t joint) const;
-  double hinge_rate(const VecX& y, std::size_t joint) const;
+  double hinge_angle(const VecX& y, std::size_t joint) const { return m_.hinge_angle(y, joint); }
+  double hinge_rate(const VecX& y, std::size_t joint) const override {
+    return m_.hinge_rate(y, joint);
+  }
 
  private:
-  using SpeedMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-  using SpeedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
-  // Per tree joint, what the passes compute (child axes at the child's COM).
-  struct Workspace {
-    Mat3 R_WC = Mat3::Identity();
-    Vec3 r_G_W = Vec3::Zero();
-    Transform X;                       // parent coordinates -> child coordinates
-    Vec6 velocity = Vec6::Zero();      // spatial velocity of the child
-    Vec6 bias = Vec6::Zero();          // c = v x (S qdot)
-    Vec6 external = Vec6::Zero();      // applied force (or impulse) on the child, child axes
-    Mat6 IA = Mat6::Zero();            // articulated inertia
-    Vec6 pA = Vec6::Zero();            // articulated bias force
-    MotionSubspace U;                  // IA S
-    SpeedMatrix D_inv;                 // (S^T IA S)^-1
-    SpeedVector u;                     // tau - S^T pA
-    SpeedVector tau;                   // generalized force on the joint's freedoms
-    SpeedVector qdd;                   // joint accelerations (or speed jumps)
-    Vec6 acceleration = Vec6::Zero();  // spatial acceleration (with -g at ground)
-    bool known = false;                // prescribed: qdd is given, tau follows
-    Vec6 applied = Vec6::Zero();       // the loads in `external` before contact forces join them
-  };
-  enum class ContactMode { Apart = 0, Sliding = 1, Rolling = 2 };  // rolling: or sticking
-  struct ContactStatus {
-    ContactMode mode = ContactMode::Apart;
-    ContactFeature feature;  // a polyhedron's touching vertex, edge or face (empty: apart)
-    RoundPart round_part = RoundPart::None;  // a round body's touching part
-    // Where a round body's rim points were at the last step (body axes, unit): refreshed after
-    // each step near flat (rim_direction_kept_up), it fixes them where a face is flat
-    // (round_contact.hpp's rim_direction).
-    Vec3 rim_direction_B = Vec3::UnitX();
-    // Slip direction (slip_W's) while the slip speed is ~0.
-    Vec3 slide_direction_W = Vec3::UnitX();
-    // A slip that starts from rolling turns from slide_direction_W at this rate (1/s, normal to
-    // it) from slide_start_t on, until it is above slip_zero (articulated_slip_onset.cpp).
-    Vec3 slide_turn_W = Vec3::Zero();
-    double slide_start_t = 0.0;
-    bool slip_grown = false;      // the slip has been above slip_zero at the end of a step
-    bool slip_left_near = false;  // ... and above kSlipStoppedNear slip_zero
-    double slip_last_step = 0.0;  // m/s, sliding: the slip at the end of the last step
-    // A grown slip left below slip_zero by the last step stops at slip_stop_by (s).
-    bool slip_stop_armed = false;
-    double slip_stop_by = 0.0;
-    // Settled landings in a row that nothing held, from cascade_first_t; the last landing's t.
-    int cascade_landings = 0;
-    double cascade_first_t = 0.0, cascade_last_t = 0.0;
-    double slip_zero = 0.0;        // m/s: slower slip counts as none
-    double slip_floor = 0.0;       // m/s: a grown slip is followed down to this
-    double settle_speed = 0.0;     // m/s: slower touchdowns settle instead of bouncing
-    double touching_height = 0.0;  // m: nearer the plane counts as touching
-    double landing_height = 0.0;   // m: vertices this near the plane land with a touchdown
-    double time_scale = 0.0;       // s: the contact's size over its speed scale
-    // Where a polyhedron (a cone on its apex, a round body on a face) sticks (mode rolling): the
-    // points its rows hold (a vertex or face centroid, or an edge's ends) and the body's
-    // orientation, so that projection keeps it exactly there rather than letting round-off walk it
-    // away.
-    std::array<Vec3, 2> anchor_W = {Vec3::Zero(), Vec3::Zero()};
-    Mat3 anchor_R_WB = Mat3::Identity();
-  };
-  // What calc_contact_points and solve_with_contacts found for each contact at the current y.
-  // The reference point O is where slip is taken and friction acts: a curved surface's contact
-  // point, a polyhedron's feature centroid (apart: its lowest vertex).
-  struct ContactNow {
-    // Touchdown: the curved surface's contact point, or the lowest polyhedron vertex not in the
-    // feature, its height and its velocity along the normal.
-    SupportPoint support;
-    double support_normal_speed = 0.0;
-    Vec3 n_B = Vec3::UnitZ();
-    Vec3 reference_B = Vec3::Zero();       // O from the COM, body axes
-    Vec3 reference_rate_B = Vec3::Zero();  // O's motion over the body (curved surfaces)
-    // The points whose normal motion the contact constrains (the vertex, the edge's ends, three
-    // of the face's corners; curved: O).
-    std::array<Vec3, 3> normal_points_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    // Their motion over the body (curved surfaces).
-    std::array<Vec3, 3> normal_point_rates_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    int normal_point_count = 0;
-    double spin_radius = 0.0;        // torsional friction radius of the feature (0 at a point)
-    Vec3 velocity_W = Vec3::Zero();  // of the body's material point at O
-    // Slip: O's tangential velocity, and the spin about the normal times the feature's spin
-    // radius as the component along the normal (a polyhedron's face or edge; 0 otherwise).
-    Vec3 slip_W = Vec3::Zero();
-    Vec6 wrench_B = Vec6::Zero();          // the contact's (moment about the COM; force), body axes
-    Vec3 force_W = Vec3::Zero();           // its force
-    double normal_force = 0.0;             // force_W's component along the plane's normal
-    Vec3 friction_W = Vec3::Zero();        // force_W's tangential part
-    Vec3 moment_about_O_B = Vec3::Zero();  // its moment about O, body axes
-  };
-  // One unknown of the contact forces and the constraint row that goes with it: the row is
-  // linear_W . (velocity or acceleration of the material point at point_B) + angular_W . omega.
-  struct ContactUnknown {
-    std::size_t contact = 0;
-    Vec3 point_B = Vec3::Zero();
-    Vec3 point_rate_B = Vec3::Zero();  // the point's motion over the body
-    Vec3 linear_W = Vec3::Zero();
-    Vec3 angular_W = Vec3::Zero();
-    bool normal = false;  // a row of the normal motion (restitution applies at impacts)
-    int anchor = -1;      // a sticking polyhedron's row: the ContactStatus::anchor_W it holds
-    Vec6 wrench_B = Vec6::Zero();  // per unit of the unknown: (moment about the COM; force)
-  };
+  using Workspace = ArticulatedData::Workspace;
+  using ContactNow = ArticulatedData::ContactNow;
+  using ContactUnknown = ArticulatedData::ContactUnknown;
+  using SpeedMatrix = ArticulatedData::SpeedMatrix;
+  using SpeedVector = ArticulatedData::SpeedVector;
   // Positions and velocities of every body from y (forward pass), into the workspace.
   void calc_kinematics(const VecX& y, bool with_velocities) const;
   // The articulated-body passes after calc_kinematics, in the modes of `mode_time`: the
@@ -216,22 +107,15 @@ class ArticulatedFormulation final : public Formulation {
   // the others do not move under loads on it (their workspaces are left as they were).
   static constexpr std::size_t kEveryTree = static_cast<std::size_t>(-1);
   void solve(double mode_time, bool impulsive, std::size_t only_tree = kEveryTree) const;
-  // Locked hinges, hinges driven at a speed, fixed joints: their acceleration is known.
-  bool prescribed(std::size_t tree_index, double mode_time) const;
   // Applied loads and force elements on each body (into Workspace::external); their powers into
   // rates from `offset` on, in ledger order; the springs' stored energy into elastic_energy.
   void accumulate_element_loads(const VecX& y, double mode_time, VecX& rates, Eigen::Index offset,
                                 double* elastic_energy) const;
-  // Ledger entry of the first motor (after the loads, springs and torsional springs).
-  Eigen::Index first_motor_entry() const;
   // Motors' powers (tau theta', after solve()) and zero for impulses and locks, into rates from
   // offset + first_motor_entry() to the end.
   void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
   JointReaction reaction_of(std::size_t model_joint) const;
 
-  // Contacts: their forces and projection (articulated_contacts.cpp), their modes, events and
-  // impacts (articulated_contact_modes.cpp).
-  void set_up_contacts();
   // The contacts' modes at the start: touching ones roll or slide, the others are apart.
   void begin_contacts(double t0, const VecX& y);
   // After a breakpoint (a load switched, an impulse): the touching contacts' modes again.
@@ -375,40 +259,17 @@ class ArticulatedFormulation final : public Formulation {
   // come kCascadeLandings in a row, each going apart at once (no consistent mode).
   void check_landing_cascade(std::size_t contact, double t, double speed);
   void note_contact(double t, std::size_t contact, std::string what);
-  // The ledger entry of a contact (after the locks).
-  Eigen::Index contact_entry(std::size_t contact) const;
   void write_contact_powers(VecX& rates, Eigen::Index offset) const;
   double kinetic_energy() const;
   Vec3 angular_momentum_about_origin() const;  // from states_
 
-  std::vector<TreeJoint> tree_;
-  std::vector<std::size_t> slot_of_body_;  // tree index of each body's inbound joint
-  std::vector<bool> has_children_;         // per tree joint: another body hangs from its child
-  std::vector<std::size_t> tree_root_;     // per tree joint: its ancestor hung from ground
-  std::vector<int> slot_of_joint_;         // tree index of each model joint
-  std::vector<Eigen::Index> quaternion_offsets_;
-  Eigen::Index speeds_ = 0, ledger_ = 0, dimension_ = 0;
-  // Ledger order: loads, springs, torsional springs, motors, impulses, locks.
-  std::vector<std::size_t> motor_joints_, lock_joints_;
-  std::vector<JumpRecord> jumps_;
-  std::vector<ContactStatus> contact_status_;
-  std::vector<EventSpec> event_specs_;
-  std::vector<ContactEventRecord> contact_events_;
-  mutable std::vector<ContactNow> contact_now_;
-  mutable std::vector<ContactUnknown> unknowns_;  // sized to 6 per contact
-  mutable MatX contact_matrix_;
-  mutable VecX contact_rhs_, contact_x_;
-  mutable std::vector<int> touching_;  // scratch of find_touching_vertices, reserved
-  VecX impact_y_;                      // scratch of impact()
-  VecX onset_y_, onset_dydt_;          // scratch of turn_starting_slip()
-  // The time of the state being evaluated: a starting slip's direction turns with it.
-  mutable double time_now_ = 0.0;
-  // The time of the last event handled, once on_event is done (watched_height).
-  double last_event_t_ = -std::numeric_limits<double>::infinity();
-  // Scratch of derivative() and the other const queries, sized once here: no allocation per call.
-  mutable std::vector<Workspace> work_;
-  mutable std::vector<BodyState> states_;
-  mutable VecX rates_;
+  std::shared_ptr<const ArticulatedModel> shared_articulated_;
+  const ArticulatedModel& m_;  // *shared_articulated_: constant, shared by every run
+  // This run's scratch, written by const evaluations (derivative, event functions, rows): a
+  // formulation serves one thread at a time.
+  std::unique_ptr<ArticulatedData> data_;
+  ArticulatedData& d_;  // *data_
+  HybridState& s_;      // hybrid_: the modes and records (Formulation::hybrid_state)
 };
 
 }  // namespace tumble

@@ -33,8 +33,8 @@ constexpr double kOnsetTurnStep = 1e-5;
 }  // namespace
 
 bool ArticulatedFormulation::start_sliding(std::size_t c, double t, const VecX& y) {
-  ContactStatus& status = contact_status_[c];
-  const Vec3 d0 = pushed_direction(c);  // from the rolling forces in contact_now_
+  ContactStatus& status = s_.contacts[c];
+  const Vec3 d0 = pushed_direction(c);  // from the rolling forces in d_.contact_now
   status.mode = ContactMode::Sliding;
   status.slide_direction_W = d0;
   status.slide_turn_W.setZero();
@@ -56,23 +56,23 @@ bool ArticulatedFormulation::start_sliding(std::size_t c, double t, const VecX& 
 }
 
 bool ArticulatedFormulation::turn_starting_slip(std::size_t c, double t, const VecX& y) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   const Vec3 d0 = status.slide_direction_W;
   const Vec3& n = model_.contacts[c].normal_W;
 
   // The jerk with the direction held, along the motion the derivative gives.
   const double dt = kOnsetTimeStep * status.time_scale;
-  derivative(t, y, onset_dydt_);
-  onset_y_ = y + dt * onset_dydt_;
-  const Vec3 after = slip_acceleration_at(c, onset_y_, d0);
-  onset_y_ = y - dt * onset_dydt_;
-  const Vec3 before = slip_acceleration_at(c, onset_y_, d0);
+  derivative(t, y, d_.onset_dydt);
+  d_.onset_y = y + dt * d_.onset_dydt;
+  const Vec3 after = slip_acceleration_at(c, d_.onset_y, d0);
+  d_.onset_y = y - dt * d_.onset_dydt;
+  const Vec3 before = slip_acceleration_at(c, d_.onset_y, d0);
   const Vec3 jerk_held = (after - before) / (2.0 * dt);
 
   // Slip space: the plane's tangents, and the normal too where the contact has a spin radius
   // (slip_W's spin component). Its basis: d0, then the directions d may turn in.
   std::array<Vec3, 3> basis = {d0, Vec3::Zero(), Vec3::Zero()};
-  const bool with_spin = contact_now_[c].spin_radius > 0.0;
+  const bool with_spin = d_.contact_now[c].spin_radius > 0.0;
   int turns = 1;
   if (with_spin) {
     plane_basis(d0, basis[1], basis[2]);
@@ -105,9 +105,9 @@ bool ArticulatedFormulation::turn_starting_slip(std::size_t c, double t, const V
 }
 
 void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, const VecX& y) {
-  ContactStatus& status = contact_status_[c];
+  ContactStatus& status = s_.contacts[c];
   const ContactStatus sliding = status;
-  const ContactNow& now = contact_now_[c];
+  const ContactNow& now = d_.contact_now[c];
   std::array<Vec3, 4> points_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   std::size_t count = 0;
   for (int k = 0; k < now.normal_point_count; ++k) {
@@ -139,7 +139,7 @@ void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, con
 
 Vec3 ArticulatedFormulation::slip_acceleration_at(std::size_t c, const VecX& y,
                                                   const Vec3& slide_W) {
-  contact_status_[c].slide_direction_W = slide_W;
+  s_.contacts[c].slide_direction_W = slide_W;
   solve_contacts_at(y);
   return slip_acceleration(c);
 }
@@ -147,8 +147,8 @@ Vec3 ArticulatedFormulation::slip_acceleration_at(std::size_t c, const VecX& y,
 Vec3 ArticulatedFormulation::slip_acceleration(std::size_t c) const {
   // slip_W = the tangential part of O's velocity + rho (omega . n) n, with O moving over the
   // body at its rate and n fixed in the world.
-  const ContactNow& now = contact_now_[c];
-  const Workspace& w = work_[slot_of_body_[model_.contacts[c].body]];
+  const ContactNow& now = d_.contact_now[c];
+  const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[c].body]];
   const Vec3& n = model_.contacts[c].normal_W;
   const Vec3 a_O_W = moving_point_acceleration_W(w, now.reference_B, now.reference_rate_B);
   const double spin_rate = n.dot(w.R_WC * w.acceleration.head<3>());

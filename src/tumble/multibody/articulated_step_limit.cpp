@@ -24,15 +24,15 @@ constexpr double kTurningMargin = 2.0;
 double ArticulatedFormulation::step_limit(double t, const VecX& y) const {
   double limit = std::numeric_limits<double>::infinity();
   const bool any_apart =
-      std::any_of(contact_status_.begin(), contact_status_.end(),
+      std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode == ContactMode::Apart; });
   if (!any_apart) return limit;
-  time_now_ = t;
+  d_.time_now = t;
   solve_contacts_at(y);  // the accelerations, for how fast the points' normal velocities turn
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    if (contact_status_[c].mode != ContactMode::Apart) continue;
+    if (s_.contacts[c].mode != ContactMode::Apart) continue;
     const PlaneContact& contact = model_.contacts[c];
-    const Workspace& w = work_[slot_of_body_[contact.body]];
+    const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
     const Vec3& n = contact.normal_W;
     const SurfaceMotion motion{w.r_G_W, w.R_WC, w.R_WC * w.velocity.tail<3>(),
                                w.R_WC * w.velocity.head<3>()};
@@ -44,8 +44,8 @@ double ArticulatedFormulation::step_limit(double t, const VecX& y) const {
     const double turning =
         std::max(0.0, -n.dot(a_G_W)) +
         kTurningMargin * (w.acceleration.head<3>().norm() + motion.omega_W.squaredNorm()) * reach;
-    limit = std::min(
-        limit, time_to_reach_depth(contact, motion, turning, contact_status_[c].landing_height));
+    limit = std::min(limit,
+                     time_to_reach_depth(contact, motion, turning, s_.contacts[c].landing_height));
   }
   return limit;
 }

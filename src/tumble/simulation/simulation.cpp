@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "tumble/math/rotation.hpp"
-#include "tumble/multibody/articulated_formulation.hpp"
 #include "tumble/simulation/exact_integrator.hpp"
+#include "tumble/simulation/make_formulation.hpp"
 #include "tumble/simulation/model_from_scenario.hpp"
 
 namespace tumble {
@@ -46,12 +46,10 @@ void check_initial_velocities(const Scenario& scenario, const Formulation& formu
     }
   }
   // A speed motor running from the start fixes its hinge's rate from the start.
-  const auto* articulated = dynamic_cast<const ArticulatedFormulation*>(&formulation);
-  if (articulated == nullptr) return;
   for (std::size_t j = 0; j < scenario.joints.size(); ++j) {
     const MotorSpec& motor = scenario.joints[j].motor;
     if (motor.kind != MotorSpec::Kind::Speed || !(motor.from <= 0.0 && 0.0 < motor.to)) continue;
-    const double rate = articulated->hinge_rate(y0, j);
+    const double rate = formulation.hinge_rate(y0, j);
     if (std::abs(rate - motor.value) > 1e-9 * (std::abs(rate) + std::abs(motor.value)) + 1e-12) {
       throw ScenarioError(
           motor.where, "joints." + scenario.joints[j].name + ".motor",
@@ -91,12 +89,9 @@ PreparedSimulation prepare_simulation(const Scenario& scenario) {
   const std::vector<BodyState> given = initial_states(scenario);
   p.formulation->pack(given, p.y0);
   check_initial_velocities(scenario, *p.formulation, given, p.y0);
-  if (const auto* articulated = dynamic_cast<const ArticulatedFormulation*>(p.formulation.get())) {
-    if (const auto problem = articulated->contact_start_problem(p.y0)) {
-      const ContactSpec& contact = scenario.contacts[problem->contact];
-      throw ScenarioError(contact.where, fmt::format("contacts[{}]", problem->contact),
-                          problem->why);
-    }
+  if (const auto problem = p.formulation->start_problem(p.y0)) {
+    const ContactSpec& contact = scenario.contacts[problem->contact];
+    throw ScenarioError(contact.where, fmt::format("contacts[{}]", problem->contact), problem->why);
   }
   return p;
 }
@@ -161,6 +156,9 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObs
                             simulation.y0, simulation.t_end, simulation.options, on_row);
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const HybridState& hybrid = simulation.formulation->hybrid_state();
+  result.jumps = hybrid.jumps;
+  result.contact_events = hybrid.contact_events;
   return result;
 }
 

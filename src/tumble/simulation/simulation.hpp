@@ -58,6 +58,10 @@ struct SimulationResult {
   std::size_t rows = 0;
   double wall_seconds = 0.0;  // integration and output, not reading the scenario
   RowExtras last_extras;      // of the last row: the work each element did over the run
+  // What happened on the way: the jumps at breakpoints (impulses, locks, motor starts) and the
+  // contacts' mode changes and impacts, in time order.
+  std::vector<JumpRecord> jumps;
+  std::vector<ContactEventRecord> contact_events;
 };
 
 SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe);

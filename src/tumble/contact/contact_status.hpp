@@ -1,0 +1,52 @@
+#pragma once
+// What a plane contact is doing during a run: its mode (apart, sliding, rolling or sticking), the
+// part of the body that touches, where it sticks, how its slip has gone, and the scales, fixed at
+// the run's start, that say what counts as touching, as no slip or as a settling landing. It is
+// part of a run's state (HybridState): copying it with y checkpoints the contact exactly.
+#include <array>
+
+#include "tumble/contact/contact_feature.hpp"
+#include "tumble/contact/round_contact.hpp"
+
+namespace tumble {
+
+enum class ContactMode { Apart = 0, Sliding = 1, Rolling = 2 };  // rolling: or sticking
+
+struct ContactStatus {
+  ContactMode mode = ContactMode::Apart;
+  ContactFeature feature;  // a polyhedron's touching vertex, edge or face (empty: apart)
+  RoundPart round_part = RoundPart::None;  // a round body's touching part
+  // Where a round body's rim points were at the last step (body axes, unit): refreshed after
+  // each step near flat (rim_direction_kept_up), it fixes them where a face is flat
+  // (round_contact.hpp's rim_direction).
+  Vec3 rim_direction_B = Vec3::UnitX();
+  // Slip direction (slip_W's) while the slip speed is ~0.
+  Vec3 slide_direction_W = Vec3::UnitX();
+  // A slip that starts from rolling turns from slide_direction_W at this rate (1/s, normal to
+  // it) from slide_start_t on, until it is above slip_zero (articulated_slip_onset.cpp).
+  Vec3 slide_turn_W = Vec3::Zero();
+  double slide_start_t = 0.0;
+  bool slip_grown = false;      // the slip has been above slip_zero at the end of a step
+  bool slip_left_near = false;  // ... and above kSlipStoppedNear slip_zero
+  double slip_last_step = 0.0;  // m/s, sliding: the slip at the end of the last step
+  // A grown slip left below slip_zero by the last step stops at slip_stop_by (s).
+  bool slip_stop_armed = false;
+  double slip_stop_by = 0.0;
+  // Settled landings in a row that nothing held, from cascade_first_t; the last landing's t.
+  int cascade_landings = 0;
+  double cascade_first_t = 0.0, cascade_last_t = 0.0;
+  double slip_zero = 0.0;        // m/s: slower slip counts as none
+  double slip_floor = 0.0;       // m/s: a grown slip is followed down to this
+  double settle_speed = 0.0;     // m/s: slower touchdowns settle instead of bouncing
+  double touching_height = 0.0;  // m: nearer the plane counts as touching
+  double landing_height = 0.0;   // m: vertices this near the plane land with a touchdown
+  double time_scale = 0.0;       // s: the contact's size over its speed scale
+  // Where a polyhedron (a cone on its apex, a round body on a face) sticks (mode rolling): the
+  // points its rows hold (a vertex or face centroid, or an edge's ends) and the body's
+  // orientation, so that projection keeps it exactly there rather than letting round-off walk it
+  // away.
+  std::array<Vec3, 2> anchor_W = {Vec3::Zero(), Vec3::Zero()};
+  Mat3 anchor_R_WB = Mat3::Identity();
+};
+
+}  // namespace tumble

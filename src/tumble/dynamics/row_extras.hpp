@@ -1,0 +1,32 @@
+#pragma once
+// What a row of output reports besides the bodies' states, for formulations with joints, force
+// elements and contacts (empty otherwise).
+#include <vector>
+
+#include "tumble/math/types.hpp"
+
+namespace tumble {
+
+struct JointReaction {
+  Vec3 F_W = Vec3::Zero();    // force the joint's first body exerts on its second, world, N
+  Vec3 M_J_W = Vec3::Zero();  // moment of it about the joint point, world, N m
+};
+struct ElementWork {
+  double power = 0.0;  // W, rate of work on the bodies now
+  double work = 0.0;   // J, done since t0 (impulses and locks: at their instants)
+};
+// A contact's force and how it touches (docs/scenario.md, the CSV's C.* columns).
+struct ContactOutput {
+  double normal_force = 0.0;       // N, >= 0 (0 when apart)
+  Vec3 friction_W = Vec3::Zero();  // N, the tangential force on the body, world
+  double slip_speed = 0.0;         // m/s, of the body's material point at the contact
+  int mode = 0;                    // 0 apart, 1 sliding, 2 rolling / sticking
+};
+struct RowExtras {
+  std::vector<JointReaction> joints;    // one per Model::joints entry
+  std::vector<ContactOutput> contacts;  // one per Model::contacts entry
+  std::vector<ElementWork> elements;    // one per element_names() entry
+  double elastic_energy = 0.0;          // J, stored in springs: part of PE
+};
+
+}  // namespace tumble

@@ -1,0 +1,107 @@
+#include "tumble/multibody/articulated_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tumble {
+
+ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
+    : shared_model(std::move(model_in)), model(*shared_model), tree(build_kinematic_tree(model)) {
+  slot_of_body.assign(body_count(), 0);
+  slot_of_joint.assign(model.joints.size(), -1);
+  Eigen::Index coordinates = 0, speed_count = 0;
+  for (std::size_t k = 0; k < tree.size(); ++k) {
+    const TreeJoint& joint = tree[k];
+    slot_of_body[joint.child] = k;
+    if (joint.model_joint >= 0)
+      slot_of_joint[static_cast<std::size_t>(joint.model_joint)] = static_cast<int>(k);
+    if (joint.type == TreeJoint::Type::Free) quaternion_offsets.push_back(joint.q + 3);
+    if (joint.type == TreeJoint::Type::Ball) quaternion_offsets.push_back(joint.q);
+    coordinates += joint.nq;
+    speed_count += joint.nv;
+  }
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const JointModel& joint = model.joints[j];
+    const bool hinge = joint.type == JointModel::Type::Hinge;
+    if (joint.motor.kind != HingeMotor::Kind::None) {
+      if (!hinge) throw std::logic_error("a motor needs a hinge; the reader checks this");
+      motor_joints.push_back(j);
+    }
+    if (std::isfinite(joint.lock_at)) {
+      if (!hinge) throw std::logic_error("a lock needs a hinge; the reader checks this");
+      lock_joints.push_back(j);
+    }
+  }
+  speeds = coordinates;
+  ledger = coordinates + speed_count;
+  dimension = ledger + static_cast<Eigen::Index>(element_names().size());
+
+  has_children.assign(tree.size(), false);
+  tree_root.assign(tree.size(), 0);
+  for (std::size_t k = 0; k < tree.size(); ++k) {  // parents come before their children
+    const TreeJoint& joint = tree[k];
+    if (joint.parent == kGround) {
+      tree_root[k] = k;
+    } else {
+      const std::size_t parent = slot_of_body[static_cast<std::size_t>(joint.parent)];
+      has_children[parent] = true;
+      tree_root[k] = tree_root[parent];
+    }
+  }
+
+  for (const PlaneContact& contact : model.contacts) {
+    if (tree[slot_of_body[contact.body]].type != TreeJoint::Type::Free) {
+      throw std::invalid_argument("contact '" + contact.name + "': body '" +
+                                  model.bodies[contact.body].name +
+                                  "' is held by a joint; a body in contact must be free");
+    }
+    event_specs.push_back({contact.name + " touchdown", EventDirection::Falling});
+    event_specs.push_back({contact.name + " lift-off", EventDirection::Falling});
+    event_specs.push_back({contact.name + " stick-slip", EventDirection::Falling});
+    most_contact_vertices = std::max(most_contact_vertices, contact.surface.vertices.size());
+  }
+}
+
+std::vector<std::string> ArticulatedModel::element_names() const {
+  std::vector<std::string> names;
+  for (const AppliedLoad& load : model.loads) names.push_back(load.name);
+  for (const LinearSpring& spring : model.springs) names.push_back(spring.name);
+  for (const TorsionalSpring& spring : model.torsional_springs) names.push_back(spring.name);
+  for (const std::size_t j : motor_joints) names.push_back(model.joints[j].name + ".motor");
+  for (const ImpulseLoad& impulse : model.impulses) names.push_back(impulse.name);
+  for (const std::size_t j : lock_joints) names.push_back(model.joints[j].name + ".lock");
+  for (const PlaneContact& contact : model.contacts) names.push_back(contact.name);
+  return names;
+}
+
+bool ArticulatedModel::prescribed(std::size_t k, double mode_time) const {
+  const TreeJoint& joint = tree[k];
+  if (joint.nv == 0) return true;
+  if (joint.model_joint < 0) return false;
+  const JointModel& model_joint = model.joints[static_cast<std::size_t>(joint.model_joint)];
+  if (mode_time >= model_joint.lock_at) return true;
+  return model_joint.motor.kind == HingeMotor::Kind::Speed &&
+         model_joint.motor.active_at(mode_time);
+}
+
+Eigen::Index ArticulatedModel::first_motor_entry() const {
+  return static_cast<Eigen::Index>(model.loads.size() + model.springs.size() +
+                                   model.torsional_springs.size());
+}
+
+Eigen::Index ArticulatedModel::contact_entry(std::size_t contact) const {
+  return first_motor_entry() +
+         static_cast<Eigen::Index>(motor_joints.size() + model.impulses.size() +
+                                   lock_joints.size() + contact);
+}
+
+double ArticulatedModel::hinge_angle(const VecX& y, std::size_t joint) const {
+  return y(tree[static_cast<std::size_t>(slot_of_joint[joint])].q);
+}
+
+double ArticulatedModel::hinge_rate(const VecX& y, std::size_t joint) const {
+  return y(tree[static_cast<std::size_t>(slot_of_joint[joint])].v);
+}
+
+}  // namespace tumble

@@ -1,0 +1,53 @@
+#pragma once
+// The constant part of a system in joint coordinates: the Model, the kinematic tree its joints
+// form, and where each joint's coordinates and speeds and each element's work sit in the state
+// y = [ joint coordinates | joint speeds | work ledger ]. Built once from a Model and shared
+// (std::shared_ptr<const ArticulatedModel>) by every run of it, on any thread: nothing here
+// changes during a run. A run's scratch is its ArticulatedData, its modes and records its
+// HybridState.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tumble/dynamics/model.hpp"
+#include "tumble/integrators/ode_system.hpp"
+#include "tumble/multibody/kinematic_tree.hpp"
+
+namespace tumble {
+
+struct ArticulatedModel {
+  // Throws std::invalid_argument if the joints close a loop, or a body in contact is not free.
+  explicit ArticulatedModel(std::shared_ptr<const Model> model);
+
+  std::shared_ptr<const Model> shared_model;
+  const Model& model;  // *shared_model
+
+  std::vector<TreeJoint> tree;            // parents before their children
+  std::vector<std::size_t> slot_of_body;  // tree index of each body's inbound joint
+  std::vector<bool> has_children;         // per tree joint: another body hangs from its child
+  std::vector<std::size_t> tree_root;     // per tree joint: its ancestor hung from ground
+  std::vector<int> slot_of_joint;         // tree index of each model joint
+  std::vector<Eigen::Index> quaternion_offsets;
+  // Where the speeds and the work ledger start in y, and y's size.
+  Eigen::Index speeds = 0, ledger = 0, dimension = 0;
+  // Ledger order: loads, springs, torsional springs, motors, impulses, locks, contacts.
+  std::vector<std::size_t> motor_joints, lock_joints;
+  // Three per contact: touchdown, support (lift-off or tipping), stick-slip.
+  std::vector<EventSpec> event_specs;
+  std::size_t most_contact_vertices = 0;  // of any contact's surface
+
+  std::size_t body_count() const { return model.bodies.size(); }
+  // The ledger's entries by name, in order.
+  std::vector<std::string> element_names() const;
+  // Locked hinges, hinges driven at a speed, fixed joints: their acceleration is known.
+  bool prescribed(std::size_t tree_index, double mode_time) const;
+  // Ledger entry of the first motor (after the loads, springs and torsional springs).
+  Eigen::Index first_motor_entry() const;
+  // The ledger entry of a contact (after the locks).
+  Eigen::Index contact_entry(std::size_t contact) const;
+  // The hinge angle and rate of a model joint (its sign as the scenario states it).
+  double hinge_angle(const VecX& y, std::size_t joint) const;
+  double hinge_rate(const VecX& y, std::size_t joint) const;
+};
+
+}  // namespace tumble

@@ -134,10 +134,6 @@ int run_command(const RunArguments& args) {
   } catch (const ScenarioError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInvalidScenario;
-  } catch (const std::invalid_argument& e) {
-    const SourceLocation& at = scenario.simulate.where;
-    fmt::print(stderr, "{}\n", ScenarioError(at, "simulate.integrator", e.what()).what());
-    return kInvalidScenario;
   }
 
   const std::filesystem::path out_dir(args.out_dir);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Configures and builds tumble. Usage: scripts/build.sh [release|debug|sanitize]
+# Configures and builds tumble. Usage: scripts/build.sh [release|debug|sanitize|tsan] [TARGET...]
 # The build lands in build/<kind>/; the tumble executable is build/<kind>/tumble.
 set -euo pipefail
 kind=${1:-release}
@@ -8,7 +8,11 @@ case "$kind" in
   release) flags=(-DCMAKE_BUILD_TYPE=Release) ;;
   debug) flags=(-DCMAKE_BUILD_TYPE=Debug) ;;
   sanitize) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUMBLE_SANITIZE=ON) ;;
-  *) echo "usage: scripts/build.sh [release|debug|sanitize]" >&2; exit 2 ;;
+  tsan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUMBLE_THREAD_SANITIZE=ON) ;;
+  *) echo "usage: scripts/build.sh [release|debug|sanitize|tsan] [TARGET...]" >&2; exit 2 ;;
 esac
 cmake -S . -B "build/$kind" -G Ninja "${flags[@]}" >/dev/null
-cmake --build "build/$kind" -j "$(nproc)"
+shift || true
+targets=()
+for target in "$@"; do targets+=(--target "$target"); done
+cmake --build "build/$kind" -j "$(nproc)" "${targets[@]}"

@@ -48,6 +48,11 @@ class Dop853 final : public Integrator {
 
   void start(OdeSystem& system, double t0, const VecX& y0, double t_end) override;
   void restart(double t, const VecX& y) override;
+  std::unique_ptr<Integrator> clone_onto(OdeSystem& system) const override {
+    auto copy = std::make_unique<Dop853>(*this);
+    copy->system_ = &system;
+    return copy;
+  }
   StepOutcome step(double t_stop) override;
   void dense_output(double t, VecX& y_out) const override;
 

@@ -28,7 +28,8 @@ bool crosses(double g_before, double g_after, EventDirection direction) {
 // always a last row at t_end.
 class OutputClock {
  public:
-  OutputClock(double t0, double t_end, double every) : t0_(t0), t_end_(t_end), every_(every) {}
+  OutputClock(double t0, double t_end, double every, long next_row)
+      : t0_(t0), t_end_(t_end), every_(every), k_(next_row) {}
   bool every_step() const { return every_ <= 0.0; }
   double next() const {
     const double t = t0_ + static_cast<double>(k_) * every_;
@@ -36,29 +37,30 @@ class OutputClock {
     return t > t_end_ - 1e-12 * std::max(1.0, std::abs(t_end_)) ? t_end_ : t;
   }
   void advance() { ++k_; }
+  long next_row() const { return k_; }
 
  private:
   double t0_, t_end_, every_;
-  long k_ = 1;
+  long k_;
 };
 
 }  // namespace
 
 namespace {
 
-void drive(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0, double t_end,
-           const DriverOptions& options, const Observer& observe, IntegrationReport& report) {
+// The steps from where `position` says the run stands (after start, or at a checkpoint) to
+// t_end.
+void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, double t_end,
+           const DriverOptions& options, const Observer& observe,
+           const CheckpointObserver& on_checkpoint, IntegrationReport& report) {
   const std::size_t event_count = system.events().size();
   const auto event_specs = system.events();
-  VecX y_row(y0.size()), y_event(y0.size());
-  VecX g_before(static_cast<Eigen::Index>(event_count));
+  const Eigen::Index n = integrator.y().size();
+  VecX y_row(n), y_event(n);
+  VecX& g_before = position.g_before;
   VecX g_after(g_before.size()), g_probe(g_before.size());
-
-  system.begin(t0, y0);
-  integrator.start(system, t0, y0, t_end);
-  observe(t0, integrator.y());
-  if (event_count > 0) system.event_functions(t0, integrator.y(), g_before);
-  OutputClock clock(t0, t_end, options.output_every);
+  OutputClock clock(position.t0, t_end, options.output_every, position.next_row);
+  bool checkpoint_due = static_cast<bool>(on_checkpoint);
 
   // Rows in (t_previous, t_upto] from the continuous extension of the last step.
   auto emit_rows_until = [&](double t_upto) {
@@ -110,7 +112,7 @@ void drive(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
     return b;  // the end of the bracket on the far side of the crossing
   };
 
-  long steps = 0;
+  long steps = position.steps;
   bool stopped_by_event = false;
   while (integrator.t() < t_end) {
     const double t_stop = std::min(t_end, system.next_breakpoint(integrator.t()));
@@ -200,17 +202,28 @@ void drive(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
       integrator.restart(t_stop, y_break);
       if (event_count > 0) system.event_functions(t_stop, integrator.y(), g_before);
     }
+
+    if (checkpoint_due && integrator.t() >= options.checkpoint_after) {
+      checkpoint_due = false;
+      position.next_row = clock.next_row();
+      position.steps = steps;
+      position.events = report.events;
+      on_checkpoint({integrator.clone_onto(system), position});
+      if (options.stop_at_checkpoint) break;
+    }
   }
   if (!stopped_by_event) report.t_reached = integrator.t();
 }
 
-}  // namespace
-
-IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
-                            double t_end, const DriverOptions& options, const Observer& observe) {
+IntegrationReport run_driver(Integrator& integrator, OdeSystem& system, DriverPosition& position,
+                             double t_end, const DriverOptions& options, const Observer& observe,
+                             const CheckpointObserver& on_checkpoint,
+                             const std::function<void()>& start) {
   IntegrationReport report;
+  report.events = position.events;
   try {
-    drive(integrator, system, t0, y0, t_end, options, observe, report);
+    start();
+    drive(integrator, system, position, t_end, options, observe, on_checkpoint, report);
   } catch (const std::runtime_error& e) {
     // The system found it cannot go on (e.g. contact constraints that contradict each other):
     // the run fails there, with the rows so far, like a step size underflow.
@@ -220,6 +233,30 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
   report.stats = integrator.stats();
   report.completed = report.failure.empty();
   return report;
+}
+
+}  // namespace
+
+IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
+                            double t_end, const DriverOptions& options, const Observer& observe,
+                            const CheckpointObserver& on_checkpoint) {
+  DriverPosition position;
+  position.t0 = t0;
+  position.g_before.resize(static_cast<Eigen::Index>(system.events().size()));
+  return run_driver(integrator, system, position, t_end, options, observe, on_checkpoint, [&] {
+    system.begin(t0, y0);
+    integrator.start(system, t0, y0, t_end);
+    observe(t0, integrator.y());
+    if (position.g_before.size() > 0) system.event_functions(t0, integrator.y(), position.g_before);
+  });
+}
+
+IntegrationReport resume_integration(Integrator& integrator, OdeSystem& system,
+                                     const DriverPosition& position, double t_end,
+                                     const DriverOptions& options, const Observer& observe,
+                                     const CheckpointObserver& on_checkpoint) {
+  DriverPosition resumed = position;
+  return run_driver(integrator, system, resumed, t_end, options, observe, on_checkpoint, [] {});
 }
 
 }  // namespace tumble

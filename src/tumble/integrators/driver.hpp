@@ -9,6 +9,8 @@
 //  - breakpoints: a step lands exactly on each, the system may change the state there, and the
 //    method restarts, so no step straddles a discontinuity of f.
 #include <functional>
+#include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,10 @@ namespace tumble {
 struct DriverOptions {
   double output_every = 0.0;    // s; 0: one row per accepted step
   long max_steps = 10'000'000;  // accepted steps before the run is declared failed
+  // A checkpoint at the end of the first accepted step that reaches this time (s), once that
+  // step's rows, events and breakpoint are done; with stop_at_checkpoint the run ends there.
+  double checkpoint_after = std::numeric_limits<double>::infinity();
+  bool stop_at_checkpoint = false;
 };
 
 struct EventRecord {
@@ -38,7 +44,32 @@ struct IntegrationReport {
 // Called with each output row; y is only valid during the call.
 using Observer = std::function<void(double t, const VecX& y)>;
 
+// Where the driver stands between two steps. With the integrator's memory (Integrator::
+// clone_onto) and the system's own state (a Formulation's HybridState) it is all a run needs to
+// go on: a run resumed from them takes the same steps and writes the same rows, bit for bit, as
+// one that never stopped.
+struct DriverPosition {
+  double t0 = 0.0;                  // the run's start: row k is at t0 + k * output_every
+  long next_row = 1;                // k of the next row
+  long steps = 0;                   // accepted steps so far
+  VecX g_before;                    // the event functions at the last step's end
+  std::vector<EventRecord> events;  // the located events so far
+};
+struct DriverCheckpoint {
+  std::shared_ptr<const Integrator> integrator;  // resumed runs take a clone of it
+  DriverPosition position;
+};
+// Called once, at DriverOptions::checkpoint_after, with the run's checkpoint.
+using CheckpointObserver = std::function<void(DriverCheckpoint checkpoint)>;
+
 IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0, const VecX& y0,
-                            double t_end, const DriverOptions& options, const Observer& observe);
+                            double t_end, const DriverOptions& options, const Observer& observe,
+                            const CheckpointObserver& on_checkpoint = {});
+// Goes on from a checkpoint: `integrator` is the checkpoint's, cloned onto `system`, and the
+// system's own state is the one it had then. Rows come from after the checkpoint's time.
+IntegrationReport resume_integration(Integrator& integrator, OdeSystem& system,
+                                     const DriverPosition& position, double t_end,
+                                     const DriverOptions& options, const Observer& observe,
+                                     const CheckpointObserver& on_checkpoint = {});
 
 }  // namespace tumble

@@ -44,6 +44,11 @@ class Integrator {
   // workspace, the statistics and, for adaptive methods, the current step size as a first guess.
   virtual void restart(double t, const VecX& y) = 0;
 
+  // A copy of this method as it stands mid-run (its step size, its last step and the continuous
+  // extension over it, its statistics: everything its next step depends on), driving `system`
+  // from now on. A run's checkpoint keeps one; the resumed run goes on with it.
+  virtual std::unique_ptr<Integrator> clone_onto(OdeSystem& system) const = 0;
+
   // One accepted step that ends at or before t_stop (and lands on it exactly if it would pass).
   virtual StepOutcome step(double t_stop) = 0;
 

@@ -22,6 +22,11 @@ class Rk4 final : public FixedStepMethod {
 
   std::string_view name() const override { return "rk4"; }
   int order() const override { return 4; }
+  std::unique_ptr<Integrator> clone_onto(OdeSystem& system) const override {
+    auto copy = std::make_unique<Rk4>(*this);
+    copy->system_ = &system;
+    return copy;
+  }
   StepOutcome step(double t_stop) override;
 };
 

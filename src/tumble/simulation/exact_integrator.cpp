@@ -4,6 +4,15 @@
 
 namespace tumble {
 
+std::unique_ptr<Integrator> ExactIntegrator::clone_onto(OdeSystem& system) const {
+  auto copy = std::make_unique<ExactIntegrator>(*this);
+  copy->formulation_ = dynamic_cast<const Formulation*>(&system);
+  if (copy->formulation_ == nullptr) {
+    throw std::invalid_argument("the exact integrator needs a rigid-body formulation");
+  }
+  return copy;
+}
+
 void ExactIntegrator::start(OdeSystem& system, double t0, const VecX& y0, double /*t_end*/) {
   formulation_ = dynamic_cast<const Formulation*>(&system);
   if (formulation_ == nullptr) {

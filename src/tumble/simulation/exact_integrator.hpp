@@ -19,6 +19,7 @@ class ExactIntegrator final : public Integrator {
   // The system must be a Formulation whose model has no applied loads (std::invalid_argument).
   void start(OdeSystem& system, double t0, const VecX& y0, double t_end) override;
   void restart(double t, const VecX& y) override;
+  std::unique_ptr<Integrator> clone_onto(OdeSystem& system) const override;
   StepOutcome step(double t_stop) override;
   void dense_output(double t, VecX& y_out) const override;
 

@@ -63,37 +63,71 @@ void check_initial_velocities(const Scenario& scenario, const Formulation& formu
 
 }  // namespace
 
-PreparedSimulation prepare_simulation(const Scenario& scenario) {
+namespace {
+
+// The scenario's integrator for one run. Throws std::invalid_argument for a control that does
+// not fit the method.
+std::unique_ptr<Integrator> make_run_integrator(const SimulationModel& model) {
+  if (model.integrator == "exact") return std::make_unique<ExactIntegrator>();
+  return make_integrator(model.integrator, model.control);
+}
+
+}  // namespace
+
+std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& scenario) {
   const SimulateSpec& sim = scenario.simulate;
-  PreparedSimulation p;
-  p.formulation = make_formulation(sim.formulation, build_model(scenario));
-  p.control.rtol = sim.rtol;
-  p.control.atol = sim.atol;
-  p.control.fixed_step = sim.step;
-  p.control.max_step = sim.max_step;
-  p.control.initial_step = sim.initial_step;
-  if (sim.integrator == "exact") {
-    p.integrator = std::make_unique<ExactIntegrator>();
-  } else {
-    if (sim.integrator == "rkmk4" && p.formulation->unit_quaternion_offsets().empty()) {
+  auto m = std::make_shared<SimulationModel>();
+  // An error here is the part of the scenario's own that it names: the formulation's (or the
+  // model's, which the reader has checked), then the integrator's.
+  try {
+    m->formulation = make_formulation(sim.formulation, build_model(scenario));
+  } catch (const std::invalid_argument& e) {
+    throw ScenarioError(sim.where, "simulate.formulation", e.what());
+  }
+  m->integrator = sim.integrator;
+  m->control.rtol = sim.rtol;
+  m->control.atol = sim.atol;
+  m->control.fixed_step = sim.step;
+  m->control.max_step = sim.max_step;
+  m->control.initial_step = sim.initial_step;
+  try {
+    if (sim.integrator == "rkmk4" && m->formulation->unit_quaternion_offsets().empty()) {
       throw std::invalid_argument(
           "rkmk4 moves orientations on the rotation group and needs formulation: body");
     }
-    p.integrator = make_integrator(sim.integrator, p.control);
+    make_run_integrator(*m);  // refuses a control that does not fit, before any run
+  } catch (const std::invalid_argument& e) {
+    throw ScenarioError(sim.where, "simulate.integrator", e.what());
   }
-  p.options.output_every = sim.output_every;
-  p.options.max_steps = sim.max_steps;
-  p.t0 = 0.0;
-  p.t_end = sim.duration;
-  p.y0.resize(p.formulation->dimension());
+  m->options.output_every = sim.output_every;
+  m->options.max_steps = sim.max_steps;
+  m->t0 = 0.0;
+  m->t_end = sim.duration;
+  m->y0.resize(m->formulation->dimension());
   const std::vector<BodyState> given = initial_states(scenario);
-  p.formulation->pack(given, p.y0);
-  check_initial_velocities(scenario, *p.formulation, given, p.y0);
-  if (const auto problem = p.formulation->start_problem(p.y0)) {
+  m->formulation->pack(given, m->y0);
+  check_initial_velocities(scenario, *m->formulation, given, m->y0);
+  if (const auto problem = m->formulation->start_problem(m->y0)) {
     const ContactSpec& contact = scenario.contacts[problem->contact];
     throw ScenarioError(contact.where, fmt::format("contacts[{}]", problem->contact), problem->why);
   }
+  return m;
+}
+
+PreparedSimulation prepare_run(const SimulationModel& model) {
+  PreparedSimulation p;
+  p.formulation = model.formulation->new_run();
+  p.integrator = make_run_integrator(model);
+  p.control = model.control;
+  p.options = model.options;
+  p.y0 = model.y0;
+  p.t0 = model.t0;
+  p.t_end = model.t_end;
   return p;
+}
+
+PreparedSimulation prepare_simulation(const Scenario& scenario) {
+  return prepare_run(*build_simulation_model(scenario));
 }
 
 SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserver& observe) {
@@ -102,13 +136,26 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserve
                             const RowExtras&) { observe(t, states, q); });
 }
 
-SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe) {
+namespace {
+
+// One run's rows: each is handed over with its quantities and booked into the conservation
+// report against the first row's baseline; from a checkpoint, against the baseline of the run
+// it was taken from.
+SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObserver& observe,
+                               const CheckpointCallback& on_checkpoint,
+                               const SimulationCheckpoint* from) {
   const Formulation& formulation = *simulation.formulation;
   const Model& model = formulation.model();
   std::vector<BodyState> states(formulation.body_count());
   RowExtras extras;
   SimulationResult result;
-  double E0 = 0.0, L0 = 0.0, KE0 = 0.0, gravity_potential0 = 0.0;
+  RowBaseline base;
+  if (from != nullptr) {
+    base = from->baseline;
+    result.conservation = from->conservation;
+    result.rows = from->rows;
+    result.last_extras = from->last_extras;
+  }
 
   const auto on_row = [&](double t, const VecX& y) {
     formulation.unpack_all(y, states);
@@ -119,16 +166,17 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObs
     q.total_energy += extras.elastic_energy;
     const double L = q.angular_momentum_about_origin.norm();
     if (result.rows == 0) {
-      E0 = q.total_energy;
-      L0 = L;
-      KE0 = q.kinetic_energy;
-      gravity_potential0 = gravity_potential;
+      base.E0 = q.total_energy;
+      base.L0 = L;
+      base.KE0 = q.kinetic_energy;
+      base.gravity_potential0 = gravity_potential;
     }
+    const double E0 = base.E0, L0 = base.L0;
     ConservationReport& c = result.conservation;
-    double work = -(gravity_potential - gravity_potential0);
+    double work = -(gravity_potential - base.gravity_potential0);
     for (const ElementWork& e : extras.elements) work += e.work;
     c.max_work_energy_residual =
-        std::max(c.max_work_energy_residual, std::abs(q.kinetic_energy - KE0 - work));
+        std::max(c.max_work_energy_residual, std::abs(q.kinetic_energy - base.KE0 - work));
     c.max_kinetic_energy = std::max(c.max_kinetic_energy, q.kinetic_energy);
     c.initial_energy = E0;
     c.initial_angular_momentum = L0;
@@ -150,16 +198,46 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObs
     observe(t, states, q, extras);
     result.last_extras = extras;
   };
+  CheckpointObserver on_driver_checkpoint;
+  if (on_checkpoint) {
+    on_driver_checkpoint = [&](DriverCheckpoint driver) {
+      on_checkpoint({std::move(driver), formulation.hybrid_state(), base, result.conservation,
+                     result.rows, result.last_extras});
+    };
+  }
 
   const auto start = std::chrono::steady_clock::now();
-  result.report = integrate(*simulation.integrator, *simulation.formulation, simulation.t0,
-                            simulation.y0, simulation.t_end, simulation.options, on_row);
+  if (from == nullptr) {
+    result.report =
+        integrate(*simulation.integrator, *simulation.formulation, simulation.t0, simulation.y0,
+                  simulation.t_end, simulation.options, on_row, on_driver_checkpoint);
+  } else {
+    simulation.formulation->set_hybrid_state(from->hybrid);
+    simulation.integrator = from->driver.integrator->clone_onto(*simulation.formulation);
+    result.report =
+        resume_integration(*simulation.integrator, *simulation.formulation, from->driver.position,
+                           simulation.t_end, simulation.options, on_row, on_driver_checkpoint);
+  }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const HybridState& hybrid = simulation.formulation->hybrid_state();
   result.jumps = hybrid.jumps;
   result.contact_events = hybrid.contact_events;
   return result;
+}
+
+}  // namespace
+
+SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe,
+                                const CheckpointCallback& on_checkpoint) {
+  return run_or_resume(simulation, observe, on_checkpoint, nullptr);
+}
+
+SimulationResult resume_simulation(PreparedSimulation& simulation,
+                                   const SimulationCheckpoint& checkpoint,
+                                   const FullRowObserver& observe,
+                                   const CheckpointCallback& on_checkpoint) {
+  return run_or_resume(simulation, observe, on_checkpoint, &checkpoint);
 }
 
 }  // namespace tumble

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "tumble/body/rigid_body.hpp"
@@ -25,9 +26,28 @@ struct PreparedSimulation {
   double t_end = 0.0;
 };
 
-// Throws std::invalid_argument for a combination the engine cannot run (e.g. rkmk4 on the
-// textbook formulation, which has no quaternions to move on the group), and ScenarioError where
-// the bodies' given velocities disagree with what their joints allow or a motor prescribes.
+// One problem, built once from a scenario and then run any number of times, on any number of
+// threads at once: the Model is constant and shared by every run's formulation; each run gets its
+// own formulation (scratch and hybrid state) and integrator from prepare_run(), which is safe to
+// call from any thread.
+struct SimulationModel {
+  std::unique_ptr<const Formulation> formulation;  // never run itself: runs take new_run()
+  std::string integrator;                          // the scenario's name for the method
+  StepControl control;
+  DriverOptions options;
+  VecX y0;  // the scenario's initial state
+  double t0 = 0.0;
+  double t_end = 0.0;
+};
+
+// Throws ScenarioError, under the key of the part that is wrong, for a combination the engine
+// cannot run (e.g. rkmk4 on the textbook formulation, which has no quaternions to move on the
+// group), where the bodies' given velocities disagree with what their joints allow or a motor
+// prescribes, or where a body starts inside a contact's plane.
+std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& scenario);
+// A run of the model from its initial state (set y0 for another).
+PreparedSimulation prepare_run(const SimulationModel& model);
+// build_simulation_model, then prepare_run: for a model that runs once.
 PreparedSimulation prepare_simulation(const Scenario& scenario);
 
 // Largest departures from what a free system conserves, over all output rows.
@@ -64,7 +84,38 @@ struct SimulationResult {
   std::vector<ContactEventRecord> contact_events;
 };
 
-SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe);
+// The first row's energy and momenta, which the conservation report measures against.
+struct RowBaseline {
+  double E0 = 0.0, L0 = 0.0, KE0 = 0.0, gravity_potential0 = 0.0;
+};
+
+// A run stopped part way, with all it needs to go on as if it had not stopped: y, the step size
+// and last step (in the integrator's copy), the hybrid state (contact modes, features, anchors,
+// slip timers, the load schedule's position, the jumps and events so far), the driver's position
+// (the next row, the event functions), and the conservation report so far. A run of the same
+// model resumed from it writes, after the checkpoint's time, the rows of the run that never
+// stopped, bit for bit. Copyable; it holds nothing of the run it came from.
+struct SimulationCheckpoint {
+  DriverCheckpoint driver;
+  HybridState hybrid;
+  RowBaseline baseline;
+  ConservationReport conservation;
+  std::size_t rows = 0;
+  RowExtras last_extras;
+  double t() const { return driver.integrator->t(); }
+};
+using CheckpointCallback = std::function<void(SimulationCheckpoint checkpoint)>;
+
+// Runs from the initial state; with simulation.options.checkpoint_after set, hands on_checkpoint
+// the run's checkpoint there (and ends the run there with options.stop_at_checkpoint).
+SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe,
+                                const CheckpointCallback& on_checkpoint = {});
 SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserver& observe);
+// Goes on from a checkpoint of a run of the same model (prepare_run() of it gives `simulation`;
+// its formulation and integrator are replaced by the checkpoint's).
+SimulationResult resume_simulation(PreparedSimulation& simulation,
+                                   const SimulationCheckpoint& checkpoint,
+                                   const FullRowObserver& observe,
+                                   const CheckpointCallback& on_checkpoint = {});
 
 }  // namespace tumble

@@ -1,0 +1,133 @@
+// Checkpoint and resume: a run stopped at t1, whose checkpoint (y, the integrator's memory, the
+// hybrid state: contact modes, features, anchors, slip timers, the load schedule) goes on in a
+// new run of the same model, writes after t1 exactly the bytes of the run that never stopped.
+// The first run is gone before the second starts, so nothing can be shared but the checkpoint.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tumble/output/trajectory_csv.hpp"
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/simulation/simulation.hpp"
+
+namespace tumble {
+namespace {
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class Csv {
+ public:
+  Csv(const Scenario& scenario, const PreparedSimulation& run, std::filesystem::path path) {
+    std::vector<std::string> bodies, joints, contacts;
+    for (const BodySpec& b : scenario.bodies) bodies.push_back(b.name);
+    for (const JointSpec& j : scenario.joints) joints.push_back(j.name);
+    for (const ContactSpec& c : scenario.contacts) contacts.push_back(c.name);
+    writer_.emplace(std::move(path), bodies, joints, contacts, run.formulation->element_names());
+  }
+  FullRowObserver observer() {
+    return [this](double t, std::span<const BodyState> s, const SystemQuantities& q,
+                  const RowExtras& extras) { writer_->write_row(t, s, q, &extras); };
+  }
+  std::string finish() {
+    const std::filesystem::path path = writer_->path();
+    writer_->finish();
+    return read_file(path);
+  }
+
+ private:
+  std::optional<TrajectoryCsvWriter> writer_;
+};
+
+std::string without_header(const std::string& csv) {
+  return csv.substr(csv.find('\n') + 1);
+}
+
+struct Case {
+  const char* example;
+  double t1;  // s: the run stops at the first step end at or after it
+  const char* what;
+};
+
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.example << " at t = " << c.t1;
+}
+
+class Checkpoint : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Checkpoint, ResumedRowsAreTheUninterruptedRunsBytes) {
+  const Case c = GetParam();
+  const Scenario scenario =
+      load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/" + c.example + ".yaml", {});
+  const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "tumble_checkpoint_test" / c.example;
+  std::filesystem::create_directories(dir);
+
+  PreparedSimulation whole = prepare_run(*model);
+  Csv whole_csv(scenario, whole, dir / "whole.csv");
+  const SimulationResult whole_result = run_simulation(whole, whole_csv.observer());
+  ASSERT_TRUE(whole_result.report.completed) << whole_result.report.failure;
+  const std::string expected = whole_csv.finish();
+
+  std::optional<SimulationCheckpoint> checkpoint;
+  std::string before;
+  {
+    PreparedSimulation first = prepare_run(*model);
+    first.options.checkpoint_after = c.t1;
+    first.options.stop_at_checkpoint = true;
+    Csv csv(scenario, first, dir / "before.csv");
+    run_simulation(first, csv.observer(), [&](SimulationCheckpoint k) { checkpoint = k; });
+    before = csv.finish();
+  }
+  ASSERT_TRUE(checkpoint.has_value()) << "no checkpoint at t = " << c.t1;
+  EXPECT_GE(checkpoint->t(), c.t1);
+  const SimulationCheckpoint saved = *checkpoint;  // a copy: the checkpoint is a value
+  checkpoint.reset();
+
+  PreparedSimulation second = prepare_run(*model);
+  Csv csv(scenario, second, dir / "after.csv");
+  const SimulationResult resumed = resume_simulation(second, saved, csv.observer());
+  ASSERT_TRUE(resumed.report.completed) << resumed.report.failure;
+  const std::string after = csv.finish();
+
+  EXPECT_LT(before.size(), expected.size());
+  EXPECT_TRUE(before + without_header(after) == expected)
+      << c.example << " stopped at t = " << saved.t() << " (" << c.what << ")";
+  // The resumed run reports the whole run: its steps, events, jumps and conservation.
+  EXPECT_EQ(resumed.report.stats.accepted_steps, whole_result.report.stats.accepted_steps);
+  EXPECT_EQ(resumed.report.stats.rhs_evaluations, whole_result.report.stats.rhs_evaluations);
+  EXPECT_EQ(resumed.report.events.size(), whole_result.report.events.size());
+  EXPECT_EQ(resumed.contact_events.size(), whole_result.contact_events.size());
+  EXPECT_EQ(resumed.jumps.size(), whole_result.jumps.size());
+  EXPECT_EQ(resumed.rows, whole_result.rows);
+  EXPECT_EQ(resumed.conservation.max_energy_change, whole_result.conservation.max_energy_change);
+  EXPECT_EQ(resumed.conservation.max_work_energy_residual,
+            whole_result.conservation.max_work_energy_residual);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Examples, Checkpoint,
+    ::testing::Values(Case{"tumbling_prism", 9.0, "before the flip"},
+                      Case{"backspin_disk", 0.7, "in mid-slide, before the slip stops at 1.36 s"},
+                      Case{"bouncing_ball", 0.8, "in flight between the first two bounces"},
+                      Case{"box_slides_to_rest", 0.5, "a box sliding on its face"},
+                      Case{"cubli", 0.0005, "before the lock at 1 ms"},
+                      Case{"cubli", 0.7, "after the lock"},
+                      Case{"rolling_coin", 1.0, "a coin rolling on its rim"}),
+    [](const ::testing::TestParamInfo<Case>& param) {
+      return std::string(param.param.example) + "_" + std::to_string(param.index);
+    });
+
+}  // namespace
+}  // namespace tumble

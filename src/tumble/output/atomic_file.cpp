@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -17,15 +18,19 @@ namespace {
 
 // The temporary files being written, for the signal handler: a run stopped by Ctrl-C or a kill
 // removes them as a failed one does (only unlink(), which is async-signal-safe, runs there).
+// Runs on several threads write files at once, so a slot is claimed by an atomic exchange (free
+// -> claimed), filled, then published (live); lock-free atomics are safe in a signal handler.
 constexpr std::size_t kLiveFiles = 8;
 constexpr std::size_t kPathBytes = 4096;
+enum SlotState : int { kFree = 0, kClaimed = 1, kLive = 2 };
 char g_live_paths[kLiveFiles][kPathBytes];
-volatile std::sig_atomic_t g_live[kLiveFiles] = {};
+std::array<std::atomic<int>, kLiveFiles> g_live = {};
+static_assert(std::atomic<int>::is_always_lock_free);
 constexpr std::array<int, 3> kStopSignals = {SIGINT, SIGTERM, SIGHUP};
 
 extern "C" void remove_partial_files(int signal_number) {
   for (std::size_t i = 0; i < kLiveFiles; ++i) {
-    if (g_live[i] != 0) ::unlink(g_live_paths[i]);
+    if (g_live[i].load(std::memory_order_acquire) == kLive) ::unlink(g_live_paths[i]);
   }
   // Then end as the signal would have: the caller sees the same status.
   std::signal(signal_number, SIG_DFL);
@@ -56,16 +61,17 @@ std::size_t hold_for_signals(const std::filesystem::path& path) {
   const std::string& text = path.native();
   if (text.size() >= kPathBytes) return kLiveFiles;
   for (std::size_t i = 0; i < kLiveFiles; ++i) {
-    if (g_live[i] != 0) continue;
+    int expected = kFree;
+    if (!g_live[i].compare_exchange_strong(expected, kClaimed, std::memory_order_acquire)) continue;
     std::memcpy(g_live_paths[i], text.c_str(), text.size() + 1);
-    g_live[i] = 1;
+    g_live[i].store(kLive, std::memory_order_release);
     return i;
   }
   return kLiveFiles;
 }
 
 void release_for_signals(std::size_t slot) {
-  if (slot < kLiveFiles) g_live[slot] = 0;
+  if (slot < kLiveFiles) g_live[slot].store(kFree, std::memory_order_release);
 }
 
 }  // namespace

@@ -38,7 +38,8 @@ void BM_SharedModelRuns(benchmark::State& state, const char* stem) {
     benchmark::DoNotOptimize(result.rows);
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["steps"] = static_cast<double>(result.report.stats.accepted_steps);
+  state.counters["steps"] = benchmark::Counter(
+      static_cast<double>(result.report.stats.accepted_steps), benchmark::Counter::kAvgThreads);
   if (!result.report.completed) state.SkipWithError(result.report.failure.c_str());
 }
 

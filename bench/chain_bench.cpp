@@ -50,7 +50,7 @@ Model chain_model(int n) {
   }
   for (int i = 0; i < n; ++i) {
     JointModel joint;
-    joint.type = JointModel::Type::Hinge;
+    joint.type = JointType::Hinge;
     joint.name = fmt::format("j{}", i);
     joint.body_a = i == 0 ? kGround : i - 1;
     joint.body_b = i;

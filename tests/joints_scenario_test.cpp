@@ -27,7 +27,8 @@ TEST(JointScenario, AJointNamesKnownBodiesAndATypeItHas) {
                28, "joints.knob.body", "no body 'bta' in bodies (the bodies are bat)");
   expect_error(kBat + "joints:\n  knob: {type: ball, body: bat, at: [0, 0, 0], axis: [0, 1, 0]}\n" +
                    kSimulate,
-               5, 48, "joints.knob.axis", "only a hinge has axis");
+               5, 48, "joints.knob.axis",
+               "only a hinge or a prismatic joint has axis (this joint is a ball)");
   expect_error(kBat +
                    "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 0, 0]}\n" +
                    kSimulate,
@@ -48,7 +49,7 @@ TEST(JointScenario, ALockActsAfterTheStart) {
                    "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 1, 0], "
                    "lock: {at: 0}}\n" +
                    kSimulate,
-               5, 77, "joints.knob.lock.at", "a hinge rigid from the start is a fixed joint");
+               5, 77, "joints.knob.lock.at", "a joint rigid from the start is a fixed joint");
 }
 
 TEST(JointScenario, GivenVelocitiesMustBeOnesTheJointsAllow) {

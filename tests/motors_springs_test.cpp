@@ -933,7 +933,7 @@ std::optional<Vec3> moment_free_point(const Scenario& s) {
   std::optional<Vec3> O;
   for (const JointSpec& joint : s.joints) {
     if (joint.body_a != kGroundName && joint.body_b != kGroundName) continue;
-    if (joint.type != JointSpec::Type::Ball || (O && (*O - joint.at_W).norm() > 0.0)) {
+    if (joint.type != JointType::Ball || (O && (*O - joint.at_W).norm() > 0.0)) {
       return std::nullopt;
     }
     O = joint.at_W;

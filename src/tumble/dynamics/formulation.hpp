@@ -65,9 +65,9 @@ class Formulation : public OdeSystem {
   virtual std::optional<StartProblem> start_problem(const VecX& /*y0*/) const {
     return std::nullopt;
   }
-  // The rate of a model joint's hinge at y (rad/s, its sign as the scenario states it); 0 for a
-  // formulation without joints.
-  virtual double hinge_rate(const VecX& /*y*/, std::size_t /*joint*/) const { return 0.0; }
+  // The rate of a hinge's or slider's one freedom at y (rad/s or m/s, its sign as the scenario
+  // states the joint); 0 for a formulation without joints.
+  virtual double joint_rate(const VecX& /*y*/, std::size_t /*joint*/) const { return 0.0; }
 
   // The run's state besides y: the modes of the right-hand side and what has happened so far.
   // A copy of it with y (and the integrator's memory) resumes the run exactly.

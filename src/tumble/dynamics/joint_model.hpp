@@ -5,16 +5,19 @@
 #include <limits>
 #include <string>
 
+#include "tumble/dynamics/joint_type.hpp"
 #include "tumble/math/types.hpp"
 
 namespace tumble {
 
 inline constexpr int kGround = -1;
 
-// A hinge motor: while active (from <= t < to) it prescribes the relative speed (rad/s) or
-// applies the torque (N m) about the hinge axis, on the second body and against the first.
-struct HingeMotor {
-  enum class Kind { None, Speed, Torque } kind = Kind::None;
+// A motor on a joint's one freedom (a hinge's angle, a slider's travel): while active
+// (from <= t < to) it prescribes the relative speed (rad/s about a hinge, m/s along a slider) or
+// applies the effort (a torque in N m about a hinge's axis, a force in N along a slider's), on
+// the second body and against the first.
+struct JointMotor {
+  enum class Kind { None, Speed, Effort } kind = Kind::None;
   double value = 0.0;
   double from = -std::numeric_limits<double>::infinity();  // s
   double to = std::numeric_limits<double>::infinity();     // s
@@ -23,7 +26,7 @@ struct HingeMotor {
 };
 
 struct JointModel {
-  enum class Type { Ball, Hinge, Fixed } type = Type::Ball;
+  JointType type = JointType::Ball;  // not Free: that is the tree's, for bodies no joint holds
   std::string name;
   int body_a = kGround;        // the first body listed (may be ground)
   int body_b = 0;              // the second: reactions are what body_a exerts on body_b
@@ -31,10 +34,11 @@ struct JointModel {
   Vec3 p_BJ_B = Vec3::Zero();  // joint point from B's COM, B's axes
   Mat3 R_AB0 = Mat3::Identity();  // B's axes relative to A's at t = 0: R_WA^T R_WB
   // Hinge: the unit axis in B's axes; the angle theta turns B relative to A about it, positive
-  // by the right-hand rule, zero at t = 0.
+  // by the right-hand rule, zero at t = 0. Prismatic: the unit axis in B's axes; the travel d
+  // moves B's joint point from A's along it, zero at t = 0.
   Vec3 axis_B = Vec3::UnitZ();
-  HingeMotor motor;
-  double lock_at = std::numeric_limits<double>::infinity();  // s: the hinge is rigid from then
+  JointMotor motor;
+  double lock_at = std::numeric_limits<double>::infinity();  // s: the joint is rigid from then
 };
 
 // An impulse (a jump of momentum) at a body point at one instant.

@@ -20,7 +20,7 @@ double Model::next_load_switch(double t) const {
   }
   for (const ImpulseLoad& impulse : impulses) consider(impulse.time);
   for (const JointModel& joint : joints) {
-    if (joint.motor.kind != HingeMotor::Kind::None) {
+    if (joint.motor.kind != JointMotor::Kind::None) {
       consider(joint.motor.from);
       consider(joint.motor.to);
     }

@@ -22,6 +22,8 @@
 
 #include "tumble/multibody/articulated_formulation.hpp"
 
+#include "tumble/multibody/joints/joint_kind.hpp"
+
 namespace tumble {
 
 namespace {
@@ -407,23 +409,6 @@ void ArticulatedFormulation::solve_contacts_at(const VecX& y) const {
   solve_with_contacts(s_.schedule_time);
 }
 
-namespace {
-
-// Turns a joint's coordinates by the small motion dq of its speeds (a displacement, not a
-// rate): q (x) exp(dq_omega / 2) for a quaternion.
-void turn_quaternion(VecX& y, Eigen::Index o, const Vec3& angle_B) {
-  const double angle = angle_B.norm();
-  if (angle == 0.0) return;
-  Quat q(y(o), y(o + 1), y(o + 2), y(o + 3));
-  q = (q * Quat(Eigen::AngleAxisd(angle, angle_B / angle))).normalized();
-  y(o) = q.w();
-  y(o + 1) = q.x();
-  y(o + 2) = q.y();
-  y(o + 3) = q.z();
-}
-
-}  // namespace
-
 void ArticulatedFormulation::project_feature_positions(VecX& y) const {
   // The smallest move in the mass metric (the response to impulses along the rows) that puts the
   // normal points back on their planes, to first order (a face or an edge turns back flat as well
@@ -453,20 +438,7 @@ void ArticulatedFormulation::project_feature_positions(VecX& y) const {
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
     const auto& move = d_.work[k].qdd;
-    switch (joint.type) {
-      case TreeJoint::Type::Free:
-        y.segment<3>(joint.q) += d_.work[k].R_WC * move.tail<3>();
-        turn_quaternion(y, joint.q + 3, move.head<3>());
-        break;
-      case TreeJoint::Type::Ball:
-        turn_quaternion(y, joint.q, move.head<3>());
-        break;
-      case TreeJoint::Type::Hinge:
-        y(joint.q) += move(0);
-        break;
-      case TreeJoint::Type::Fixed:
-        break;
-    }
+    joint.kind->displace(joint, move, d_.work[k].R_WC, y);
   }
 }
 

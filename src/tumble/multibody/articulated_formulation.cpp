@@ -4,29 +4,11 @@
 #include <stdexcept>
 
 #include "tumble/math/rotation.hpp"
+#include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
 
 namespace {
-
-Mat3 rotation_at(const VecX& y, Eigen::Index o) {
-  return Quat(y(o), y(o + 1), y(o + 2), y(o + 3)).normalized().toRotationMatrix();
-}
-
-// q' = q (x) (0, omega) / 2 for q = (w, x, y, z) stored at o: linear in q, as the OdeSystem
-// contract asks.
-void write_quaternion_rate(const VecX& y, Eigen::Index o, const Vec3& omega, VecX& dydt) {
-  const Vec3 q_vec = y.segment<3>(o + 1);
-  dydt(o) = -0.5 * q_vec.dot(omega);
-  dydt.segment<3>(o + 1) = 0.5 * (y(o) * omega + q_vec.cross(omega));
-}
-
-void write_quaternion(const Mat3& R, Eigen::Index o, VecX& y) {
-  Quat q(R);
-  q.normalize();
-  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
-  y.segment<4>(o) << q.w(), q.x(), q.y(), q.z();
-}
 
 // The inverse of a joint's symmetric positive definite S^T I^A S (1, 3 or 6 freedoms) through
 // fixed-size types, so nothing is allocated.
@@ -80,25 +62,11 @@ void ArticulatedFormulation::calc_kinematics(const VecX& y, bool with_velocities
       r_P_W = parent.r_G_W;
       v_P = parent.velocity;
     }
-    Mat3 R_PC = joint.R_PC0;
-    switch (joint.type) {
-      case TreeJoint::Type::Free:
-        R_PC = rotation_at(y, joint.q + 3);
-        break;
-      case TreeJoint::Type::Ball:
-        R_PC = rotation_at(y, joint.q);
-        break;
-      case TreeJoint::Type::Hinge:
-        R_PC = joint.R_PC0 * rotation_from_axis_angle(joint.axis_C, y(joint.q));
-        break;
-      case TreeJoint::Type::Fixed:
-        R_PC = joint.R_PC0;
-        break;
-    }
+    Mat3 R_PC;
+    Vec3 p_PC_P;
+    joint.kind->calc_placement(joint, y, R_PC, p_PC_P);
     w.X.E = R_PC.transpose();
-    // The child's COM from the parent's, parent axes: out to the joint point, back to the COM.
-    w.X.r = joint.type == TreeJoint::Type::Free ? Vec3(y.segment<3>(joint.q))
-                                                : Vec3(joint.p_PJ_P - R_PC * joint.p_CJ_C);
+    w.X.r = p_PC_P;
     w.R_WC = R_WP * R_PC;
     w.r_G_W = r_P_W + R_WP * w.X.r;
     BodyState& s = d_.states[joint.child];
@@ -151,7 +119,7 @@ void ArticulatedFormulation::accumulate_element_loads(const VecX& y, double mode
       const auto j = static_cast<std::size_t>(spring.hinge);
       const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
       angle = hinge_angle(y, j);
-      rate = hinge_rate(y, j);
+      rate = m_.joint_rate(y, j);
       axis_W = d_.work[k].R_WC * m_.tree[k].axis_C;
       if (m_.tree[k].reversed) axis_W = -axis_W;
     }
@@ -184,8 +152,8 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
     w.tau.setZero();
     if (w.known && !impulsive) w.qdd.setZero();  // locks and speed motors hold their rate
     if (!impulsive && joint.model_joint >= 0) {
-      const HingeMotor& motor = model_.joints[static_cast<std::size_t>(joint.model_joint)].motor;
-      if (motor.kind == HingeMotor::Kind::Torque && motor.active_at(mode_time) && !w.known) {
+      const JointMotor& motor = model_.joints[static_cast<std::size_t>(joint.model_joint)].motor;
+      if (motor.kind == JointMotor::Kind::Effort && motor.active_at(mode_time) && !w.known) {
         w.tau(0) = motor.value;
       }
     }
@@ -198,7 +166,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
     const Vec6 c = impulsive ? Vec6::Zero() : w.bias;
     Mat6 Ia;
     Vec6 pa;
-    if (joint.type == TreeJoint::Type::Free && !w.known) {
+    if (joint.type == JointType::Free && !w.known) {
       // A free joint's S is the identity and its parent is ground: U = D = I^A, and nothing
       // passes on. A body with nothing hung from it has I^A = diag(I_G, M): inverted in closed
       // form.
@@ -272,20 +240,7 @@ void ArticulatedFormulation::derivative(double t, const VecX& y, VecX& dydt) con
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
     const Workspace& w = d_.work[k];
-    switch (joint.type) {
-      case TreeJoint::Type::Free:
-        dydt.segment<3>(joint.q) = d_.states[joint.child].v_G;
-        write_quaternion_rate(y, joint.q + 3, y.segment<3>(joint.v), dydt);
-        break;
-      case TreeJoint::Type::Ball:
-        write_quaternion_rate(y, joint.q, y.segment<3>(joint.v), dydt);
-        break;
-      case TreeJoint::Type::Hinge:
-        dydt(joint.q) = y(joint.v);
-        break;
-      case TreeJoint::Type::Fixed:
-        break;
-    }
+    joint.kind->write_coordinate_rates(joint, y, d_.states[joint.child], dydt);
     if (joint.nv > 0) dydt.segment(joint.v, joint.nv) = w.qdd;
   }
   write_joint_powers(y, dydt, m_.ledger);
@@ -309,26 +264,7 @@ void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) co
   for (const TreeJoint& joint : m_.tree) {
     const BodyState& child = states[joint.child];
     const BodyState& parent = state_or_ground(states, joint.parent);
-    const Mat3 R_PC = parent.R_WB.transpose() * child.R_WB;
-    const Vec3 omega_rel_C = child.R_WB.transpose() * (child.omega_W - parent.omega_W);
-    switch (joint.type) {
-      case TreeJoint::Type::Free:
-        y.segment<3>(joint.q) = child.r_G;
-        write_quaternion(child.R_WB, joint.q + 3, y);
-        y.segment<3>(joint.v) = child.R_WB.transpose() * child.omega_W;
-        y.segment<3>(joint.v + 3) = child.R_WB.transpose() * child.v_G;
-        break;
-      case TreeJoint::Type::Ball:
-        write_quaternion(R_PC, joint.q, y);
-        y.segment<3>(joint.v) = omega_rel_C;
-        break;
-      case TreeJoint::Type::Hinge:
-        y(joint.q) = joint.axis_C.dot(log_so3(joint.R_PC0.transpose() * R_PC));
-        y(joint.v) = joint.axis_C.dot(omega_rel_C);
-        break;
-      case TreeJoint::Type::Fixed:
-        break;
-    }
+    joint.kind->pack(joint, parent, child, y);
   }
 }
 
@@ -438,7 +374,7 @@ void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
     if (model_joint.lock_at == t) {
       w.qdd(0) = -rate;
       note("lock " + model_joint.name);
-    } else if (t < model_joint.lock_at && model_joint.motor.kind == HingeMotor::Kind::Speed &&
+    } else if (t < model_joint.lock_at && model_joint.motor.kind == JointMotor::Kind::Speed &&
                model_joint.motor.from == t) {
       w.qdd(0) = model_joint.motor.value - rate;
       note("motor " + model_joint.name + " starts");
@@ -462,7 +398,7 @@ void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
     if (joint.nv == 0) continue;
-    if (joint.type == TreeJoint::Type::Hinge) rate_before[k] = y(joint.v);
+    if (has_axis(joint.type)) rate_before[k] = y(joint.v);
     y.segment(joint.v, joint.nv) += d_.work[k].qdd;
   }
   calc_kinematics(y, true);
@@ -473,7 +409,7 @@ void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   for (const std::size_t j : m_.motor_joints) {
     const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
     const JointModel& joint = model_.joints[j];
-    if (joint.motor.kind == HingeMotor::Kind::Speed && joint.motor.from == t && t < joint.lock_at) {
+    if (joint.motor.kind == JointMotor::Kind::Speed && joint.motor.from == t && t < joint.lock_at) {
       y(slot) += d_.work[k].tau(0) * 0.5 * (rate_before[k] + y(m_.tree[k].v));
     }
     ++slot;

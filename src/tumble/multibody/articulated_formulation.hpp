@@ -87,8 +87,8 @@ class ArticulatedFormulation final : public Formulation {
   const std::vector<JumpRecord>& jumps() const { return hybrid_.jumps; }
   // The hinge angle and rate of a model joint (its sign as the scenario states it).
   double hinge_angle(const VecX& y, std::size_t joint) const { return m_.hinge_angle(y, joint); }
-  double hinge_rate(const VecX& y, std::size_t joint) const override {
-    return m_.hinge_rate(y, joint);
+  double joint_rate(const VecX& y, std::size_t joint) const override {
+    return m_.joint_rate(y, joint);
   }
 
  private:

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tumble/multibody/joints/joint_kind.hpp"
+
 namespace tumble {
 
 ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
@@ -16,20 +18,24 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
     slot_of_body[joint.child] = k;
     if (joint.model_joint >= 0)
       slot_of_joint[static_cast<std::size_t>(joint.model_joint)] = static_cast<int>(k);
-    if (joint.type == TreeJoint::Type::Free) quaternion_offsets.push_back(joint.q + 3);
-    if (joint.type == TreeJoint::Type::Ball) quaternion_offsets.push_back(joint.q);
+    if (const Eigen::Index o = joint.kind->quaternion_offset(joint); o >= 0) {
+      quaternion_offsets.push_back(o);
+    }
     coordinates += joint.nq;
     speed_count += joint.nv;
   }
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
     const JointModel& joint = model.joints[j];
-    const bool hinge = joint.type == JointModel::Type::Hinge;
-    if (joint.motor.kind != HingeMotor::Kind::None) {
-      if (!hinge) throw std::logic_error("a motor needs a hinge; the reader checks this");
+    if (joint.motor.kind != JointMotor::Kind::None) {
+      if (!has_axis(joint.type)) {
+        throw std::logic_error("a motor needs a hinge or a slider; the reader checks this");
+      }
       motor_joints.push_back(j);
     }
     if (std::isfinite(joint.lock_at)) {
-      if (!hinge) throw std::logic_error("a lock needs a hinge; the reader checks this");
+      if (!has_axis(joint.type)) {
+        throw std::logic_error("a lock needs a hinge or a slider; the reader checks this");
+      }
       lock_joints.push_back(j);
     }
   }
@@ -51,7 +57,7 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
   }
 
   for (const PlaneContact& contact : model.contacts) {
-    if (tree[slot_of_body[contact.body]].type != TreeJoint::Type::Free) {
+    if (tree[slot_of_body[contact.body]].type != JointType::Free) {
       throw std::invalid_argument("contact '" + contact.name + "': body '" +
                                   model.bodies[contact.body].name +
                                   "' is held by a joint; a body in contact must be free");
@@ -81,7 +87,7 @@ bool ArticulatedModel::prescribed(std::size_t k, double mode_time) const {
   if (joint.model_joint < 0) return false;
   const JointModel& model_joint = model.joints[static_cast<std::size_t>(joint.model_joint)];
   if (mode_time >= model_joint.lock_at) return true;
-  return model_joint.motor.kind == HingeMotor::Kind::Speed &&
+  return model_joint.motor.kind == JointMotor::Kind::Speed &&
          model_joint.motor.active_at(mode_time);
 }
 
@@ -100,7 +106,7 @@ double ArticulatedModel::hinge_angle(const VecX& y, std::size_t joint) const {
   return y(tree[static_cast<std::size_t>(slot_of_joint[joint])].q);
 }
 
-double ArticulatedModel::hinge_rate(const VecX& y, std::size_t joint) const {
+double ArticulatedModel::joint_rate(const VecX& y, std::size_t joint) const {
   return y(tree[static_cast<std::size_t>(slot_of_joint[joint])].v);
 }
 

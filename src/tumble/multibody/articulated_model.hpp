@@ -45,9 +45,10 @@ struct ArticulatedModel {
   Eigen::Index first_motor_entry() const;
   // The ledger entry of a contact (after the locks).
   Eigen::Index contact_entry(std::size_t contact) const;
-  // The hinge angle and rate of a model joint (its sign as the scenario states it).
+  // A hinge's angle or a slider's travel, and its rate, of a model joint (its sign as the
+  // scenario states it).
   double hinge_angle(const VecX& y, std::size_t joint) const;
-  double hinge_rate(const VecX& y, std::size_t joint) const;
+  double joint_rate(const VecX& y, std::size_t joint) const;
 };
 
 }  // namespace tumble

@@ -3,45 +3,22 @@
 #include <deque>
 #include <stdexcept>
 
+#include "tumble/multibody/joints/joint_kind.hpp"
+
 namespace tumble {
 
 namespace {
 
 void set_subspace(TreeJoint& joint) {
-  switch (joint.type) {
-    case TreeJoint::Type::Free:
-      joint.nq = 7;
-      joint.nv = 6;
-      joint.S = Mat6::Identity();
-      break;
-    case TreeJoint::Type::Ball:
-      // The child's COM moves at omega_rel x (r_G - r_J) = [p_CJ]x omega_rel.
-      joint.nq = 4;
-      joint.nv = 3;
-      joint.S.resize(6, 3);
-      joint.S.topRows<3>() = Mat3::Identity();
-      joint.S.bottomRows<3>() = hat(joint.p_CJ_C);
-      break;
-    case TreeJoint::Type::Hinge:
-      joint.nq = 1;
-      joint.nv = 1;
-      joint.S.resize(6, 1);
-      joint.S.col(0).head<3>() = joint.axis_C;
-      joint.S.col(0).tail<3>() = joint.p_CJ_C.cross(joint.axis_C);
-      break;
-    case TreeJoint::Type::Fixed:
-      joint.nq = 0;
-      joint.nv = 0;
-      joint.S.resize(6, 0);
-      break;
-  }
+  joint.kind = &joint_kind(joint.type);
+  joint.nq = joint.kind->coordinate_count();
+  joint.nv = joint.kind->speed_count();
+  joint.kind->set_motion_subspace(joint);
 }
 
 TreeJoint from_model_joint(const JointModel& joint, int index, bool reversed) {
   TreeJoint t;
-  t.type = joint.type == JointModel::Type::Ball    ? TreeJoint::Type::Ball
-           : joint.type == JointModel::Type::Hinge ? TreeJoint::Type::Hinge
-                                                   : TreeJoint::Type::Fixed;
+  t.type = joint.type;
   t.model_joint = index;
   t.reversed = reversed;
   if (!reversed) {
@@ -53,7 +30,8 @@ TreeJoint from_model_joint(const JointModel& joint, int index, bool reversed) {
     t.axis_C = joint.axis_B;
   } else {
     // B is the parent: A turns relative to B by -theta about the same line, so about -axis in A's
-    // axes by +theta, and theta keeps the sign the scenario gave it.
+    // axes by +theta, and theta keeps the sign the scenario gave it; a slider's A moves relative to
+    // B by -d along the axis, so by +d along -axis.
     t.parent = joint.body_b;
     t.child = static_cast<std::size_t>(joint.body_a);
     t.p_PJ_P = joint.p_BJ_B;
@@ -101,7 +79,7 @@ std::vector<TreeJoint> build_kinematic_tree(const Model& model) {
   for (std::size_t b = 0; b < n; ++b) {
     if (reached[b]) continue;
     TreeJoint free;
-    free.type = TreeJoint::Type::Free;
+    free.type = JointType::Free;
     free.parent = kGround;
     free.child = b;
     set_subspace(free);

@@ -130,7 +130,7 @@ TorsionalSpringSpec read_torsional_spring(const Reader& reader, const MapReader&
   const auto rest = map.find("rest");
   if (!rest) return spring;
   const bool across_hinge = std::any_of(joints.begin(), joints.end(), [&](const JointSpec& j) {
-    return j.type == JointSpec::Type::Hinge &&
+    return j.type == JointType::Hinge &&
            ((j.body_a == spring.body_a && j.body_b == spring.body_b) ||
             (j.body_a == spring.body_b && j.body_b == spring.body_a));
   });

@@ -1,6 +1,6 @@
-// `joints:`: a mapping from each joint's name to {type: ball | hinge | fixed, bodies: [a, b] (or
-// body: b, held by ground), at: world point at t = 0, axis: (hinge), motor: (hinge), lock:
-// (hinge)}.
+// `joints:`: a mapping from each joint's name to {type: ball | hinge | prismatic | fixed,
+// bodies: [a, b] (or body: b, held by ground), at: world point at t = 0, axis:, motor:, lock:
+// (hinge and prismatic)}.
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
@@ -11,23 +11,32 @@
 namespace tumble::scenario_reading {
 namespace {
 
-const std::vector<std::string> kJointTypes = {"ball", "hinge", "fixed"};
+const std::vector<std::string> kJointTypes = {"ball", "hinge", "prismatic", "fixed"};
 
-MotorSpec read_motor(const Reader& reader, const Field& field) {
-  const MapReader map(reader, field, "a motor {speed: rad/s} or {torque: N m}, with from:, to:");
-  map.allow_only({"speed", "torque", "from", "to"}, "a motor");
+// A hinge's motor gives speed: (rad/s) or torque: (N m); a slider's speed: (m/s) or force: (N).
+MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
+  const bool slider = type == JointType::Prismatic;
+  const std::string effort_key = slider ? "force" : "torque";
+  const std::string speed_unit = slider ? "m/s" : "rad/s";
+  const std::string effort_unit = slider ? "N" : "N m";
+  const MapReader map(reader, field,
+                      fmt::format("a motor {{speed: {}}} or {{{}: {}}}, with from:, to:",
+                                  speed_unit, effort_key, effort_unit));
+  map.allow_only({"speed", effort_key, "from", "to"}, "a motor");
   MotorSpec motor;
   motor.where = reader.location(field.key_mark);
   const auto speed = map.find("speed");
-  const auto torque = map.find("torque");
-  if (speed && torque) {
-    reader.fail_at_key(*torque, "a motor prescribes either the speed or the torque, not both");
+  const auto effort = map.find(effort_key);
+  if (speed && effort) {
+    reader.fail_at_key(*effort,
+                       "a motor prescribes either the speed or the " + effort_key + ", not both");
   }
-  if (!speed && !torque) {
-    reader.fail_at_value(field, "give the motor's speed: (rad/s, relative) or torque: (N m)");
+  if (!speed && !effort) {
+    reader.fail_at_value(field, fmt::format("give the motor's speed: ({}, relative) or {}: ({})",
+                                            speed_unit, effort_key, effort_unit));
   }
-  motor.kind = speed ? MotorSpec::Kind::Speed : MotorSpec::Kind::Torque;
-  motor.value = reader.number(speed ? *speed : *torque);
+  motor.kind = speed ? MotorSpec::Kind::Speed : MotorSpec::Kind::Effort;
+  motor.value = reader.number(speed ? *speed : *effort);
   if (const auto f = map.find("from")) motor.from = reader.number(*f);
   if (const auto f = map.find("to")) {
     motor.to = reader.number(*f);
@@ -42,29 +51,31 @@ MotorSpec read_motor(const Reader& reader, const Field& field) {
 JointSpec read_joint(const Reader& reader, const Field& field,
                      const std::vector<BodySpec>& bodies) {
   const MapReader map(reader, field,
-                      "a joint {type: ball | hinge | fixed, bodies: [a, b], at: [x, y, z]}");
+                      "a joint {type: ball | hinge | prismatic | fixed, bodies: [a, b], at: [x, "
+                      "y, z]}");
   JointSpec joint;
   joint.name = field.key();
   joint.where = reader.location(field.key_mark);
   check_name(reader, field, joint.name, "joint");
   if (joint.name == kGroundName) reader.fail_at_key(field, "ground names the fixed world");
 
-  const Field type_field = map.require("type", "ball, hinge or fixed");
+  const Field type_field = map.require("type", "ball, hinge, prismatic or fixed");
   const std::string type = reader.text(type_field);
   if (std::find(kJointTypes.begin(), kJointTypes.end(), type) == kJointTypes.end()) {
     std::string why = "unknown joint type '" + type + "'";
     if (const auto match = closest_match(type, kJointTypes))
       why += "; did you mean '" + *match + "'?";
-    reader.fail_at_value(type_field, why + " (the types are ball, hinge and fixed)");
+    reader.fail_at_value(type_field, why + " (the types are ball, hinge, prismatic and fixed)");
   }
-  joint.type = type == "ball"    ? JointSpec::Type::Ball
-               : type == "hinge" ? JointSpec::Type::Hinge
-                                 : JointSpec::Type::Fixed;
+  joint.type = type == "ball"        ? JointType::Ball
+               : type == "hinge"     ? JointType::Hinge
+               : type == "prismatic" ? JointType::Prismatic
+                                     : JointType::Fixed;
   std::vector<std::string> keys = {"type", "bodies", "body", "at"};
-  if (joint.type == JointSpec::Type::Hinge) keys.insert(keys.end(), {"axis", "motor", "lock"});
+  if (has_axis(joint.type)) keys.insert(keys.end(), {"axis", "motor", "lock"});
   map.allow_only(keys, "a " + type + " joint", [&](const std::string& key) -> std::string {
     if (key == "axis" || key == "motor" || key == "lock") {
-      return "only a hinge has " + key + " (this joint is a " + type + ")";
+      return "only a hinge or a prismatic joint has " + key + " (this joint is a " + type + ")";
     }
     return "";
   });
@@ -95,20 +106,23 @@ JointSpec read_joint(const Reader& reader, const Field& field,
   }
   joint.at_W = reader.vec3(map.require("at", "the joint's point, world coordinates at t = 0"));
 
-  if (joint.type != JointSpec::Type::Hinge) return joint;
-  const Field axis_field = map.require("axis", "the hinge's direction [x, y, z], world at t = 0");
+  if (!has_axis(joint.type)) return joint;
+  const Field axis_field =
+      map.require("axis", joint.type == JointType::Hinge
+                              ? "the hinge's direction [x, y, z], world at t = 0"
+                              : "the direction the slider moves along [x, y, z], world at t = 0");
   const Vec3 axis = reader.vec3(axis_field);
   if (!(axis.norm() > 0.0)) reader.fail_at_value(axis_field, "the axis must not be zero");
   joint.axis_W = axis.normalized();
-  if (const auto f = map.find("motor")) joint.motor = read_motor(reader, *f);
+  if (const auto f = map.find("motor")) joint.motor = read_motor(reader, *f, joint.type);
   if (const auto f = map.find("lock")) {
     const MapReader lock(reader, *f, "a lock {at: t}");
     lock.allow_only({"at"}, "a lock");
-    const Field at = lock.require("at", "the time the hinge locks, s");
+    const Field at = lock.require("at", "the time the joint locks, s");
     joint.lock_at = reader.number(at);
     if (!(joint.lock_at > 0.0)) {
       reader.fail_at_value(at,
-                           "the lock acts at a time after the start (> 0 s); a hinge rigid "
+                           "the lock acts at a time after the start (> 0 s); a joint rigid "
                            "from the start is a fixed joint");
     }
   }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tumble/dynamics/joint_type.hpp"
 #include "tumble/inertia/mass_properties.hpp"
 #include "tumble/inertia/shapes.hpp"
 #include "tumble/math/types.hpp"
@@ -82,22 +83,24 @@ inline constexpr const char* kGroundName = "ground";
 
 // `motor:` of a hinge: a prescribed relative speed or a torque, optionally on a schedule.
 struct MotorSpec {
-  enum class Kind { None, Speed, Torque } kind = Kind::None;
-  double value = 0.0;                                      // rad/s or N m
+  // Speed: rad/s about a hinge, m/s along a slider; Effort: `torque:` (N m) about a hinge,
+  // `force:` (N) along a slider.
+  enum class Kind { None, Speed, Effort } kind = Kind::None;
+  double value = 0.0;
   double from = -std::numeric_limits<double>::infinity();  // s
   double to = std::numeric_limits<double>::infinity();     // s
   SourceLocation where;
 };
 
 struct JointSpec {
-  enum class Type { Ball, Hinge, Fixed } type = Type::Ball;
+  JointType type = JointType::Ball;
   std::string name;                  // the key under `joints:`
   std::string body_a = kGroundName;  // `bodies: [a, b]`, or `body: b` (then a is ground)
   std::string body_b;
-  Vec3 at_W = Vec3::Zero();                                  // the joint point, world at t = 0, m
-  Vec3 axis_W = Vec3::UnitZ();                               // hinge: unit axis, world at t = 0
-  MotorSpec motor;                                           // hinge only
-  double lock_at = std::numeric_limits<double>::infinity();  // hinge only: `lock: {at: t}`, s
+  Vec3 at_W = Vec3::Zero();     // the joint point, world at t = 0, m
+  Vec3 axis_W = Vec3::UnitZ();  // hinge, prismatic: unit axis, world at t = 0
+  MotorSpec motor;              // hinge, prismatic
+  double lock_at = std::numeric_limits<double>::infinity();  // hinge, prismatic: `lock: {at: t}`
   SourceLocation where;
 };
 

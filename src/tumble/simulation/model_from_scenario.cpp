@@ -96,9 +96,7 @@ Mat3 orientation(const Scenario& scenario, int body) {
 
 JointModel joint_model(const Scenario& scenario, const JointSpec& spec) {
   JointModel joint;
-  joint.type = spec.type == JointSpec::Type::Ball    ? JointModel::Type::Ball
-               : spec.type == JointSpec::Type::Hinge ? JointModel::Type::Hinge
-                                                     : JointModel::Type::Fixed;
+  joint.type = spec.type;
   joint.name = spec.name;
   joint.body_a = body_index(scenario, spec.body_a);
   joint.body_b = body_index(scenario, spec.body_b);
@@ -108,9 +106,9 @@ JointModel joint_model(const Scenario& scenario, const JointSpec& spec) {
   const Mat3 R_WB = orientation(scenario, joint.body_b);
   joint.R_AB0 = R_WA.transpose() * R_WB;
   joint.axis_B = R_WB.transpose() * spec.axis_W;
-  joint.motor.kind = spec.motor.kind == MotorSpec::Kind::Speed    ? HingeMotor::Kind::Speed
-                     : spec.motor.kind == MotorSpec::Kind::Torque ? HingeMotor::Kind::Torque
-                                                                  : HingeMotor::Kind::None;
+  joint.motor.kind = spec.motor.kind == MotorSpec::Kind::Speed    ? JointMotor::Kind::Speed
+                     : spec.motor.kind == MotorSpec::Kind::Effort ? JointMotor::Kind::Effort
+                                                                  : JointMotor::Kind::None;
   joint.motor.value = spec.motor.value;
   joint.motor.from = spec.motor.from;
   joint.motor.to = spec.motor.to;
@@ -131,7 +129,7 @@ TorsionalSpring torsional_spring_model(const Scenario& scenario, const Model& mo
   spring.R_AB_rest = spec.rest_orientation.value_or(R_AB0);
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
     const JointModel& joint = model.joints[j];
-    if (joint.type != JointModel::Type::Hinge) continue;
+    if (joint.type != JointType::Hinge) continue;
     const bool same = joint.body_a == spring.body_a && joint.body_b == spring.body_b;
     const bool swapped = joint.body_a == spring.body_b && joint.body_b == spring.body_a;
     if (!same && !swapped) continue;

@@ -45,18 +45,24 @@ void check_initial_velocities(const Scenario& scenario, const Formulation& formu
       fail(body.velocity_where, "velocity", given[i].v_G, allowed[i].v_G, "m/s");
     }
   }
-  // A speed motor running from the start fixes its hinge's rate from the start.
+  // A speed motor running from the start fixes its joint's rate from the start.
   for (std::size_t j = 0; j < scenario.joints.size(); ++j) {
     const MotorSpec& motor = scenario.joints[j].motor;
     if (motor.kind != MotorSpec::Kind::Speed || !(motor.from <= 0.0 && 0.0 < motor.to)) continue;
-    const double rate = formulation.hinge_rate(y0, j);
+    const double rate = formulation.joint_rate(y0, j);
     if (std::abs(rate - motor.value) > 1e-9 * (std::abs(rate) + std::abs(motor.value)) + 1e-12) {
+      const bool slider = scenario.joints[j].type == JointType::Prismatic;
       throw ScenarioError(
           motor.where, "joints." + scenario.joints[j].name + ".motor",
-          fmt::format("the motor drives the hinge at {:.9g} rad/s from the start, but the bodies' "
-                      "angular velocities turn it at {:.9g} rad/s; give them angular velocities "
-                      "that agree, or start the motor later (from: ...)",
-                      motor.value, rate));
+          slider ? fmt::format("the motor drives the slider at {:.9g} m/s from the start, but the "
+                               "bodies' velocities move it at {:.9g} m/s; give them velocities "
+                               "that agree, or start the motor later (from: ...)",
+                               motor.value, rate)
+                 : fmt::format("the motor drives the hinge at {:.9g} rad/s from the start, but "
+                               "the bodies' angular velocities turn it at {:.9g} rad/s; give "
+                               "them angular velocities that agree, or start the motor later "
+                               "(from: ...)",
+                               motor.value, rate));
     }
   }
 }

@@ -16,6 +16,8 @@
 
 #include "tumble/multibody/articulated_formulation.hpp"
 
+#include "tumble/math/constraint_solve.hpp"
+
 namespace tumble {
 
 namespace {
@@ -304,10 +306,19 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
     return true;
   };
   status.mode = ContactMode::Rolling;
-  solve_contacts_at(y);
+  // Where joints tie the contact's motions together, rolling may ask for accelerations no force
+  // gives together: then it cannot roll or stick, and slides the way it is pushed.
+  bool can_roll = true;
+  try {
+    solve_contacts_at(y);
+  } catch (const InconsistentConstraints&) {
+    can_roll = false;
+  }
   const double slip = now.slip_W.norm();
   const Vec3 demand = friction_demand(c);
-  if (slip > status.slip_zero) {
+  if (!can_roll) {
+    if (!start_sliding(c, t, y)) return false;
+  } else if (slip > status.slip_zero) {
     status.mode = ContactMode::Sliding;
     status.slide_direction_W = now.slip_W / slip;
     status.slide_turn_W.setZero();
@@ -586,8 +597,15 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       if (law.friction) {
         count = append_contact_unknowns(c, ContactMode::Rolling, ContactRows::Projection,
                                         Vec3::Zero(), 0);
-        solve_for_restitution();
-        if (!(friction_demand(c).norm() <= contact.friction * now.normal_force)) {
+        // No impulse may both bounce the contact and stop its slip where a joint ties the two
+        // together (a pendulum's bob on a wall): then it slides.
+        bool sticks = true;
+        try {
+          solve_for_restitution();
+        } catch (const InconsistentConstraints&) {
+          sticks = false;
+        }
+        if (!sticks || !(friction_demand(c).norm() <= contact.friction * now.normal_force)) {
           const double slip = now.slip_W.norm();
           const Vec3 slide = slip > 0.0 ? Vec3(now.slip_W / slip) : pushed_direction(c);
           count = append_contact_unknowns(c, ContactMode::Sliding, ContactRows::Motion, slide, 0);

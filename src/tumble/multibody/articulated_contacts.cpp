@@ -22,42 +22,12 @@
 
 #include "tumble/multibody/articulated_formulation.hpp"
 
+#include "tumble/math/constraint_solve.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
 
 namespace {
-
-// Solves the leading n x n block of A x = b by Gaussian elimination with partial pivoting, in
-// place (b becomes x): A is preallocated for every contact, so nothing is allocated here.
-void solve_in_place(MatX& A, VecX& b, Eigen::Index n) {
-  for (Eigen::Index col = 0; col < n; ++col) {
-    Eigen::Index pivot = col;
-    for (Eigen::Index r = col + 1; r < n; ++r) {
-      if (std::abs(A(r, col)) > std::abs(A(pivot, col))) pivot = r;
-    }
-    // A pivot of exactly zero: redundant rows. A non-finite one (a stage that blew up) goes
-    // through as NaN, and the integrator retries that step shorter.
-    if (A(pivot, col) == 0.0) {
-      throw std::runtime_error(
-          "the contacts' constraints are redundant (two contacts hold the same freedom)");
-    }
-    if (pivot != col) {
-      for (Eigen::Index c = col; c < n; ++c) std::swap(A(pivot, c), A(col, c));
-      std::swap(b(pivot), b(col));
-    }
-    for (Eigen::Index r = col + 1; r < n; ++r) {
-      const double factor = A(r, col) / A(col, col);
-      for (Eigen::Index c = col; c < n; ++c) A(r, c) -= factor * A(col, c);
-      b(r) -= factor * b(col);
-    }
-  }
-  for (Eigen::Index r = n; r-- > 0;) {
-    double sum = b(r);
-    for (Eigen::Index c = r + 1; c < n; ++c) sum -= A(r, c) * b(c);
-    b(r) = sum / A(r, r);
-  }
-}
 
 // A wrench (moment about the COM; force) in the body's axes, of a force F_W at P and a pure
 // moment M_W.
@@ -353,7 +323,7 @@ void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
 }
 
 void ArticulatedFormulation::solve_contact_system(Eigen::Index count, VecX& x) const {
-  solve_in_place(d_.contact_matrix, x, count);
+  solve_constraints_in_place(d_.contact_matrix, x, count, d_.solve_scratch);
 }
 
 void ArticulatedFormulation::set_contact_resultants(Eigen::Index count, const VecX& x) const {

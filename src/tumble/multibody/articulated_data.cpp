@@ -23,6 +23,7 @@ ArticulatedData::ArticulatedData(const ArticulatedModel& model) {
   contact_matrix.resize(rows, rows);
   contact_rhs.resize(rows);
   contact_x.resize(rows);
+  solve_scratch = ConstraintSolveScratch(rows);
   impact_y.resize(model.dimension);
   onset_y.resize(model.dimension);
   onset_dydt.resize(model.dimension);

@@ -9,6 +9,7 @@
 
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/contact/plane_contact.hpp"
+#include "tumble/math/constraint_solve.hpp"
 #include "tumble/multibody/articulated_model.hpp"
 #include "tumble/multibody/spatial.hpp"
 
@@ -86,9 +87,10 @@ struct ArticulatedData {
   std::vector<ContactUnknown> unknowns;  // sized to 6 per contact
   MatX contact_matrix;
   VecX contact_rhs, contact_x;
-  std::vector<int> touching;  // find_touching_vertices's, reserved for the most vertices
-  VecX impact_y;              // impact()'s
-  VecX onset_y, onset_dydt;   // turn_starting_slip()'s
+  ConstraintSolveScratch solve_scratch;  // for rows that joints or other contacts make redundant
+  std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
+  VecX impact_y;                         // impact()'s
+  VecX onset_y, onset_dydt;              // turn_starting_slip()'s
   // The time of the state being evaluated: a starting slip's direction turns with it.
   double time_now = 0.0;
 };

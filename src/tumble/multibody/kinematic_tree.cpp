@@ -1,5 +1,6 @@
 #include "tumble/multibody/kinematic_tree.hpp"
 
+#include <algorithm>
 #include <deque>
 #include <stdexcept>
 
@@ -76,7 +77,14 @@ std::vector<TreeJoint> build_kinematic_tree(const Model& model) {
     }
   };
   grow(kGround);
-  for (std::size_t b = 0; b < n; ++b) {
+  // A group of bodies that no joint holds to ground hangs from its root by a free joint: the
+  // first body (in the model's order) that touches a plane, else its first body, so that a body
+  // in contact is held by a joint only where it must be.
+  std::vector<std::size_t> root_order;
+  for (const PlaneContact& contact : model.contacts) root_order.push_back(contact.body);
+  std::sort(root_order.begin(), root_order.end());
+  for (std::size_t b = 0; b < n; ++b) root_order.push_back(b);
+  for (const std::size_t b : root_order) {
     if (reached[b]) continue;
     TreeJoint free;
     free.type = JointType::Free;

@@ -34,8 +34,10 @@ struct TreeJoint {
   MotionSubspace S;  // 6 x nv, child axes at the child's COM
 };
 
-// Tree joints in an order where every parent comes before its children. Throws
-// std::invalid_argument naming a joint that closes a loop.
+// Tree joints in an order where every parent comes before its children. A group of bodies joined
+// to each other but not to ground hangs from ground by a free joint at its first body that
+// touches a plane (else its first body). Throws std::invalid_argument naming a joint that closes
+// a loop.
 std::vector<TreeJoint> build_kinematic_tree(const Model& model);
 
 }  // namespace tumble

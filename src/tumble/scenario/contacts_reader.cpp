@@ -1,8 +1,11 @@
 // `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
-// The body must be free (in no joint) and of a shape whose contact with a plane tumble resolves:
-// a curved surface touching at one point, a cone, or a polyhedron (docs/scenario.md, Contacts).
+// The body must be of a shape whose contact with a plane tumble resolves: a curved surface
+// touching at one point, a cone, or a polyhedron (docs/scenario.md, Contacts); a body that a joint
+// holds (to ground, or to the body its group hangs from) only a sphere or a shell, for now.
 #include <fmt/format.h>
 #include <algorithm>
+#include <map>
+#include <set>
 
 #include "tumble/scenario/readers.hpp"
 
@@ -25,13 +28,6 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   }
   const Field body_field = map.require("body", "the body that touches the plane");
   contact.body = read_body_or_ground(reader, body_field, scenario.bodies, false);
-  const auto joined = std::find_if(
-      scenario.joints.begin(), scenario.joints.end(),
-      [&](const JointSpec& j) { return j.body_a == contact.body || j.body_b == contact.body; });
-  if (joined != scenario.joints.end()) {
-    reader.fail_at_value(body_field, "body '" + contact.body + "' is in joint '" + joined->name +
-                                         "'; a body in contact must be free (in no joint)");
-  }
   const BodySpec& body = *std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
                                        [&](const BodySpec& b) { return b.name == contact.body; });
   if (!body.parts.empty() || !touches_a_plane(body.shape.kind)) {
@@ -68,6 +64,58 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   return contact;
 }
 
+// The bodies a joint holds in the kinematic tree (multibody/kinematic_tree.hpp): every body joined
+// to ground through joints, and in a group joined only to each other, all but its root (its first
+// body that touches a plane, else its first body).
+std::set<std::string> held_bodies(const Scenario& scenario,
+                                  const std::vector<ContactSpec>& contacts) {
+  std::map<std::string, std::string> parent;
+  const auto root = [&](std::string name) {
+    while (parent.count(name) != 0 && parent[name] != name) name = parent[name];
+    return name;
+  };
+  for (const JointSpec& joint : scenario.joints) {
+    const std::string a = root(joint.body_a), b = root(joint.body_b);
+    parent[a] = b;
+    parent[b] = b;
+  }
+  std::set<std::string> touching;
+  for (const ContactSpec& contact : contacts) touching.insert(contact.body);
+  std::map<std::string, std::string> group_root;  // group -> the body the tree hangs it from
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const BodySpec& body : scenario.bodies) {
+      if (pass == 0 && touching.count(body.name) == 0) continue;
+      group_root.emplace(root(body.name), body.name);
+    }
+  }
+  std::set<std::string> held;
+  const std::string ground = root(kGroundName);
+  for (const BodySpec& body : scenario.bodies) {
+    const std::string group = root(body.name);
+    if (group == ground || group_root[group] != body.name) held.insert(body.name);
+  }
+  return held;
+}
+
+void check_held_bodies(const Reader& reader, const std::vector<Field>& items,
+                       const std::vector<ContactSpec>& contacts, const Scenario& scenario) {
+  const std::set<std::string> held = held_bodies(scenario, contacts);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    if (held.count(contacts[i].body) == 0) continue;
+    const BodySpec& body =
+        *std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
+                      [&](const BodySpec& b) { return b.name == contacts[i].body; });
+    if (body.shape.kind == ShapeKind::Sphere || body.shape.kind == ShapeKind::Shell) continue;
+    const MapReader map(reader, items[i], "a contact");
+    reader.fail_at_value(*map.find("body"),
+                         "body '" + body.name +
+                             "' is held by a joint; on a held body tumble models a sphere's or "
+                             "shell's contact (one point) for now, not a " +
+                             std::string(shape_name(body.shape.kind)) +
+                             "'s: free it, or weld a sphere to it (a fixed joint) where it touches");
+  }
+}
+
 }  // namespace
 
 std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
@@ -94,6 +142,7 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
     contact.where = reader.location(items[i].key_mark);
     contacts.push_back(std::move(contact));
   }
+  check_held_bodies(reader, items, contacts, scenario);
   return contacts;
 }
 

@@ -1,0 +1,39 @@
+#pragma once
+// The small dense solves of constraint forces and impulses: A x = b for the leading n x n block
+// of a preallocated matrix, in place (b becomes x), allocating nothing.
+//
+// Rows may be redundant: a contact on a body that a joint already holds asks for motion the joint
+// has taken away (a pendulum's bob striking a wall: the bob can only move about the pivot, so
+// its contact point's three velocity components are one freedom). Then A is singular, and its
+// rows are consistent (they describe the same motion). The solve first eliminates with partial
+// pivoting, as for independent rows; should a pivot come out at round-off of A's scale, it starts
+// again from the saved A and b with complete pivoting, keeps the rows whose pivots are not
+// round-off, and gives the other unknowns zero: a solution whose forces reach every motion the
+// rows ask for (the joints carry the rest of the load). Rows that contradict each other (the
+// right-hand sides of the dependent ones not at round-off) throw InconsistentConstraints.
+#include <stdexcept>
+#include <vector>
+
+#include "tumble/math/types.hpp"
+
+namespace tumble {
+
+// Rows that ask for motions no force can give together: the mode they state is impossible (a
+// pendulum's bob cannot both bounce off a wall and stop slipping on it), and the caller tries
+// another.
+class InconsistentConstraints : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Room for the redundant-row path, sized once for the largest n.
+struct ConstraintSolveScratch {
+  explicit ConstraintSolveScratch(Eigen::Index largest = 0);
+  MatX A;
+  VecX b;
+  std::vector<Eigen::Index> column_of;  // the unknown at each pivot position
+};
+
+void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch);
+
+}  // namespace tumble

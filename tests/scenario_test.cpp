@@ -679,11 +679,16 @@ TEST(ScenarioError, ExactIsForTorqueFreeBodies) {
                 "exact is for torque-free free bodies; remove forces and joints or choose dopri5"});
 }
 
-TEST(ScenarioError, RtolMustLieBetweenZeroAndOne) {
+TEST(ScenarioError, RtolAndAtolHaveTheIntegratorsRanges) {
   expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1.5\n",
-               {6, 9, "simulate.rtol", "rtol must be between 0 and 1 (e.g. 1e-8), got 1.5"});
+               {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1) (e.g. 1e-8), got 1.5"});
   expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 0\n",
                {6, 9, "simulate.rtol", "got 0"});
+  // Below 100 eps the integrators refuse it: so does the reader, at the key, with the same range.
+  expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1e-15\n",
+               {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1)"});
+  expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  atol: 0\n",
+               {6, 9, "simulate.atol", "atol must be > 0 and finite"});
   expect_error(kHead + kSphere + "simulate:\n  duration: 0\n",
                {5, 13, "simulate.duration", "duration must be > 0 (s), got 0"});
 }

@@ -9,15 +9,16 @@
 #include <string_view>
 
 #include "tumble/integrators/ode_system.hpp"
+#include "tumble/integrators/tolerances.hpp"
 
 namespace tumble {
 
 struct StepControl {
-  double rtol = 1e-3;         // relative tolerance (ode45's default)
-  double atol = 1e-6;         // absolute tolerance (ode45's default)
-  double initial_step = 0.0;  // s; 0: chosen as ode45 does (dop853: as Hairer's code)
-  double max_step = 0.0;      // s; 0: a tenth of the span as ode45 (dop853: the span, as Hairer)
-  double fixed_step = 0.0;    // s; the step of fixed-step methods (required for them)
+  double rtol = tolerances::kDefaultRtol;  // relative tolerance (ode45's default)
+  double atol = tolerances::kDefaultAtol;  // absolute tolerance (ode45's default)
+  double initial_step = 0.0;               // s; 0: chosen as ode45 does (dop853: as Hairer's code)
+  double max_step = 0.0;    // s; 0: a tenth of the span as ode45 (dop853: the span, as Hairer)
+  double fixed_step = 0.0;  // s; the step of fixed-step methods (required for them)
 };
 
 struct IntegratorStats {

@@ -104,13 +104,13 @@ void require_ahead(std::string_view method, double t, double t_stop, double dire
 }
 
 void validate_adaptive(std::string_view method, const StepControl& control) {
-  // Below ~100 eps the error estimate is round-off; ode45 raises such an rtol, we refuse it.
-  const double rtol_min = 100.0 * std::numeric_limits<double>::epsilon();
-  if (!(control.rtol >= rtol_min && control.rtol < 1.0)) {
-    fail(method, "rtol", control.rtol, "use a relative tolerance in [2.2e-14, 1)");
+  if (!tolerances::rtol_valid(control.rtol)) {
+    fail(method, "rtol", control.rtol,
+         std::string("use a relative tolerance ") + tolerances::kRtolRule);
   }
-  if (!(control.atol > 0.0 && std::isfinite(control.atol))) {
-    fail(method, "atol", control.atol, "use a positive, finite absolute tolerance");
+  if (!tolerances::atol_valid(control.atol)) {
+    fail(method, "atol", control.atol,
+         std::string("use an absolute tolerance ") + tolerances::kAtolRule);
   }
   if (!(control.initial_step >= 0.0 && std::isfinite(control.initial_step))) {
     fail(method, "initial_step", control.initial_step,

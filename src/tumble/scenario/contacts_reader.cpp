@@ -107,12 +107,13 @@ void check_held_bodies(const Reader& reader, const std::vector<Field>& items,
                       [&](const BodySpec& b) { return b.name == contacts[i].body; });
     if (body.shape.kind == ShapeKind::Sphere || body.shape.kind == ShapeKind::Shell) continue;
     const MapReader map(reader, items[i], "a contact");
-    reader.fail_at_value(*map.find("body"),
-                         "body '" + body.name +
-                             "' is held by a joint; on a held body tumble models a sphere's or "
-                             "shell's contact (one point) for now, not a " +
-                             std::string(shape_name(body.shape.kind)) +
-                             "'s: free it, or weld a sphere to it (a fixed joint) where it touches");
+    reader.fail_at_value(
+        *map.find("body"),
+        "body '" + body.name +
+            "' is held by a joint; on a held body tumble models a sphere's or "
+            "shell's contact (one point) for now, not a " +
+            std::string(shape_name(body.shape.kind)) +
+            "'s: free it, or weld a sphere to it (a fixed joint) where it touches");
   }
 }
 

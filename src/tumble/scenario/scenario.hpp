@@ -12,6 +12,7 @@
 #include "tumble/dynamics/joint_type.hpp"
 #include "tumble/inertia/mass_properties.hpp"
 #include "tumble/inertia/shapes.hpp"
+#include "tumble/integrators/tolerances.hpp"
 #include "tumble/math/types.hpp"
 
 namespace tumble {
@@ -155,8 +156,8 @@ struct SimulateSpec {
   double duration = 0.0;              // s, > 0, required
   std::string integrator = "dopri5";  // dopri5 | dop853 | rk4 | rkmk4 | exact
   std::string formulation = "body";   // body (production) | textbook (the chapter's [R; omega])
-  double rtol = 1e-3;                 // > 0
-  double atol = 1e-6;                 // > 0
+  double rtol = tolerances::kDefaultRtol;  // integrators/tolerances.hpp: the valid range
+  double atol = tolerances::kDefaultAtol;
   bool rtol_given = false;
   bool atol_given = false;      // when only rtol is given, atol = rtol * 1e-3 (see docs)
   double step = 0.0;            // s: fixed step (rk4, rkmk4); > 0 when required

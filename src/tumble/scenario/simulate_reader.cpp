@@ -12,10 +12,6 @@ namespace {
 const std::vector<std::string> kIntegrators = {"dopri5", "dop853", "rk4", "rkmk4", "exact"};
 const std::vector<std::string> kFormulations = {"body", "textbook"};
 
-// When only rtol is given, atol follows it in ode45's ratio of defaults (1e-6 / 1e-3): RelTol
-// 1e-8 with the default AbsTol 1e-6 would otherwise cap the accuracy near 4e-4.
-constexpr double kAtolPerRtol = 1e-3;
-
 std::string read_choice(const Reader& reader, const Field& field,
                         const std::vector<std::string>& choices, std::string_view what) {
   const std::string value = reader.text(field);
@@ -42,8 +38,11 @@ bool positive(double x) {
 bool non_negative(double x) {
   return x >= 0.0;
 }
-bool fraction(double x) {
-  return x > 0.0 && x < 1.0;
+bool valid_rtol(double x) {
+  return tolerances::rtol_valid(x);
+}
+bool valid_atol(double x) {
+  return tolerances::atol_valid(x);
 }
 
 }  // namespace
@@ -73,14 +72,14 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
     }
   }
   if (const auto f = map.find("rtol")) {
-    sim.rtol = checked(reader, *f, fraction, "between 0 and 1 (e.g. 1e-8)");
+    sim.rtol = checked(reader, *f, valid_rtol, tolerances::kRtolRule);
     sim.rtol_given = true;
   }
   if (const auto f = map.find("atol")) {
-    sim.atol = checked(reader, *f, positive, "> 0 (in the state's units, e.g. 1e-10)");
+    sim.atol = checked(reader, *f, valid_atol, tolerances::kAtolRule);
     sim.atol_given = true;
   } else if (sim.rtol_given) {
-    sim.atol = sim.rtol * kAtolPerRtol;
+    sim.atol = sim.rtol * tolerances::kAtolPerRtol;
   }
   const std::optional<Field> step = map.find("step");
   if (step) sim.step = checked(reader, *step, positive, "> 0 (s)");

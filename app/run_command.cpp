@@ -141,11 +141,7 @@ int run_command(const RunArguments& args) {
   std::optional<TrajectoryCsvWriter> writer;
   try {
     std::filesystem::create_directories(trajectory.parent_path());
-    std::vector<std::string> bodies, joints, contacts;
-    for (const BodySpec& b : scenario.bodies) bodies.push_back(b.name);
-    for (const JointSpec& j : scenario.joints) joints.push_back(j.name);
-    for (const ContactSpec& c : scenario.contacts) contacts.push_back(c.name);
-    writer.emplace(trajectory, bodies, joints, contacts, simulation->formulation->element_names());
+    writer.emplace(trajectory, column_layout(scenario, *simulation->formulation));
   } catch (const std::exception& e) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
     return kOutputError;
@@ -156,12 +152,10 @@ int run_command(const RunArguments& args) {
   std::optional<RecordedTrajectory> recorded;
   if (animation || video) recorded.emplace(scenario.bodies.size());
 
-  const SimulationResult result =
-      run_simulation(*simulation, [&](double t, std::span<const BodyState> states,
-                                      const SystemQuantities& q, const RowExtras& extras) {
-        writer->write_row(t, states, q, &extras);
-        if (recorded) recorded->record(t, states, q);
-      });
+  std::vector<RowSink*> sinks = {&*writer};
+  if (recorded) sinks.push_back(&*recorded);
+  RowFanOut rows(std::move(sinks));
+  const SimulationResult result = run_simulation(*simulation, rows);
   try {
     writer->finish();
     if (animation && recorded->rows() > 0) {

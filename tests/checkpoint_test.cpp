@@ -29,15 +29,13 @@ std::string read_file(const std::filesystem::path& path) {
 class Csv {
  public:
   Csv(const Scenario& scenario, const PreparedSimulation& run, std::filesystem::path path) {
-    std::vector<std::string> bodies, joints, contacts;
-    for (const BodySpec& b : scenario.bodies) bodies.push_back(b.name);
-    for (const JointSpec& j : scenario.joints) joints.push_back(j.name);
-    for (const ContactSpec& c : scenario.contacts) contacts.push_back(c.name);
-    writer_.emplace(std::move(path), bodies, joints, contacts, run.formulation->element_names());
+    writer_.emplace(std::move(path), column_layout(scenario, *run.formulation));
   }
   FullRowObserver observer() {
     return [this](double t, std::span<const BodyState> s, const SystemQuantities& q,
-                  const RowExtras& extras) { writer_->write_row(t, s, q, &extras); };
+                  const RowExtras& extras) {
+      writer_->write_row({t, s, &q, &extras});
+    };
   }
   std::string finish() {
     const std::filesystem::path path = writer_->path();

@@ -45,14 +45,8 @@ void run_to_csv(const Scenario& scenario, const SimulationModel& model, double s
     s.omega_W *= speed_scale;
   }
   run.formulation->pack(states, run.y0);
-  std::vector<std::string> bodies, joints, contacts;
-  for (const BodySpec& b : scenario.bodies) bodies.push_back(b.name);
-  for (const JointSpec& j : scenario.joints) joints.push_back(j.name);
-  for (const ContactSpec& c : scenario.contacts) contacts.push_back(c.name);
-  TrajectoryCsvWriter writer(csv, bodies, joints, contacts, run.formulation->element_names());
-  const SimulationResult result =
-      run_simulation(run, [&](double t, std::span<const BodyState> s, const SystemQuantities& q,
-                              const RowExtras& extras) { writer.write_row(t, s, q, &extras); });
+  TrajectoryCsvWriter writer(csv, column_layout(scenario, *run.formulation));
+  const SimulationResult result = run_simulation(run, writer);
   EXPECT_TRUE(result.report.completed) << result.report.failure;
   writer.finish();
 }

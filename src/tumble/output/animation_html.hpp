@@ -18,6 +18,7 @@
 
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/inertia/shapes.hpp"
+#include "tumble/output/output_row.hpp"
 #include "tumble/scenario/scenario.hpp"
 
 namespace tumble {
@@ -62,10 +63,11 @@ struct AnimationScene {
 AnimationScene make_animation_scene(const Scenario& scenario);
 
 // The output rows, kept in memory for the page.
-class RecordedTrajectory {
+class RecordedTrajectory final : public RowSink {
  public:
   explicit RecordedTrajectory(std::size_t body_count) : body_count_(body_count) {}
   void record(double t, std::span<const BodyState> states, const SystemQuantities& q);
+  void write_row(const OutputRow& row) override { record(row.t, row.states, *row.quantities); }
   std::size_t rows() const { return t_.size(); }
   std::size_t body_count() const { return body_count_; }
   double t(std::size_t row) const { return t_[row]; }

@@ -239,6 +239,26 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObs
   return run_or_resume(simulation, observe, on_checkpoint, nullptr);
 }
 
+SimulationResult run_simulation(PreparedSimulation& simulation, RowSink& sink,
+                                const CheckpointCallback& on_checkpoint) {
+  return run_simulation(
+      simulation,
+      [&](double t, std::span<const BodyState> states, const SystemQuantities& q,
+          const RowExtras& extras) {
+        sink.write_row({t, states, &q, &extras});
+      },
+      on_checkpoint);
+}
+
+ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation) {
+  ColumnLayout layout;
+  for (const BodySpec& b : scenario.bodies) layout.bodies.push_back(b.name);
+  for (const JointSpec& j : scenario.joints) layout.joints.push_back(j.name);
+  for (const ContactSpec& c : scenario.contacts) layout.contacts.push_back(c.name);
+  layout.elements = formulation.element_names();
+  return layout;
+}
+
 SimulationResult resume_simulation(PreparedSimulation& simulation,
                                    const SimulationCheckpoint& checkpoint,
                                    const FullRowObserver& observe,

@@ -12,6 +12,8 @@
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/dynamics/formulation.hpp"
 #include "tumble/integrators/driver.hpp"
+#include "tumble/output/columns.hpp"
+#include "tumble/output/output_row.hpp"
 #include "tumble/scenario/scenario.hpp"
 
 namespace tumble {
@@ -111,6 +113,12 @@ using CheckpointCallback = std::function<void(SimulationCheckpoint checkpoint)>;
 SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObserver& observe,
                                 const CheckpointCallback& on_checkpoint = {});
 SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserver& observe);
+// The same, each row to a sink (the trajectory CSV, the animation's recording, several at once).
+SimulationResult run_simulation(PreparedSimulation& simulation, RowSink& sink,
+                                const CheckpointCallback& on_checkpoint = {});
+// The columns a run of this scenario writes: its bodies', joints', contacts' and the
+// formulation's elements'.
+ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation);
 // Goes on from a checkpoint of a run of the same model (prepare_run() of it gives `simulation`;
 // its formulation and integrator are replaced by the checkpoint's).
 SimulationResult resume_simulation(PreparedSimulation& simulation,

@@ -1,0 +1,14 @@
+#include "tumble/output/columns.hpp"
+
+namespace tumble {
+
+std::vector<std::string> column_names(const ColumnLayout& layout) {
+  std::vector<std::string> names;
+  walk_columns(layout, nullptr, [&](std::string_view owner, std::string_view field, double) {
+    names.push_back(owner.empty() ? std::string(field)
+                                  : std::string(owner) + "." + std::string(field));
+  });
+  return names;
+}
+
+}  // namespace tumble

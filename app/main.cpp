@@ -27,7 +27,15 @@ int main(int argc, char** argv) {
   run->set_version_flag("--version", version);
   run->add_option("scenario", run_args.scenario, "Scenario file (YAML)")->required();
   run->add_option("--out", run_args.out_dir, "Directory for the output files (created if missing)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](const std::string& dir) {
+            return dir.empty() ? std::string(
+                                     "an empty path names no directory (use . for this "
+                                     "one)")
+                               : std::string();
+          },
+          "DIR"));
   run->add_option("--set", run_args.sets,
                   "Override a parameter: NAME=VALUE (VALUE may be an expression); repeatable");
   run->add_flag("--animate", run_args.animate,

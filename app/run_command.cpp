@@ -138,6 +138,22 @@ int run_command(const RunArguments& args) {
 
   const std::filesystem::path out_dir(args.out_dir);
   const std::filesystem::path trajectory = out_dir / scenario.output.trajectory;
+  // --animate names the page after the trajectory, with .html: a trajectory named .html is the
+  // page's own name, and one would overwrite the other.
+  if (const auto page = animation_path(args, scenario, trajectory);
+      page && page->lexically_normal() == trajectory.lexically_normal()) {
+    const SourceLocation where = scenario.output.trajectory_where.line > 0
+                                     ? scenario.output.trajectory_where
+                                     : SourceLocation{scenario.file, 0, 0};
+    fmt::print(stderr, "{}\n",
+               ScenarioError(where, "output.trajectory",
+                             fmt::format("'{}' is also the animation page's name (--animate "
+                                         "writes it beside the trajectory with .html): give the "
+                                         "trajectory a .csv name",
+                                         scenario.output.trajectory))
+                   .what());
+    return kInvalidScenario;
+  }
   std::optional<TrajectoryCsvWriter> writer;
   try {
     std::filesystem::create_directories(trajectory.parent_path());

@@ -92,6 +92,36 @@ TEST(Cli, BadCommandLinesExitWithStatusTwo) {
       run_tumble("run " + example("tumbling_prism.yaml") + " --set zz=3");
   EXPECT_EQ(unknown_set.status, 2);
   EXPECT_NE(unknown_set.out.find("zz"), std::string::npos) << unknown_set.out;
+  // An empty --out names no directory: a bad command line, not an unwritable output.
+  const CommandResult empty_out = run_tumble("run " + example("tumbling_prism.yaml") + " --out ''");
+  EXPECT_EQ(empty_out.status, 2) << empty_out.out;
+  EXPECT_NE(empty_out.out.find("--out: an empty path names no directory"), std::string::npos)
+      << empty_out.out;
+}
+
+// Two outputs at one path would leave only the last written: refused before the run, exit 3.
+TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
+  const fs::path dir = fresh_dir("collide");
+  const std::string ball =
+      "tumble: 1\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 1}\n"
+      "simulate: {duration: 0.1}\n";
+  std::ofstream(dir / "same.yaml")
+      << ball + "output: {trajectory: base.csv, animation: base.csv}\n";
+  const CommandResult same =
+      run_tumble("run " + (dir / "same.yaml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(same.status, 3) << same.out;
+  EXPECT_NE(same.out.find("same.yaml:5:43: output.animation: 'base.csv' is output.trajectory too"),
+            std::string::npos)
+      << same.out;
+  std::ofstream(dir / "page.yaml") << ball + "output: {trajectory: run.html}\n";
+  const CommandResult page = run_tumble("run " + (dir / "page.yaml").string() +
+                                        " --animate --out " + (dir / "out").string());
+  EXPECT_EQ(page.status, 3) << page.out;
+  EXPECT_NE(page.out.find("page.yaml:5:22: output.trajectory: 'run.html' is also the animation "
+                          "page's name"),
+            std::string::npos)
+      << page.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "run.html"));
 }
 
 // The chapter's prism end to end: the contract's columns, one row per output_every, the state

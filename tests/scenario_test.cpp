@@ -679,6 +679,32 @@ TEST(ScenarioError, ExactIsForTorqueFreeBodies) {
                 "exact is for torque-free free bodies; remove forces and joints or choose dopri5"});
 }
 
+TEST(ScenarioError, ASecondYamlDocumentIsRefused) {
+  expect_error(kHead + kSphere + kSimulate + "---\ntumble: 1\n",
+               {6, 1, "", "the file holds 2 YAML documents (separated by ---)"});
+}
+
+TEST(ScenarioError, AnUnclosedQuoteIsLocatedWhereItOpens) {
+  // The quote runs on and swallows bodies: and simulate:, which the parser takes as its text.
+  expect_error(kHead + "name: \"tumbling\n" + kSphere + kSimulate,
+               {2, 7, "", "this quoted text is not closed on its line"});
+  // A quoted text with ': ' in it, closed on its line, is a name like any other.
+  const fs::path path =
+      write_file("colon.yaml", kHead + "name: \"Cubli: jumping\"\n" + kSphere + kSimulate);
+  EXPECT_EQ(load_scenario(path.string(), {}).name, "Cubli: jumping");
+}
+
+TEST(ScenarioError, ManyKeysAreReadInLinearTime) {
+  // 200,000 keys in one mapping, the last repeating the first: the duplicate is found (a check
+  // of each key against every earlier one would take minutes here), then 200,000 unknown keys
+  // are refused at the first.
+  std::string many = kHead + kSphere + kSimulate + "output:\n";
+  for (int i = 0; i < 200000; ++i) many += "  k" + std::to_string(i) + ": 1\n";
+  expect_error(many + "  k0: 2\n",
+               {200006, 3, "output.k0", "duplicate key 'k0' (first given on line 6)"});
+  expect_error(many, {6, 3, "output.k0", "unknown key 'k0'"});
+}
+
 TEST(ScenarioError, RtolAndAtolHaveTheIntegratorsRanges) {
   expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1.5\n",
                {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1) (e.g. 1e-8), got 1.5"});

@@ -1,5 +1,6 @@
 #include "tumble/output/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <signal.h>
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <random>
 #include <stdexcept>
 #include <system_error>
 
@@ -77,14 +79,28 @@ void release_for_signals(std::size_t slot) {
 }  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
-  // A name unique to this process, so two runs writing the same destination do not collide.
-  temporary_ = path_;
-  temporary_ += fmt::format(".partial-{}", static_cast<long>(::getpid()));
   install_handler_once();
-  file_ = std::fopen(temporary_.c_str(), "wb");
+  // A new file under a name no one can guess: the process and a random part. O_EXCL refuses a
+  // name that exists (a planted file or symlink, or another run's), O_NOFOLLOW a symlink, and
+  // another name is tried.
+  static thread_local std::mt19937_64 random{std::random_device{}()};
+  int fd = -1;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    temporary_ = path_;
+    temporary_ += fmt::format(".partial-{}-{:012x}", static_cast<long>(::getpid()),
+                              random() & 0xffffffffffffULL);
+    fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST) break;
+  }
+  if (fd >= 0) file_ = ::fdopen(fd, "wb");
   if (file_ == nullptr) {
+    const int error = errno;
+    if (fd >= 0) {
+      ::close(fd);
+      ::unlink(temporary_.c_str());
+    }
     throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path_.string(), std::generic_category().message(errno)));
+        fmt::format("cannot write {}: {}", path_.string(), std::generic_category().message(error)));
   }
   signal_slot_ = hold_for_signals(temporary_);
 }

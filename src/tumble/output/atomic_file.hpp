@@ -2,7 +2,10 @@
 // An output file that appears only when complete: it is written under a temporary name beside
 // its destination (same file system, so the final rename is atomic) and renamed by finish();
 // destroyed unfinished, it removes the temporary file and leaves nothing behind. A run stopped by
-// SIGINT, SIGTERM or SIGHUP while it writes removes the temporary file too.
+// SIGINT, SIGTERM or SIGHUP while it writes removes the temporary file too. The temporary file is
+// created new (O_CREAT | O_EXCL | O_NOFOLLOW) under a name with a random part: in a directory
+// that others can write, a file or symlink planted at any name is never opened, so tumble cannot
+// be made to write through it.
 #include <cstdio>
 #include <filesystem>
 #include <span>

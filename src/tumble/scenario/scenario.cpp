@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string_view>
 
 #include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/readers.hpp"
@@ -31,6 +33,66 @@ const std::vector<std::string> kTopLevelKeys = {"tumble",   "name",   "parameter
                                                 "bodies",   "joints", "forces",     "contacts",
                                                 "simulate", "output"};
 
+// The line of `text` that starts at line index `line` (0-based), without its end.
+std::string_view line_of(std::string_view text, int line) {
+  std::size_t start = 0;
+  for (int i = 0; i < line && start != std::string_view::npos; ++i) {
+    start = text.find('\n', start);
+    if (start != std::string_view::npos) ++start;
+  }
+  if (start == std::string_view::npos || start > text.size()) return {};
+  const std::size_t end = text.find('\n', start);
+  return text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+}
+
+// Whether the quoted scalar opening at `column` of `line` closes on that line.
+bool closes_on_its_line(std::string_view line, std::size_t column) {
+  if (column >= line.size()) return true;
+  const char quote = line[column];
+  if (quote != '"' && quote != '\'') return true;
+  for (std::size_t i = column + 1; i < line.size(); ++i) {
+    if (quote == '"' && line[i] == '\\') {
+      ++i;  // an escaped character
+    } else if (line[i] == quote) {
+      if (quote == '\'' && i + 1 < line.size() && line[i + 1] == '\'') {
+        ++i;  // '' is a quote inside single quotes
+      } else {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// A quote left open runs on over the following lines and swallows their keys, which the parser
+// accepts as text; the scenario would then be refused for a missing key far from the mistake.
+// A quoted value that does not close on its own line and has taken in a `key: value` is such a
+// quote: refused where it opens.
+void check_quotes_closed(const YAML::Node& node, std::string_view text, const std::string& path) {
+  if (node.IsScalar()) {
+    if (node.Tag() != "!" || node.Mark().is_null()) return;
+    const std::string& value = node.Scalar();
+    if (value.find(": ") == std::string::npos && value.find(":\n") == std::string::npos) return;
+    const YAML::Mark mark = node.Mark();
+    if (closes_on_its_line(line_of(text, mark.line), static_cast<std::size_t>(mark.column))) {
+      return;
+    }
+    throw ScenarioError(SourceLocation{path, mark.line + 1, mark.column + 1}, "",
+                        "YAML syntax error: this quoted text is not closed on its line and runs "
+                        "on over the lines after it, taking in their keys; add the closing quote");
+  }
+  if (node.IsSequence() || node.IsMap()) {
+    for (const auto& entry : node) {
+      if (node.IsMap()) {
+        check_quotes_closed(entry.first, text, path);
+        check_quotes_closed(entry.second, text, path);
+      } else {
+        check_quotes_closed(entry, text, path);
+      }
+    }
+  }
+}
+
 YAML::Node load_yaml(const std::string& path) {
   std::error_code error;
   const SourceLocation nowhere{path, 0, 0};
@@ -43,15 +105,31 @@ YAML::Node load_yaml(const std::string& path) {
                             ? "cannot be read: permission denied"
                             : "cannot be read: no such file (check the path)");
   }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream contents;
+  contents << in.rdbuf();
+  if (!in.good() && !in.eof()) throw ScenarioError(nowhere, "", "cannot be read");
+  const std::string text = contents.str();
+  std::vector<YAML::Node> documents;
   try {
-    return YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw ScenarioError(nowhere, "", "cannot be read");
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     const SourceLocation at =
         e.mark.is_null() ? nowhere : SourceLocation{path, e.mark.line + 1, e.mark.column + 1};
     throw ScenarioError(at, "", "YAML syntax error: " + e.msg);
   }
+  if (documents.empty()) return YAML::Node();
+  // A second document (after `---`) would be ignored: say so rather than run half a file.
+  if (documents.size() > 1) {
+    const YAML::Mark mark = documents[1].Mark();
+    throw ScenarioError(
+        mark.is_null() ? nowhere : SourceLocation{path, mark.line + 1, mark.column + 1}, "",
+        fmt::format("the file holds {} YAML documents (separated by ---); a scenario is one "
+                    "document: put each scenario in a file of its own",
+                    documents.size()));
+  }
+  check_quotes_closed(documents[0], text, path);
+  return documents[0];
 }
 
 void check_version(const Reader& reader, const MapReader& root) {

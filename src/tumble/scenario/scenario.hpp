@@ -171,6 +171,7 @@ struct SimulateSpec {
 struct OutputSpec {
   std::string trajectory;  // relative path; default "<scenario file stem>.csv"
   std::string animation;   // relative path of the animation page; empty: none (unless --animate)
+  SourceLocation trajectory_where;  // where output.trajectory is given (line 0: the default)
 };
 
 struct Scenario {

@@ -151,9 +151,18 @@ OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
   map.allow_only({"trajectory", "animation"}, "output");
   if (const auto f = map.find("trajectory")) {
     output.trajectory = read_relative_path(reader, *f, "run.csv");
+    output.trajectory_where = reader.location(f->value_mark());
   }
   if (const auto f = map.find("animation")) {
     output.animation = read_relative_path(reader, *f, "run.html");
+    // One file each: the page would replace the trajectory, and the run would lose it.
+    if (std::filesystem::path(output.animation).lexically_normal() ==
+        std::filesystem::path(output.trajectory).lexically_normal()) {
+      reader.fail_at_value(*f, "'" + output.animation +
+                                   "' is output.trajectory too: the page would overwrite the "
+                                   "trajectory; give each its own file (e.g. run.csv and "
+                                   "run.html)");
+    }
   }
   return output;
 }

@@ -163,22 +163,21 @@ MapReader::MapReader(const Reader& reader, Field self, std::string_view form)
     }
     const std::string path = self_.path.empty() ? key.Scalar() : self_.path + "." + key.Scalar();
     Field field{value, path, key.Mark()};
-    for (const Field& earlier : fields_) {
-      if (earlier.key() == key.Scalar()) {
-        reader.fail_at_key(field, fmt::format("duplicate key '{}' (first given on line {}); "
-                                              "give each key once",
-                                              key.Scalar(), earlier.key_mark.line + 1));
-      }
+    const auto [earlier, fresh] = index_.emplace(key.Scalar(), fields_.size());
+    if (!fresh) {
+      reader.fail_at_key(field,
+                         fmt::format("duplicate key '{}' (first given on line {}); "
+                                     "give each key once",
+                                     key.Scalar(), fields_[earlier->second].key_mark.line + 1));
     }
     fields_.push_back(std::move(field));
   }
 }
 
 std::optional<Field> MapReader::find(std::string_view key) const {
-  for (const Field& field : fields_) {
-    if (field.key() == key) return field;
-  }
-  return std::nullopt;
+  const auto at = index_.find(std::string(key));
+  if (at == index_.end()) return std::nullopt;
+  return fields_[at->second];
 }
 
 Field MapReader::require(std::string_view key, std::string_view purpose) const {

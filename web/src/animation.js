@@ -309,11 +309,17 @@ let video = false;
 const videoTime = document.getElementById('video-time');
 
 // The last row with time <= t.
+// The work of the last frame, for the browser test (which counts it rather than timing it): the
+// rows' times the search read, and the rows whose states it drew from.
+const frameWork = { timesRead: 0, rowsDrawn: 0 };
+
 function rowAt(t) {
   let a = 0, b = rows - 1;
+  frameWork.timesRead = 1;
   if (t >= time[b]) return b;
   while (b - a > 1) {
     const m = (a + b) >> 1;
+    ++frameWork.timesRead;
     if (time[m] <= t) a = m; else b = m;
   }
   return a;
@@ -325,6 +331,7 @@ const followOffset = new THREE.Vector3();
 function show(t) {
   const i = rowAt(t);
   const j = Math.min(i + 1, rows - 1);
+  frameWork.rowsDrawn = j > i ? 2 : 1;
   const s = j > i ? Math.min(1, Math.max(0, (t - time[i]) / (time[j] - time[i]))) : 0;
   const followed = Number(follow.value);
   bodies.forEach((body, b) => {
@@ -427,6 +434,10 @@ window.tumble = {
   get playing() { return playing; },
   get video() { return video; },
   plotPoints: () => plots.map(({ plot }) => plot.data[0].length),
+  // The last frame's work: rows' times searched, rows drawn from, and the renderer's draw calls
+  // and triangles (three.js resets these each render).
+  frameWork: () => ({ ...frameWork, drawCalls: renderer.info.render.calls,
+    triangles: renderer.info.render.triangles }),
   seek(t) { setPlaying(false); simTime = t; slider.value = String(rowAt(t)); show(t); renderer.render(scene, camera); },
   play() { if (!video) setPlaying(true); },
   pause() { setPlaying(false); },

@@ -13,6 +13,7 @@
 #include <string>
 #include <utility>
 
+#include "test_files.hpp"
 #include "tumble/output/animation_html.hpp"
 #include "tumble/scenario/scenario.hpp"
 
@@ -20,13 +21,7 @@ namespace tumble {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_file;
 
 fs::path fresh_directory(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("tumble_animation_test_" + name);

@@ -8,25 +8,17 @@
 #include <sstream>
 #include <string>
 
+#include "test_files.hpp"
 #include "tumble/output/atomic_file.hpp"
 
 namespace tumble {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_file;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "tumble_atomic_file_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return test::fresh_test_dir("AtomicFile", name);
 }
 
 TEST(AtomicFile, ASymlinkPlantedAtTheTemporaryNameIsNotWrittenThrough) {

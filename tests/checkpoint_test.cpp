@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "test_files.hpp"
 #include "tumble/output/trajectory_csv.hpp"
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/simulation/simulation.hpp"
@@ -19,12 +20,7 @@
 namespace tumble {
 namespace {
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_file;
 
 class Csv {
  public:
@@ -68,9 +64,9 @@ TEST_P(Checkpoint, ResumedRowsAreTheUninterruptedRunsBytes) {
   const Scenario scenario =
       load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/" + c.example + ".yaml", {});
   const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
+  // ctest runs the cases in parallel: one directory each.
   const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "tumble_checkpoint_test" / c.example;
-  std::filesystem::create_directories(dir);
+      test::fresh_test_dir("Checkpoint", std::string(c.example) + "_" + std::to_string(c.t1));
 
   PreparedSimulation whole = prepare_run(*model);
   Csv whole_csv(scenario, whole, dir / "whole.csv");

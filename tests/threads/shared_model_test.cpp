@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "../test_files.hpp"
 #include "tumble/output/trajectory_csv.hpp"
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/simulation/simulation.hpp"
@@ -18,20 +19,7 @@
 namespace tumble {
 namespace {
 
-std::filesystem::path scratch_dir(const std::string& name) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "tumble_shared_model_test" / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_file;
 
 // Runs the shared model from its initial state with every body's velocity and angular velocity
 // scaled by `speed_scale` (a different problem for each scale), writing the trajectory CSV.
@@ -58,7 +46,7 @@ TEST_P(SharedModel, TwoThreadsGiveTheBytesOfTwoRunsInTurn) {
   const Scenario scenario =
       load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/" + example + ".yaml", {});
   const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
-  const std::filesystem::path dir = scratch_dir(example);
+  const std::filesystem::path dir = test::fresh_test_dir("SharedModel", example);
   const double scales[2] = {1.0, 0.9};
 
   for (int i = 0; i < 2; ++i) {

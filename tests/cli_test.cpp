@@ -99,6 +99,24 @@ TEST(Cli, BadCommandLinesExitWithStatusTwo) {
       << empty_out.out;
 }
 
+// A row per adaptive step cannot be counted beforehand: the run stops at max_rows (exit 4), its
+// CSV holding the rows so far.
+TEST(Cli, ARunPastItsRowBudgetStopsWithTheRowsSoFar) {
+  const fs::path dir = fresh_dir("rows");
+  std::ofstream(dir / "spin.yaml")
+      << "tumble: 1\nbodies:\n  top: {shape: box, size: [0.1, 0.2, 0.3], mass: 1, "
+         "angular_velocity: [0, 1, 100]}\nsimulate: {duration: 1000, max_rows: 1000}\n";
+  const CommandResult r =
+      run_tumble("run " + (dir / "spin.yaml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.status, 4) << r.out;
+  EXPECT_NE(r.out.find("more than simulate.max_rows = 1000 output rows"), std::string::npos)
+      << r.out;
+  std::ifstream csv(dir / "out" / "spin.csv");
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, 1 + 1000);  // the header and the budget's rows
+}
+
 // Two outputs at one path would leave only the last written: refused before the run, exit 3.
 TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
   const fs::path dir = fresh_dir("collide");

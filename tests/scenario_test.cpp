@@ -705,6 +705,30 @@ TEST(ScenarioError, ManyKeysAreReadInLinearTime) {
   expect_error(many, {6, 3, "output.k0", "unknown key 'k0'"});
 }
 
+TEST(ScenarioError, OutputBeyondTheRowBudgetIsRefusedBeforeTheRun) {
+  // duration / output_every rows (and t0) past simulate.max_rows: the estimate and the fix.
+  expect_error(kHead + kSphere + "simulate: {duration: 1, output_every: 1e-300}\n",
+               {4, 39, "simulate.output_every",
+                "duration / output_every is about 1e+300 rows, more than simulate.max_rows = "
+                "1000000: write less often (output_every: 1e-06 gives 1000000 rows)"});
+  expect_error(kHead + kSphere + "simulate: {duration: 1e9, output_every: 0.01}\n",
+               {4, 41, "simulate.output_every", "about 1e+11 rows"});
+  // Raised on purpose, it is the budget.
+  const fs::path path =
+      write_file("raised.yaml",
+                 kHead + kSphere + "simulate: {duration: 1, output_every: 1e-6, max_rows: 2e6}\n");
+  EXPECT_EQ(load_scenario(path.string(), {}).simulate.max_rows, 2000000);
+  // A fixed step's steps are known: past max_steps, or a row each past max_rows.
+  expect_error(kHead + kSphere + "simulate: {duration: 1e9, integrator: rk4, step: 0.01}\n",
+               {4, 50, "simulate.step",
+                "duration / step is 1e+11 steps, more than "
+                "simulate.max_steps = 10000000"});
+  expect_error(kHead + kSphere + "simulate: {duration: 1e4, integrator: rk4, step: 0.001}\n",
+               {4, 50, "simulate.step",
+                "one row per step is 1e+07 rows, more than "
+                "simulate.max_rows = 1000000: give output_every"});
+}
+
 TEST(ScenarioError, RtolAndAtolHaveTheIntegratorsRanges) {
   expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1.5\n",
                {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1) (e.g. 1e-8), got 1.5"});

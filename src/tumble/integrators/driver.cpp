@@ -206,7 +206,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
     if (checkpoint_due && integrator.t() >= options.checkpoint_after) {
       checkpoint_due = false;
       position.next_row = clock.next_row();
-      position.steps = steps;
+      position.steps = steps;  // (position.rows is kept up to date by the row counter)
       position.events = report.events;
       on_checkpoint({integrator.clone_onto(system), position});
       if (options.stop_at_checkpoint) break;
@@ -218,12 +218,23 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
 IntegrationReport run_driver(Integrator& integrator, OdeSystem& system, DriverPosition& position,
                              double t_end, const DriverOptions& options, const Observer& observe,
                              const CheckpointObserver& on_checkpoint,
-                             const std::function<void()>& start) {
+                             const std::function<void(const Observer&)>& start) {
   IntegrationReport report;
   report.events = position.events;
+  // Rows are counted against max_rows: a run whose rows would fill the disk (one per adaptive
+  // step, which the reader cannot count beforehand) stops with the rows so far, as a failure.
+  const Observer counted = [&](double t, const VecX& y) {
+    if (++position.rows > options.max_rows) {
+      throw std::runtime_error(fmt::format(
+          "it would write more than simulate.max_rows = {} output rows; write less often "
+          "(simulate.output_every), or raise max_rows on purpose",
+          options.max_rows));
+    }
+    observe(t, y);
+  };
   try {
-    start();
-    drive(integrator, system, position, t_end, options, observe, on_checkpoint, report);
+    start(counted);
+    drive(integrator, system, position, t_end, options, counted, on_checkpoint, report);
   } catch (const std::runtime_error& e) {
     // The system found it cannot go on (e.g. contact constraints that contradict each other):
     // the run fails there, with the rows so far, like a step size underflow.
@@ -243,12 +254,14 @@ IntegrationReport integrate(Integrator& integrator, OdeSystem& system, double t0
   DriverPosition position;
   position.t0 = t0;
   position.g_before.resize(static_cast<Eigen::Index>(system.events().size()));
-  return run_driver(integrator, system, position, t_end, options, observe, on_checkpoint, [&] {
-    system.begin(t0, y0);
-    integrator.start(system, t0, y0, t_end);
-    observe(t0, integrator.y());
-    if (position.g_before.size() > 0) system.event_functions(t0, integrator.y(), position.g_before);
-  });
+  return run_driver(integrator, system, position, t_end, options, observe, on_checkpoint,
+                    [&](const Observer& first_row) {
+                      system.begin(t0, y0);
+                      integrator.start(system, t0, y0, t_end);
+                      first_row(t0, integrator.y());
+                      if (position.g_before.size() > 0)
+                        system.event_functions(t0, integrator.y(), position.g_before);
+                    });
 }
 
 IntegrationReport resume_integration(Integrator& integrator, OdeSystem& system,
@@ -256,7 +269,8 @@ IntegrationReport resume_integration(Integrator& integrator, OdeSystem& system,
                                      const DriverOptions& options, const Observer& observe,
                                      const CheckpointObserver& on_checkpoint) {
   DriverPosition resumed = position;
-  return run_driver(integrator, system, resumed, t_end, options, observe, on_checkpoint, [] {});
+  return run_driver(integrator, system, resumed, t_end, options, observe, on_checkpoint,
+                    [](const Observer&) {});
 }
 
 }  // namespace tumble

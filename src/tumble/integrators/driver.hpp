@@ -21,6 +21,7 @@ namespace tumble {
 struct DriverOptions {
   double output_every = 0.0;    // s; 0: one row per accepted step
   long max_steps = 10'000'000;  // accepted steps before the run is declared failed
+  long max_rows = 1'000'000;    // output rows before the run is stopped (exit 4): disk, not time
   // A checkpoint at the end of the first accepted step that reaches this time (s), once that
   // step's rows, events and breakpoint are done; with stop_at_checkpoint the run ends there.
   double checkpoint_after = std::numeric_limits<double>::infinity();
@@ -52,6 +53,7 @@ struct DriverPosition {
   double t0 = 0.0;                  // the run's start: row k is at t0 + k * output_every
   long next_row = 1;                // k of the next row
   long steps = 0;                   // accepted steps so far
+  long rows = 0;                    // output rows so far
   VecX g_before;                    // the event functions at the last step's end
   std::vector<EventRecord> events;  // the located events so far
 };

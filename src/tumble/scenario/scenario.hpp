@@ -165,6 +165,9 @@ struct SimulateSpec {
   double initial_step = 0.0;    // s: 0 = chosen automatically
   double output_every = 0.0;    // s: 0 = one row per accepted step
   long max_steps = 10'000'000;  // guard against a run that would never end
+  // Output rows a run may write (a guard against filling the disk: 1e6 rows of one body are
+  // about 0.5 GB of CSV); raise it on purpose.
+  long max_rows = 1'000'000;
   SourceLocation where;
 };
 

@@ -52,7 +52,7 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
   SimulateSpec sim;
   const MapReader map(reader, field, "the run's settings {duration: s, integrator: ..., ...}");
   map.allow_only({"duration", "integrator", "formulation", "rtol", "atol", "step", "max_step",
-                  "initial_step", "output_every", "max_steps"},
+                  "initial_step", "output_every", "max_steps", "max_rows"},
                  "simulate");
   sim.where = reader.location(field.key_mark);
   sim.duration =
@@ -92,13 +92,16 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
   if (const auto f = map.find("output_every")) {
     sim.output_every = checked(reader, *f, non_negative, ">= 0 (s; 0 = every accepted step)");
   }
-  if (const auto f = map.find("max_steps")) {
-    const double n = reader.number(*f);
+  const auto whole = [&](const Field& f) {
+    const double n = reader.number(f);
     if (!(n >= 1.0) || n != std::floor(n) || n > 1e15) {
-      reader.fail_at_value(*f, "max_steps must be a whole number > 0, got " + format_number(n));
+      reader.fail_at_value(
+          f, fmt::format("{} must be a whole number > 0, got {}", f.key(), format_number(n)));
     }
-    sim.max_steps = static_cast<long>(n);
-  }
+    return static_cast<long>(n);
+  };
+  if (const auto f = map.find("max_steps")) sim.max_steps = whole(*f);
+  if (const auto f = map.find("max_rows")) sim.max_rows = whole(*f);
 
   const bool fixed_step = sim.integrator == "rk4" || sim.integrator == "rkmk4";
   if (fixed_step && !step) {
@@ -106,6 +109,38 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
                 sim.integrator +
                     " takes a fixed step: give simulate.step (s, > 0), e.g. "
                     "step: 0.001, or choose dopri5 to adapt the step");
+  }
+  // Bounded work and output, refused before the run rather than found out by a full disk: a
+  // fixed step's count is known, and so is the number of rows at a fixed output interval (the
+  // driver also stops a run whose rows, one per adaptive step, pass max_rows).
+  if (fixed_step) {
+    const double steps = std::ceil(sim.duration / sim.step);
+    if (steps > static_cast<double>(sim.max_steps)) {
+      reader.fail_at_value(*step, fmt::format("duration / step is {:.3g} steps, more than "
+                                              "simulate.max_steps = {}: take a longer step, or "
+                                              "raise max_steps on purpose",
+                                              steps, sim.max_steps));
+    }
+  }
+  if (sim.output_every > 0.0) {
+    const double rows = std::floor(sim.duration / sim.output_every) + 2.0;
+    if (rows > static_cast<double>(sim.max_rows)) {
+      reader.fail_at_value(
+          *map.find("output_every"),
+          fmt::format("duration / output_every is about {:.3g} rows, more than "
+                      "simulate.max_rows = {}: write less often (output_every: "
+                      "{:.3g} gives {} rows), or raise max_rows on purpose",
+                      rows, sim.max_rows, sim.duration / static_cast<double>(sim.max_rows - 2),
+                      sim.max_rows));
+    }
+  } else if (fixed_step) {
+    const double rows = std::ceil(sim.duration / sim.step) + 1.0;
+    if (rows > static_cast<double>(sim.max_rows)) {
+      reader.fail_at_value(*step, fmt::format("one row per step is {:.3g} rows, more than "
+                                              "simulate.max_rows = {}: give output_every, or raise "
+                                              "max_rows on purpose",
+                                              rows, sim.max_rows));
+    }
   }
   if (sim.integrator == "exact" && has_forces) {
     reader.fail_at_value(*integrator,

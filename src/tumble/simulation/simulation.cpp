@@ -107,6 +107,7 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
   }
   m->options.output_every = sim.output_every;
   m->options.max_steps = sim.max_steps;
+  m->options.max_rows = sim.max_rows;
   m->t0 = 0.0;
   m->t_end = sim.duration;
   m->y0.resize(m->formulation->dimension());

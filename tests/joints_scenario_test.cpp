@@ -128,5 +128,29 @@ TEST(JointScenario, TheTrajectoryHasReactionAndWorkColumns) {
       << header;
 }
 
+// Values each finite whose products overflow would fail at the first step with NaN rows: they
+// are refused when the run is prepared, at the body.
+TEST(PreparedRun, InitialValuesThatOverflowAreRefusedAtTheBody) {
+  test::expect_error(R"(tumble: 1
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: 1e-300}
+simulate: {duration: 1}
+)",
+                     3, 3, "bodies.ball", "an inertia that double precision cannot invert");
+  test::expect_error(R"(tumble: 1
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: 1, angular_velocity: [0, 0, 1e308]}
+simulate: {duration: 1}
+)",
+                     3, 65, "bodies.ball.angular_velocity",
+                     "its kinetic energy or momentum overflows double precision");
+  test::expect_error(R"(tumble: 1
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: 1, velocity: [1e160, 0, 0]}
+simulate: {duration: 1}
+)",
+                     3, 57, "bodies.ball.velocity", "overflows double precision");
+}
+
 }  // namespace
 }  // namespace tumble

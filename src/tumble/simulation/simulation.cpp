@@ -67,6 +67,41 @@ void check_initial_velocities(const Scenario& scenario, const Formulation& formu
   }
 }
 
+// Values each finite but whose products overflow (a mass of 1e-300 kg or 1e200 kg, whose inertia
+// has no inverse in double precision; an angular velocity of 1e308 rad/s, whose kinetic energy is
+// infinite) would fail at the first step with NaN rows: refused here, at the body.
+void check_initial_state_finite(const Scenario& scenario, const Model& model,
+                                std::span<const BodyState> given) {
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const BodySpec& body = scenario.bodies[i];
+    const RigidBody& rigid = model.bodies[i];
+    const auto fail = [&](const SourceLocation& where, const std::string& key,
+                          const std::string& why) {
+      throw ScenarioError(where.line > 0 ? where : body.where, "bodies." + body.name + key, why);
+    };
+    if (!rigid.I_G_B_inv.allFinite() || !(rigid.I_G_B_inv.norm() < 1e300)) {
+      fail(body.where, "",
+           fmt::format("its mass ({:.3g} kg) and size give an inertia that double precision "
+                       "cannot invert (its determinant, the cube of its size, overflows or "
+                       "underflows): keep the inertia between about 1e-100 and 1e100 kg m^2, in "
+                       "other units if need be",
+                       rigid.mass));
+    }
+    const double kinetic_energy = calc_kinetic_energy(rigid, given[i]);
+    const double momentum = calc_angular_momentum_about_com_W(rigid, given[i]).norm() +
+                            calc_linear_momentum(rigid, given[i]).norm();
+    if (!std::isfinite(kinetic_energy) || !std::isfinite(momentum) || !(kinetic_energy < 1e300)) {
+      const bool spin = given[i].omega_W.norm() * given[i].omega_W.norm() * rigid.I_G_B.norm() >=
+                        given[i].v_G.squaredNorm() * rigid.mass;
+      fail(spin ? body.angular_velocity_where : body.velocity_where,
+           spin ? ".angular_velocity" : ".velocity",
+           "its kinetic energy or momentum overflows double precision: give a speed that the "
+           "equations can carry (the products of mass, inertia and speeds must stay below about "
+           "1e300)");
+    }
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -112,6 +147,7 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
   m->t_end = sim.duration;
   m->y0.resize(m->formulation->dimension());
   const std::vector<BodyState> given = initial_states(scenario);
+  check_initial_state_finite(scenario, m->formulation->model(), given);
   m->formulation->pack(given, m->y0);
   check_initial_velocities(scenario, *m->formulation, given, m->y0);
   if (const auto problem = m->formulation->start_problem(m->y0)) {

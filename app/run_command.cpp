@@ -128,6 +128,17 @@ int run_command(const RunArguments& args) {
     return kBadCommandLine;
   }
 
+  // The video's frame count is known from the duration: too many is refused now, not after the
+  // whole run.
+  if (video) {
+    try {
+      video_frame_count(0.0, scenario.simulate.duration, *video);
+    } catch (const std::invalid_argument& e) {
+      fmt::print(stderr, "tumble run: {}\n", e.what());
+      return kBadCommandLine;
+    }
+  }
+
   std::optional<PreparedSimulation> simulation;
   try {
     simulation = prepare_simulation(scenario);

@@ -117,6 +117,20 @@ TEST(Cli, ARunPastItsRowBudgetStopsWithTheRowsSoFar) {
   EXPECT_EQ(lines, 1 + 1000);  // the header and the budget's rows
 }
 
+// A video of more than 100,000 frames is refused before the run (exit 2), not after it.
+TEST(Cli, AVideoOfTooManyFramesIsRefusedBeforeTheRun) {
+  const fs::path dir = fresh_dir("frames");
+  std::ofstream(dir / "long.yaml")
+      << "tumble: 1\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 1}\n"
+         "simulate: {duration: 1e6, output_every: 10}\n";
+  const CommandResult r =
+      run_tumble("run " + (dir / "long.yaml").string() + " --out " + (dir / "out").string() +
+                 " --video " + (dir / "long.mp4").string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("would take more than 100000 frames"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "long.csv"));  // no run
+}
+
 // Two outputs at one path would leave only the last written: refused before the run, exit 3.
 TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
   const fs::path dir = fresh_dir("collide");

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: formatting, the Release suite, the same suite under
 # AddressSanitizer + UndefinedBehaviorSanitizer, the runs that share a model on threads under
-# ThreadSanitizer, the main example end to end, and the animation
+# ThreadSanitizer, a minute of fuzzing the scenario reader, the main example end to end, and the animation
 # page and its videos (`tumble run --video`, checked with ffprobe) in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,6 +26,9 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 echo "== ThreadSanitizer: runs of one shared model on two threads"
 bash scripts/build.sh tsan tumble_thread_tests
 TSAN_OPTIONS=halt_on_error=1 build/tsan/tests/tumble_thread_tests
+
+echo "== Fuzzing the scenario reader and model builder for a minute (libFuzzer)"
+bash scripts/fuzz.sh 60
 
 echo "== The main example"
 out=$(mktemp -d)

@@ -131,6 +131,29 @@ TEST(Cli, AVideoOfTooManyFramesIsRefusedBeforeTheRun) {
   EXPECT_FALSE(fs::exists(dir / "out" / "long.csv"));  // no run
 }
 
+// A pendulum released level with its pivot, as near as round-off (E0 ~ 1e-16 J; a chain of 200
+// links lying flat printed a relative drift of 2e+21): the drift is shown against the
+// largest KE, not E0 (which printed 2e+21 for it), and against the largest |L|.
+TEST(Cli, TheSummarysDriftsAreAgainstAScaleThatIsNotRoundOff) {
+  const fs::path dir = fresh_dir("drift");
+  std::ofstream(dir / "level.yaml")
+      << "tumble: 1\nbodies:\n  bob: {shape: sphere, radius: 0.05, mass: 1, position: [1, 0, "
+         "1e-17]}\n"
+         "joints:\n  pivot: {type: hinge, body: bob, at: [0, 0, 0], axis: [0, 1, 0]}\n"
+         "simulate: {duration: 1, rtol: 1e-10}\n";
+  const CommandResult r =
+      run_tumble("run " + (dir / "level.yaml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("of its scale"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(the larger of |E0| and the largest KE)"), std::string::npos) << r.out;
+  // The energy's drift is the integration's (rtol 1e-10), not |dE| / 1e-16.
+  const std::size_t line = r.out.find("energy E");
+  ASSERT_NE(line, std::string::npos) << r.out;
+  const std::size_t relative = r.out.find("J, ", line);
+  ASSERT_NE(relative, std::string::npos) << r.out;
+  EXPECT_LT(std::stod(r.out.substr(relative + 3)), 1e-8) << r.out;
+}
+
 // Two outputs at one path would leave only the last written: refused before the run, exit 3.
 TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
   const fs::path dir = fresh_dir("collide");

@@ -679,6 +679,19 @@ TEST(ScenarioError, ExactIsForTorqueFreeBodies) {
                 "exact is for torque-free free bodies; remove forces and joints or choose dopri5"});
 }
 
+TEST(ScenarioError, TextThatIsNotUtf8IsRefused) {
+  // A Latin-1 e-acute (0xE9) in the scenario's name would reach the page's title.
+  expect_error(kHead + "name: caf\xE9\n" + kSphere + kSimulate,
+               {2, 7, "name", "the text is not valid UTF-8 (byte 0xE9 at its position 4)"});
+  expect_error(kHead + "bodies:\n  ball\xFF: {shape: sphere, radius: 0.1, mass: 2}\n" + kSimulate,
+               {3, 3, "bodies", "not valid UTF-8"});
+  // UTF-8 itself is fine.
+  const fs::path path =
+      write_file("utf8.yaml",
+                 kHead + "name: caf\xC3\xA9 \xE2\x80\x94 \xF0\x9F\x8E\xB2\n" + kSphere + kSimulate);
+  EXPECT_EQ(load_scenario(path.string(), {}).name, "caf\xC3\xA9 \xE2\x80\x94 \xF0\x9F\x8E\xB2");
+}
+
 TEST(ScenarioError, ASecondYamlDocumentIsRefused) {
   expect_error(kHead + kSphere + kSimulate + "---\ntumble: 1\n",
                {6, 1, "", "the file holds 2 YAML documents (separated by ---)"});

@@ -93,7 +93,8 @@ void check_quotes_closed(const YAML::Node& node, std::string_view text, const st
   }
 }
 
-YAML::Node load_yaml(const std::string& path) {
+// The file's text; a file that cannot be read is a ScenarioError at line 0.
+std::string read_scenario_file(const std::string& path) {
   std::error_code error;
   const SourceLocation nowhere{path, 0, 0};
   if (std::filesystem::is_directory(path, error)) {
@@ -109,7 +110,12 @@ YAML::Node load_yaml(const std::string& path) {
   std::ostringstream contents;
   contents << in.rdbuf();
   if (!in.good() && !in.eof()) throw ScenarioError(nowhere, "", "cannot be read");
-  const std::string text = contents.str();
+  return contents.str();
+}
+
+// The one YAML document of `text` (read from `path`, for locations).
+YAML::Node parse_yaml(const std::string& text, const std::string& path) {
+  const SourceLocation nowhere{path, 0, 0};
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
@@ -188,7 +194,12 @@ std::map<std::string, double> read_parameters(const Reader& reader,
 }  // namespace
 
 Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides) {
-  const YAML::Node document = load_yaml(path);
+  return load_scenario_text(read_scenario_file(path), path, overrides);
+}
+
+Scenario load_scenario_text(const std::string& text, const std::string& path,
+                            const std::vector<ParameterOverride>& overrides) {
+  const YAML::Node document = parse_yaml(text, path);
   ExpressionEvaluator expressions;
   const Reader reader(path, expressions);
   if (!document || document.IsNull()) {

@@ -202,5 +202,9 @@ struct ParameterOverride {
 // Reads, evaluates and checks a scenario. Throws ScenarioError (with file, line, column and key)
 // for anything the contract rejects, including a missing or unreadable file (line 0).
 Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides);
+// The same from scenario text in memory; `path` names it in messages and places files it refers
+// to (meshes) relative to its directory.
+Scenario load_scenario_text(const std::string& text, const std::string& path,
+                            const std::vector<ParameterOverride>& overrides);
 
 }  // namespace tumble

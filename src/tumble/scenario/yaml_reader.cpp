@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 
 namespace tumble::scenario_reading {
 namespace {
@@ -37,6 +38,38 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     std::swap(previous, current);
   }
   return previous[b.size()];
+}
+
+// The offset of the first byte that breaks UTF-8 (a stray byte, a truncated or overlong sequence,
+// a surrogate, past U+10FFFF), or npos if the text is valid.
+std::size_t first_invalid_utf8(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char lead = byte(i);
+    std::size_t length = 0;
+    std::uint32_t code = 0, least = 0;
+    if (lead < 0x80) {
+      ++i;
+      continue;
+    } else if ((lead & 0xE0) == 0xC0) {
+      length = 2, code = lead & 0x1F, least = 0x80;
+    } else if ((lead & 0xF0) == 0xE0) {
+      length = 3, code = lead & 0x0F, least = 0x800;
+    } else if ((lead & 0xF8) == 0xF0) {
+      length = 4, code = lead & 0x07, least = 0x10000;
+    } else {
+      return i;
+    }
+    if (i + length > text.size()) return i;
+    for (std::size_t k = 1; k < length; ++k) {
+      if ((byte(i + k) & 0xC0) != 0x80) return i;
+      code = (code << 6) | (byte(i + k) & 0x3F);
+    }
+    if (code < least || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return i;
+    i += length;
+  }
+  return std::string_view::npos;
 }
 
 Field item_field(const Field& list, const YAML::Node& item, std::size_t index) {
@@ -135,7 +168,14 @@ std::string Reader::text(const Field& field) const {
   if (!field.node || !field.node.IsScalar()) {
     fail_at_value(field, "expected a word or text, got " + describe(field.node));
   }
-  return field.node.Scalar();
+  // Text reaches the CSV's header, the summary and the animation page, which must be UTF-8.
+  const std::string& value = field.node.Scalar();
+  if (const std::size_t at = first_invalid_utf8(value); at != std::string_view::npos) {
+    fail_at_value(field, fmt::format("the text is not valid UTF-8 (byte 0x{:02X} at its position "
+                                     "{}); save the file as UTF-8",
+                                     static_cast<unsigned char>(value[at]), at + 1));
+  }
+  return value;
 }
 
 std::vector<Field> Reader::items(const Field& field, std::string_view form) const {
@@ -160,6 +200,13 @@ MapReader::MapReader(const Reader& reader, Field self, std::string_view form)
     const YAML::Node value = entry.second;
     if (!key.IsScalar()) {
       reader.fail(key.Mark(), self_.path, "a key must be a plain word, got " + describe(key));
+    }
+    // Keys name bodies, joints and parameters, and so head CSV columns and reach the page.
+    if (const std::size_t at = first_invalid_utf8(key.Scalar()); at != std::string_view::npos) {
+      reader.fail(key.Mark(), self_.path,
+                  fmt::format("a key is not valid UTF-8 (byte 0x{:02X} at its position {}); save "
+                              "the file as UTF-8",
+                              static_cast<unsigned char>(key.Scalar()[at]), at + 1));
     }
     const std::string path = self_.path.empty() ? key.Scalar() : self_.path + "." + key.Scalar();
     Field field{value, path, key.Mark()};

@@ -225,6 +225,7 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     c.initial_angular_momentum = L0;
     c.max_energy_change = std::max(c.max_energy_change, std::abs(q.total_energy - E0));
     c.max_angular_momentum_change = std::max(c.max_angular_momentum_change, std::abs(L - L0));
+    c.max_angular_momentum = std::max(c.max_angular_momentum, L);
     if (E0 != 0.0) {
       c.max_relative_energy_drift =
           std::max(c.max_relative_energy_drift, std::abs(q.total_energy - E0) / std::abs(E0));

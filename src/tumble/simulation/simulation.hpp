@@ -61,6 +61,7 @@ struct ConservationReport {
   // relative drift means nothing): max |E - E0| in J, max | |L| - |L0| | in kg m^2/s.
   double initial_energy = 0.0, max_energy_change = 0.0;
   double initial_angular_momentum = 0.0, max_angular_momentum_change = 0.0;
+  double max_angular_momentum = 0.0;  // the largest |L| over the rows, kg m^2/s
   // Work-energy theorem: KE - KE0 = W_gravity + sum of the elements' work (ideal joints do none);
   // the largest departure over the rows, in J, and the largest KE it compares with.
   double max_work_energy_residual = 0.0;

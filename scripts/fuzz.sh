@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Fuzzes the scenario reader and model builder with clang's libFuzzer (AddressSanitizer and
+# UndefinedBehaviorSanitizer on) for SECONDS (default 60), from the examples as seed corpus.
+#   scripts/fuzz.sh            a minute (scripts/test.sh runs this)
+#   scripts/fuzz.sh 36000      ten hours; the corpus grows in build/fuzz/corpus across runs
+# An input that crashes, hangs past 1 s, leaks or throws anything but a located ScenarioError is
+# written to build/fuzz/ (crash-*, timeout-*, leak-*) and the script fails; copy it into
+# tests/data/fuzz/ as a regression test (FuzzRegressions reads every file there).
+set -euo pipefail
+seconds=${1:-60}
+cd "$(dirname "$0")/.."
+CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DTUMBLE_FUZZ=ON -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF >/dev/null
+cmake --build build/fuzz -j "$(nproc)" --target tumble_scenario_fuzz
+corpus=build/fuzz/corpus
+mkdir -p "$corpus"
+cp examples/*.yaml tests/data/fuzz/*.yaml "$corpus"/ 2>/dev/null || true
+ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
+  build/fuzz/fuzz/tumble_scenario_fuzz "$corpus" -max_total_time="$seconds" -timeout=1 \
+  -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix=build/fuzz/

@@ -1,12 +1,12 @@
 #pragma once
-// The production formulation for systems: bodies held by joints (ball, hinge, fixed) in a tree
-// rooted at ground, in joint coordinates, integrated with Featherstone's articulated-body
-// algorithm (RBDA 2008, ch. 7): O(n) per evaluation for n bodies, and the joints hold by
-// construction (the state has no coordinates that could break them), so nothing drifts off the
-// constraints and no stabilisation is needed. Hinges that are locked or driven at a prescribed
-// speed are joints of known acceleration (hybrid dynamics, RBDA ch. 9.2); their torque is the
-// motor's or the brake's. Joint reactions come from the same passes: the spatial force across
-// joint i is I^A_i a_i + p^A_i.
+// The production formulation for systems: bodies held by joints (multibody/joints/: ball, hinge,
+// prismatic, fixed) in a tree rooted at ground, in joint coordinates, integrated with
+// Featherstone's articulated-body algorithm (RBDA 2008, ch. 7): O(n) per evaluation for n bodies,
+// and the joints hold by construction (the state has no coordinates that could break them), so
+// nothing drifts off the constraints and no stabilisation is needed. Hinges and sliders that are
+// locked or driven at a prescribed speed are joints of known acceleration (hybrid dynamics, RBDA
+// ch. 9.2); their torque or force is the motor's or the brake's. Joint reactions come from the same
+// passes: the spatial force across joint i is I^A_i a_i + p^A_i.
 //
 // State y = [ joint coordinates | joint speeds | work ledger ]: the work each element has done
 // since t0 is integrated with the motion (its power is one more right-hand side), so the rows can
@@ -19,6 +19,10 @@
 // friction mu N against the slip; rolling: all three), found from the same algorithm's response
 // to unit forces; project() puts positions and velocities back on the constraints after every
 // step. Touchdowns are impacts (restitution and friction on the impulse).
+//
+// Model, data, state: the ArticulatedModel (tree, layout, events) is constant and shared by every
+// run; this object is one run's, with its ArticulatedData (scratch, written by the const
+// evaluations) and its HybridState (Formulation::hybrid_state). new_run() makes another.
 #include <array>
 #include <limits>
 #include <optional>
@@ -36,7 +40,8 @@ class ArticulatedFormulation final : public Formulation {
  public:
   // One run of a shared model, with its own scratch and state.
   explicit ArticulatedFormulation(std::shared_ptr<const ArticulatedModel> model);
-  // Throws std::invalid_argument if the joints close a loop, or a body in contact is not free.
+  // Throws std::invalid_argument if the joints close a loop, or a body a joint holds touches a
+  // plane with anything but a sphere's or shell's point.
   explicit ArticulatedFormulation(Model model);
 
   std::unique_ptr<Formulation> new_run() const override {

@@ -16,7 +16,8 @@
 namespace tumble {
 
 struct ArticulatedModel {
-  // Throws std::invalid_argument if the joints close a loop, or a body in contact is not free.
+  // Throws std::invalid_argument if the joints close a loop, or a body a joint holds touches a
+  // plane with anything but a sphere's or shell's point.
   explicit ArticulatedModel(std::shared_ptr<const Model> model);
 
   std::shared_ptr<const Model> shared_model;

@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <system_error>
 
@@ -123,10 +124,16 @@ ChildOutcome run_child(std::vector<std::string> args, ChildOutput output) {
     }
   }
   if (forward.received() != 0) {
-    throw ChildProcessError(fmt::format("interrupted ({})", ::strsignal(forward.received())),
-                            false);
+    throw ChildInterrupted(fmt::format("interrupted ({})", ::strsignal(forward.received())),
+                           forward.received());
   }
   return outcome;
+}
+
+void end_by_signal(int signal_number) {
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+  std::_Exit(128 + signal_number);  // not reached: the default action of these signals ends us
 }
 
 std::string lowercase_extension(const std::filesystem::path& path) {

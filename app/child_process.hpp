@@ -19,6 +19,22 @@ class ChildProcessError : public std::runtime_error {
   bool not_found_;
 };
 
+// tumble was stopped by SIGINT, SIGTERM or SIGHUP while the program ran; the program was passed
+// the signal. Whoever catches it cleans up, then ends by that signal (end_by_signal).
+class ChildInterrupted : public ChildProcessError {
+ public:
+  ChildInterrupted(const std::string& message, int signal_number)
+      : ChildProcessError(message, false), signal_number_(signal_number) {}
+  int signal_number() const { return signal_number_; }
+
+ private:
+  int signal_number_;
+};
+
+// Ends tumble as the signal would have (default action), so that its caller sees the same status
+// as if no handler had been installed: a shell's 128 + N, `timeout`'s 124.
+[[noreturn]] void end_by_signal(int signal_number);
+
 enum class ChildOutput {
   Inherit,  // stdout and stderr shared with tumble: the program speaks to the user
   Capture,  // read into ChildOutcome::output (its last 8 KB), kept out of tumble's summary

@@ -3,6 +3,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "child_process.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
 #include "system_summary.hpp"
@@ -212,6 +213,8 @@ int run_command(const RunArguments& args) {
   if (video && recorded->rows() > 0) {
     try {
       video_line = make_video(*video, animation, scenario, *recorded, trajectory);
+    } catch (const ChildInterrupted& e) {
+      end_by_signal(e.signal_number());  // the temporary page went with the unwinding
     } catch (const std::invalid_argument& e) {
       video_status = kBadCommandLine;
       video_failure = e.what();

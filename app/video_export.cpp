@@ -144,6 +144,8 @@ void render_video(const fs::path& page, const VideoRequest& video, long frames) 
             getenv_or("TUMBLE_CHROMIUM", "/usr/bin/chromium"),
         },
         ChildOutput::Capture);
+  } catch (const ChildInterrupted&) {
+    throw;  // run_command ends by the signal once the temporary page is gone
   } catch (const ChildProcessError& e) {
     throw VideoError(e.not_found() ? fmt::format("{} not found: install Node.js (scripts/setup.sh) "
                                                  "or set TUMBLE_NODE to the node executable",

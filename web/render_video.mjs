@@ -218,8 +218,15 @@ async function main() {
   // Beside OUTPUT, so that the rename stays on one file system and is atomic.
   const partial = `${args.output}.partial-${process.pid}`;
   const held = {};
-  const abandon = (status) => {
+  // Stopped: the browser is closed before exiting (at most 5 s), since Chromium killed with us
+  // would leave its temporary profile directory behind; then the partial video goes.
+  let abandoning = false;
+  const abandon = async (status) => {
+    if (abandoning) return;
+    abandoning = true;
     held.encoder?.child.kill('SIGKILL');
+    const pause = (ms) => new Promise((done) => setTimeout(done, ms).unref());
+    await Promise.race([held.browser?.close().catch(() => {}), pause(5000)]);
     rmSync(partial, { force: true });
     process.exit(status);
   };

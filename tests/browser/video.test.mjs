@@ -143,3 +143,23 @@ test('bad requests exit 2 before running; a failed render exits 5; nothing is le
   assert.deepEqual(readdirSync(r.scratch), []);
 });
 });
+
+test('SIGTERM while the video renders ends tumble by the signal and leaves nothing behind',
+  async () => {
+  const out = join(work, 'stopped');
+  const scratch = join(out, 'tmp');
+  mkdirSync(scratch, { recursive: true });
+  const child = execFile(tumble, ['run', scenario, '--out', out, '--video', join(out, 'x.mp4'),
+    '--video-size', '320x240'], { env: { ...process.env, TMPDIR: scratch } });
+  const ended = new Promise((done) => child.on('exit', (code, signal) => done({ code, signal })));
+  // Stopped once Chromium runs: its profile directory is in TMPDIR.
+  for (let k = 0; k < 600 && !readdirSync(scratch).some((n) => n.startsWith('playwright')); ++k) {
+    await new Promise((done) => setTimeout(done, 50));
+  }
+  assert.ok(readdirSync(scratch).some((n) => n.startsWith('playwright')), 'Chromium never started');
+  child.kill('SIGTERM');
+  const { code, signal } = await ended;
+  assert.equal(signal, 'SIGTERM', `exit status ${code} instead of the signal`);
+  assert.deepEqual(readdirSync(scratch), [], 'Chromium\'s or tumble\'s temporary files were left');
+  assert.deepEqual(readdirSync(out).sort(), ['spinning_projectile.csv', 'tmp']);
+});

@@ -6,8 +6,11 @@
 # An input that crashes, hangs past 1 s, leaks or throws anything but a located ScenarioError is
 # written to build/fuzz/ (crash-*, timeout-*, leak-*) and the script fails; copy it into
 # tests/data/fuzz/ as a regression test (FuzzRegressions reads every file there).
+# SEED (default 1) fixes the mutations' order, so that CI's minute explores the same inputs on
+# every run of the same code; give SEED=0 for a random order on long runs.
 set -euo pipefail
 seconds=${1:-60}
+seed=${SEED:-1}
 cd "$(dirname "$0")/.."
 CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DTUMBLE_FUZZ=ON -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF >/dev/null
@@ -17,4 +20,5 @@ mkdir -p "$corpus"
 cp examples/*.yaml tests/data/fuzz/*.yaml "$corpus"/ 2>/dev/null || true
 ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
   build/fuzz/fuzz/tumble_scenario_fuzz "$corpus" -max_total_time="$seconds" -timeout=1 \
-  -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix=build/fuzz/
+  -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix=build/fuzz/ \
+  -seed="$seed"

@@ -67,35 +67,6 @@ bool closes_on_its_line(std::string_view line, std::size_t column) {
   return false;
 }
 
-// A quote left open runs on over the following lines and swallows their keys, which the parser
-// accepts as text; the scenario would then be refused for a missing key far from the mistake.
-// A quoted value that does not close on its own line and has taken in a `key: value` is such a
-// quote: refused where it opens.
-void check_quotes_closed(const YAML::Node& node, std::string_view text, const std::string& path) {
-  if (node.IsScalar()) {
-    if (node.Tag() != "!" || node.Mark().is_null()) return;
-    const std::string& value = node.Scalar();
-    if (value.find(": ") == std::string::npos && value.find(":\n") == std::string::npos) return;
-    const YAML::Mark mark = node.Mark();
-    if (closes_on_its_line(line_of(text, mark.line), static_cast<std::size_t>(mark.column))) {
-      return;
-    }
-    throw ScenarioError(SourceLocation{path, mark.line + 1, mark.column + 1}, "",
-                        "YAML syntax error: this quoted text is not closed on its line and runs "
-                        "on over the lines after it, taking in their keys; add the closing quote");
-  }
-  if (node.IsSequence() || node.IsMap()) {
-    for (const auto& entry : node) {
-      if (node.IsMap()) {
-        check_quotes_closed(entry.first, text, path);
-        check_quotes_closed(entry.second, text, path);
-      } else {
-        check_quotes_closed(entry, text, path);
-      }
-    }
-  }
-}
-
 // The file's text; a file that cannot be read is a ScenarioError at line 0.
 std::string read_scenario_file(const std::string& path) {
   std::error_code error;
@@ -116,59 +87,90 @@ std::string read_scenario_file(const std::string& path) {
   return contents.str();
 }
 
-// Notes where each document starts, and nothing else.
-class DocumentStarts : public YAML::EventHandler {
+// A quote left open runs on over the following lines and swallows their keys, which the parser
+// accepts as text; the scenario would then be refused for a missing key far from the mistake.
+// A quoted scalar of the first document that does not close on its own line and has taken in a
+// `key: value` is such a quote, refused where it opens. The check reads the parser's events, so
+// aliases are not followed (an anchor may refer to itself).
+bool swallows_keys(std::string_view text, const YAML::Mark& mark, const std::string& tag,
+                   const std::string& value) {
+  if (tag != "!" || mark.is_null()) return false;
+  if (value.find(": ") == std::string::npos && value.find(":\n") == std::string::npos) {
+    return false;
+  }
+  return !closes_on_its_line(line_of(text, mark.line), static_cast<std::size_t>(mark.column));
+}
+
+// Where each document starts, and the first quoted scalar that swallows keys.
+class DocumentEvents : public YAML::EventHandler {
  public:
+  explicit DocumentEvents(std::string_view text) : text_(text) {}
   std::optional<YAML::Mark> last_start;
+  std::optional<YAML::Mark> open_quote;
   void OnDocumentStart(const YAML::Mark& mark) override { last_start = mark; }
   void OnDocumentEnd() override {}
   void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
   void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                const std::string&) override {}
+  void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t,
+                const std::string& value) override {
+    if (!open_quote && swallows_keys(text_, mark, tag, value)) open_quote = mark;
+  }
   void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
                        YAML::EmitterStyle::value) override {}
   void OnSequenceEnd() override {}
   void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
                   YAML::EmitterStyle::value) override {}
   void OnMapEnd() override {}
+
+ private:
+  std::string_view text_;
 };
 
-// Where a second document starts, if there is one. The parser is asked for two documents and no
-// more: yaml-cpp's LoadAll can go on finding empty documents without end on some inputs (the
-// fuzzer found one: tests/data/fuzz/refused-endless-documents.yaml).
-std::optional<YAML::Mark> second_document(const std::string& text) {
+// The first document's open quote, if any, and where a second document starts, if there is one.
+// The parser is asked for two documents and no more: yaml-cpp's LoadAll can go on finding empty
+// documents without end on some inputs (the fuzzer found one:
+// tests/data/fuzz/refused-endless-documents.yaml).
+struct DocumentsSeen {
+  std::optional<YAML::Mark> open_quote, second;
+};
+DocumentsSeen scan_documents(const std::string& text) {
   std::istringstream stream(text);
   YAML::Parser parser(stream);
-  DocumentStarts starts;
-  if (!parser.HandleNextDocument(starts)) return std::nullopt;
-  starts.last_start.reset();
-  if (!parser.HandleNextDocument(starts)) return std::nullopt;
-  return starts.last_start.value_or(YAML::Mark());
+  DocumentEvents events(text);
+  DocumentsSeen seen;
+  if (!parser.HandleNextDocument(events)) return seen;
+  seen.open_quote = events.open_quote;
+  events.last_start.reset();
+  if (parser.HandleNextDocument(events)) seen.second = events.last_start.value_or(YAML::Mark());
+  return seen;
 }
 
 // The one YAML document of `text` (read from `path`, for locations).
 YAML::Node parse_yaml(const std::string& text, const std::string& path) {
   const SourceLocation nowhere{path, 0, 0};
   YAML::Node document;
-  std::optional<YAML::Mark> second;
+  DocumentsSeen seen;
   try {
     document = YAML::Load(text);
-    second = second_document(text);
+    seen = scan_documents(text);
   } catch (const YAML::Exception& e) {
     const SourceLocation at =
         e.mark.is_null() ? nowhere : SourceLocation{path, e.mark.line + 1, e.mark.column + 1};
     throw ScenarioError(at, "", "YAML syntax error: " + e.msg);
   }
   // A second document (after `---`) would be ignored: say so rather than run half a file.
-  if (second) {
+  if (const auto& second = seen.second) {
     throw ScenarioError(
         second->is_null() ? nowhere : SourceLocation{path, second->line + 1, second->column + 1},
         "",
         "the file holds 2 YAML documents (separated by ---); a scenario is one document: put "
         "each scenario in a file of its own");
   }
-  if (document && !document.IsNull()) check_quotes_closed(document, text, path);
+  if (const auto& mark = seen.open_quote) {
+    throw ScenarioError(SourceLocation{path, mark->line + 1, mark->column + 1}, "",
+                        "YAML syntax error: this quoted text is not closed on its line and runs "
+                        "on over the lines after it, taking in their keys; add the closing quote");
+  }
   return document;
 }
 

@@ -33,7 +33,6 @@ class Formulation : public OdeSystem {
       : shared_model_(std::move(model)), model_(*shared_model_) {}
 
   const Model& model() const { return model_; }
-  const std::shared_ptr<const Model>& shared_model() const { return shared_model_; }
   std::size_t body_count() const { return model_.bodies.size(); }
 
   // A formulation for another run of the same model: the constant parts are shared, not copied

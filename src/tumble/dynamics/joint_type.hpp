@@ -1,8 +1,6 @@
 #pragma once
 // The kinds of joint, one enum for the scenario, the model and the kinematic tree. Each kind's
 // geometry and kinematics live in one file of multibody/joints/ (JointKind).
-#include <string_view>
-
 namespace tumble {
 
 enum class JointType {
@@ -12,9 +10,6 @@ enum class JointType {
   Prismatic,  // one: translation along an axis (a slider)
   Fixed,      // none: a weld
 };
-
-// The scenario's name of each kind (`type:` under `joints:`; free is not written there).
-std::string_view joint_type_name(JointType type);
 
 // Whether the kind has one freedom along or about an axis, which a motor can drive and a lock
 // can hold (hinge, prismatic).

@@ -118,7 +118,7 @@ void ArticulatedFormulation::accumulate_element_loads(const VecX& y, double mode
     if (spring.hinge >= 0) {
       const auto j = static_cast<std::size_t>(spring.hinge);
       const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
-      angle = hinge_angle(y, j);
+      angle = m_.hinge_angle(y, j);
       rate = m_.joint_rate(y, j);
       axis_W = d_.work[k].R_WC * m_.tree[k].axis_C;
       if (m_.tree[k].reversed) axis_W = -axis_W;

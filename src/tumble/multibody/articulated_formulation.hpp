@@ -47,7 +47,6 @@ class ArticulatedFormulation final : public Formulation {
   std::unique_ptr<Formulation> new_run() const override {
     return std::make_unique<ArticulatedFormulation>(shared_articulated_);
   }
-  const ArticulatedModel& articulated_model() const { return m_; }
 
   std::string_view name() const override { return "body, joint coordinates"; }
   Eigen::Index dimension() const override { return m_.dimension; }
@@ -81,7 +80,6 @@ class ArticulatedFormulation final : public Formulation {
   // While a contact is apart: no step so long that a point of its surface could dip through the
   // plane and back unseen (contact/landing_bound.hpp).
   double step_limit(double t, const VecX& y) const override;
-  const std::vector<ContactEventRecord>& contact_events() const { return hybrid_.contact_events; }
   std::optional<StartProblem> start_problem(const VecX& y0) const override;
 
   std::vector<std::string> element_names() const override { return m_.element_names(); }
@@ -89,9 +87,6 @@ class ArticulatedFormulation final : public Formulation {
   void calc_row_extras(double t, const VecX& y, RowExtras& extras) const override;
 
   const std::vector<TreeJoint>& tree() const { return m_.tree; }
-  const std::vector<JumpRecord>& jumps() const { return hybrid_.jumps; }
-  // The hinge angle and rate of a model joint (its sign as the scenario states it).
-  double hinge_angle(const VecX& y, std::size_t joint) const { return m_.hinge_angle(y, joint); }
   double joint_rate(const VecX& y, std::size_t joint) const override {
     return m_.joint_rate(y, joint);
   }

@@ -4,6 +4,9 @@
 // the run's start, that say what counts as touching, as no slip or as a settling landing. It is
 // part of a run's state (HybridState): copying it with y checkpoints the contact exactly.
 #include <array>
+#include <limits>
+#include <string>
+#include <vector>
 
 #include "tumble/contact/contact_feature.hpp"
 #include "tumble/contact/round_contact.hpp"
@@ -23,7 +26,7 @@ struct ContactStatus {
   // Slip direction (slip_W's) while the slip speed is ~0.
   Vec3 slide_direction_W = Vec3::UnitX();
   // A slip that starts from rolling turns from slide_direction_W at this rate (1/s, normal to
-  // it) from slide_start_t on, until it is above slip_zero (articulated_slip_onset.cpp).
+  // it) from slide_start_t on, until it is above slip_zero (slip_onset.cpp).
   Vec3 slide_turn_W = Vec3::Zero();
   double slide_start_t = 0.0;
   bool slip_grown = false;      // the slip has been above slip_zero at the end of a step
@@ -47,6 +50,21 @@ struct ContactStatus {
   // away.
   std::array<Vec3, 2> anchor_W = {Vec3::Zero(), Vec3::Zero()};
   Mat3 anchor_R_WB = Mat3::Identity();
+};
+
+// A contact's mode change or impact, for the summary.
+struct ContactEventRecord {
+  double t = 0.0;
+  std::size_t contact = 0;
+  std::string what;  // "touchdown, rolls", "impact: normal speed 4.4 -> 3.5 m/s", "slides", ...
+};
+
+// The contact subsystem's part of a run's state: every contact's status and what has happened.
+struct ContactState {
+  std::vector<ContactStatus> contacts;  // one per Model::contacts entry
+  // The time of the last event handled, once it is done (a contact's watched height).
+  double last_event_t = -std::numeric_limits<double>::infinity();
+  std::vector<ContactEventRecord> events;
 };
 
 }  // namespace tumble

@@ -2,7 +2,6 @@
 // A run's state besides y: what the right-hand side's modes are (the last load-schedule edge
 // reached, each contact's status) and what has happened so far (jumps at breakpoints, contact
 // events). With y it is everything a run needs to go on, so a copy of both is a checkpoint.
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -10,13 +9,6 @@
 #include "tumble/dynamics/row_extras.hpp"
 
 namespace tumble {
-
-// A contact's mode change or impact, for the summary.
-struct ContactEventRecord {
-  double t = 0.0;
-  std::size_t contact = 0;
-  std::string what;  // "touchdown, rolls", "impact: normal speed 4.4 -> 3.5 m/s", "slides", ...
-};
 
 // A jump of the speeds at a breakpoint, for the summary.
 struct JumpRecord {
@@ -29,12 +21,9 @@ struct JumpRecord {
 };
 
 struct HybridState {
-  double schedule_time = 0.0;           // the last schedule edge reached: decides which loads act
-  std::vector<ContactStatus> contacts;  // one per Model::contacts entry
-  // The time of the last event handled, once on_event is done (a contact's watched height).
-  double last_event_t = -std::numeric_limits<double>::infinity();
+  double schedule_time = 0.0;  // the last schedule edge reached: decides which loads act
+  ContactState contact;        // each contact's status, and its events (contact/contact_status.hpp)
   std::vector<JumpRecord> jumps;
-  std::vector<ContactEventRecord> contact_events;
 };
 
 }  // namespace tumble

@@ -8,6 +8,8 @@ namespace tumble {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;  // (w, x, y, z); unit quaternions stand for rotations
+// A spatial vector (Featherstone): a motion (omega; v) or a force (moment; force), angular first.
+using Vec6 = Eigen::Matrix<double, 6, 1>;
 using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
 

@@ -15,18 +15,6 @@ ArticulatedData::ArticulatedData(const ArticulatedModel& model) {
   }
   states.resize(model.body_count());
   rates.resize(model.dimension - model.ledger);
-  const std::size_t contacts = model.model.contacts.size();
-  touching.reserve(model.most_contact_vertices);
-  contact_now.resize(contacts);
-  unknowns.resize(6 * contacts);
-  const auto rows = static_cast<Eigen::Index>(6 * contacts);
-  contact_matrix.resize(rows, rows);
-  contact_rhs.resize(rows);
-  contact_x.resize(rows);
-  solve_scratch = ConstraintSolveScratch(rows);
-  impact_y.resize(model.dimension);
-  onset_y.resize(model.dimension);
-  onset_dydt.resize(model.dimension);
 }
 
 }  // namespace tumble

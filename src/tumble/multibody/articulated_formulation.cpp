@@ -37,13 +37,10 @@ ArticulatedFormulation::ArticulatedFormulation(std::shared_ptr<const Articulated
       m_(*shared_articulated_),
       data_(std::make_unique<ArticulatedData>(m_)),
       d_(*data_),
-      s_(hybrid_) {
-  // Room for every feature now, so that finding one during a step allocates nothing.
-  s_.contacts.resize(model_.contacts.size());
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    reserve_feature(s_.contacts[c].feature, model_.contacts[c].surface.vertices.size());
-  }
-}
+      s_(hybrid_),
+      contact_bodies_(*this),
+      contacts_(model_.contacts, model_.bodies, model_.gravity_W, contact_bodies_, s_.contact,
+                m_.dimension) {}
 
 ArticulatedFormulation::ArticulatedFormulation(Model model)
     : ArticulatedFormulation(std::make_shared<const ArticulatedModel>(
@@ -232,11 +229,19 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
   }
 }
 
+void ArticulatedFormulation::solve_with_contacts() const {
+  if (contacts_.empty()) {
+    solve(s_.schedule_time, false);
+  } else {
+    contacts_.solve_forces();
+  }
+}
+
 void ArticulatedFormulation::derivative(double t, const VecX& y, VecX& dydt) const {
-  d_.time_now = t;
+  contacts_.set_time(t);
   calc_kinematics(y, true);
   accumulate_element_loads(y, s_.schedule_time, dydt, m_.ledger, nullptr);
-  solve_with_contacts(s_.schedule_time);
+  solve_with_contacts();
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
     const Workspace& w = d_.work[k];
@@ -244,13 +249,13 @@ void ArticulatedFormulation::derivative(double t, const VecX& y, VecX& dydt) con
     if (joint.nv > 0) dydt.segment(joint.v, joint.nv) = w.qdd;
   }
   write_joint_powers(y, dydt, m_.ledger);
-  write_contact_powers(dydt, m_.ledger);
+  contacts_.write_powers(dydt, m_.ledger);
 }
 
 void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,
                                                 Eigen::Index offset) const {
   // Motors work at tau theta'; impulses and locks act only at their instants (and contacts' entries
-  // are written by write_contact_powers).
+  // are written by the contact subsystem's write_powers).
   Eigen::Index entry = offset + m_.first_motor_entry();
   for (const std::size_t j : m_.motor_joints) {
     const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
@@ -310,23 +315,23 @@ JointReaction ArticulatedFormulation::reaction_of(std::size_t model_joint) const
 }
 
 void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras& extras) const {
-  d_.time_now = t;
+  contacts_.set_time(t);
   calc_kinematics(y, true);
   accumulate_element_loads(y, s_.schedule_time, d_.rates, 0, &extras.elastic_energy);
-  solve_with_contacts(s_.schedule_time);
+  solve_with_contacts();
   extras.joints.resize(model_.joints.size());
   for (std::size_t j = 0; j < model_.joints.size(); ++j) extras.joints[j] = reaction_of(j);
   extras.contacts.resize(model_.contacts.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const ContactNow& now = d_.contact_now[c];
+    const ContactNow& now = contacts_.now(c);
     ContactOutput& out = extras.contacts[c];
-    out.mode = static_cast<int>(s_.contacts[c].mode);
+    out.mode = static_cast<int>(contacts_.status(c).mode);
     out.normal_force = now.normal_force;
     out.friction_W = now.friction_W;
     out.slip_speed = now.slip_W.norm();
   }
   write_joint_powers(y, d_.rates, 0);
-  write_contact_powers(d_.rates, 0);
+  contacts_.write_powers(d_.rates, 0);
   extras.elements.resize(static_cast<std::size_t>(d_.rates.size()));
   for (Eigen::Index i = 0; i < d_.rates.size(); ++i) {
     extras.elements[static_cast<std::size_t>(i)] = {d_.rates(i), y(m_.ledger + i)};
@@ -335,16 +340,44 @@ void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras&
 
 void ArticulatedFormulation::begin(double t0, const VecX& y) {
   Formulation::begin(t0, y);
-  d_.time_now = t0;
+  contacts_.set_time(t0);
   s_.jumps.clear();
-  begin_contacts(t0, y);
+  contacts_.begin(t0, y);
 }
 
 void ArticulatedFormulation::at_breakpoint(double t, VecX& y) {
   s_.schedule_time = t;
-  d_.time_now = t;
+  contacts_.set_time(t);
   apply_jumps_at(t, y);
-  reclassify_contacts(t, y);
+  contacts_.reclassify(t, y);
+}
+
+void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) const {
+  contacts_.event_functions(t, y, g);
+}
+
+EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, VecX& y) {
+  contacts_.on_event(event_index, t, y);
+  return EventAction::Jump;
+}
+
+void ArticulatedFormulation::project(double t, VecX& y) const {
+  contacts_.project(t, y);
+}
+
+bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
+  return contacts_.refresh_event_functions(t, y);
+}
+
+double ArticulatedFormulation::step_limit(double t, const VecX& y) const {
+  return contacts_.step_limit(t, y);
+}
+
+std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
+    const VecX& y0) const {
+  std::optional<ContactSystem::StartProblem> problem = contacts_.start_problem(y0);
+  if (!problem) return std::nullopt;
+  return StartProblem{problem->contact, std::move(problem->why)};
 }
 
 void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {

@@ -69,7 +69,6 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
     event_specs.push_back({contact.name + " touchdown", EventDirection::Falling});
     event_specs.push_back({contact.name + " lift-off", EventDirection::Falling});
     event_specs.push_back({contact.name + " stick-slip", EventDirection::Falling});
-    most_contact_vertices = std::max(most_contact_vertices, contact.surface.vertices.size());
   }
 }
 

@@ -35,7 +35,6 @@ struct ArticulatedModel {
   std::vector<std::size_t> motor_joints, lock_joints;
   // Three per contact: touchdown, support (lift-off or tipping), stick-slip.
   std::vector<EventSpec> event_specs;
-  std::size_t most_contact_vertices = 0;  // of any contact's surface
 
   std::size_t body_count() const { return model.bodies.size(); }
   // The ledger's entries by name, in order.

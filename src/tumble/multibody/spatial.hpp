@@ -12,7 +12,6 @@
 
 namespace tumble {
 
-using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 // v x m for motion vectors: (w x a; w x b + v x a) for v = (w; v), m = (a; b).

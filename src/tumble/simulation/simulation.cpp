@@ -266,7 +266,7 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const HybridState& hybrid = simulation.formulation->hybrid_state();
   result.jumps = hybrid.jumps;
-  result.contact_events = hybrid.contact_events;
+  result.contact_events = hybrid.contact.events;
   return result;
 }
 

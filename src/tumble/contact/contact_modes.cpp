@@ -7,14 +7,14 @@
 //    distance inside the feature); at zero the body lifts off, or tips onto the feature's side;
 //  - stick-slip: sliding, the slip along its direction (and a grown slip left within round-off
 //    of zero stops a moment later); rolling, mu N less the friction needed. A slip that starts
-//    is articulated_slip_onset.cpp's.
+//    is slip_onset.cpp's.
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "tumble/multibody/articulated_formulation.hpp"
+#include "tumble/contact/contact_system.hpp"
 
 #include "tumble/math/constraint_solve.hpp"
 
@@ -29,7 +29,7 @@ constexpr double kTouchingHeight = 1e-9;
 constexpr double kSlipZero = 1e-9;
 // A slip that has grown is followed by its own direction down to this fraction of slip_zero
 // (still ~1e6 above the round-off of the velocities it is the difference of) while it keeps to
-// the way it went at the step's start (ArticulatedFormulation::slide_direction).
+// the way it went at the step's start (ContactSystem::slide_direction).
 constexpr double kSlipFloor = 1e-3;
 // A grown slip that a step leaves below slip_zero stops this fraction of the time scale later
 // (the slip-stop event), unless it crosses zero first.
@@ -64,10 +64,10 @@ const char* feature_name(int size) {
 
 }  // namespace
 
-double ArticulatedFormulation::support_margin_of(std::size_t c, int& side) const {
-  const ContactNow& now = d_.contact_now[c];
+double ContactSystem::support_margin_of(std::size_t c, int& side) const {
+  const ContactNow& now = d_.now[c];
   const ContactStatus& status = s_.contacts[c];
-  const ContactSurface& surface = model_.contacts[c].surface;
+  const ContactSurface& surface = contacts_[c].surface;
   if (status.round_part != RoundPart::None) {
     return round_support_margin(surface, status.round_part, now.normal_points_B, now.reference_B,
                                 now.n_B, now.normal_force, now.moment_about_O_B, side);
@@ -76,22 +76,22 @@ double ArticulatedFormulation::support_margin_of(std::size_t c, int& side) const
                         now.moment_about_O_B, side);
 }
 
-Vec3 ArticulatedFormulation::pushed_direction(std::size_t c) const {
+Vec3 ContactSystem::pushed_direction(std::size_t c) const {
   // Against the friction sticking needs, which then saturates at mu N.
   const Vec3 needed = friction_demand(c);
   const double size = needed.norm();
   return size > 0.0 ? Vec3(-needed / size) : s_.contacts[c].slide_direction_W;
 }
 
-Vec3 ArticulatedFormulation::friction_demand(std::size_t c) const {
-  const ContactNow& now = d_.contact_now[c];
+Vec3 ContactSystem::friction_demand(std::size_t c) const {
+  const ContactNow& now = d_.now[c];
   const double rho = now.spin_radius;
-  const Vec3& n = model_.contacts[c].normal_W;
+  const Vec3& n = contacts_[c].normal_W;
   if (!(rho > 0.0)) return now.friction_W;
   return now.friction_W + (now.moment_about_O_B.dot(now.n_B) / rho) * n;
 }
 
-bool ArticulatedFormulation::lands_with(std::size_t c, double height, double normal_speed) const {
+bool ContactSystem::lands_with(std::size_t c, double height, double normal_speed) const {
   // Not moving away from the plane; or at it (a landing located to round-off), unless it leaves
   // faster than a settling touchdown lands: that point has just bounced off, and an impulse or a
   // contact that held it there would take its bounce.
@@ -100,9 +100,9 @@ bool ArticulatedFormulation::lands_with(std::size_t c, double height, double nor
          (height <= status.touching_height && normal_speed <= status.settle_speed);
 }
 
-void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within) const {
-  const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+void ContactSystem::find_touching_vertices(std::size_t c, double within) const {
+  const PlaneContact& contact = contacts_[c];
+  const BodyMotion w = dynamics_.motion(contact.body);
   const Vec3& n = contact.normal_W;
   d_.touching.clear();
   for (std::size_t i = 0; i < contact.surface.vertices.size(); ++i) {
@@ -113,12 +113,11 @@ void ArticulatedFormulation::find_touching_vertices(std::size_t c, double within
   }
   // At least the lowest vertex (a landing located to round-off is at the plane).
   if (d_.touching.empty()) {
-    d_.touching.push_back(lowest_vertex(contact.surface, w.R_WC.transpose() * n));
+    d_.touching.push_back(lowest_vertex(contact.surface, w.R_WB.transpose() * n));
   }
 }
 
-double ArticulatedFormulation::watched_height(std::size_t c, double height,
-                                              double normal_speed) const {
+double ContactSystem::watched_height(std::size_t c, double height, double normal_speed) const {
   // The height, but kept positive while the point is at the plane (within the landing height)
   // and not moving into it: a bounce may rise and land again within one step (its flight is a
   // parabola, which a high-order method steps over), and the height alone would not change sign
@@ -137,12 +136,12 @@ double ArticulatedFormulation::watched_height(std::size_t c, double height,
              : height;
 }
 
-double ArticulatedFormulation::landing_watch(std::size_t c, Vec3& landing_B) const {
+double ContactSystem::landing_watch(std::size_t c, Vec3& landing_B) const {
   // Every point that may land first: a polyhedron's vertices (the lowest may be leaving the plane
   // while another comes down through it), a round body's ends' lowest rim points, a sphere's
   // lowest point.
-  const PlaneContact& contact = model_.contacts[c];
-  const ContactNow& now = d_.contact_now[c];
+  const PlaneContact& contact = contacts_[c];
+  const ContactNow& now = d_.now[c];
   double least = std::numeric_limits<double>::infinity();
   const auto watch = [&](const Vec3& p_B) {
     const double g = watched_height(c, height_above_plane(c, p_B), normal_speed(c, p_B));
@@ -164,22 +163,22 @@ double ArticulatedFormulation::landing_watch(std::size_t c, Vec3& landing_B) con
   return least;
 }
 
-void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) const {
+void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
   d_.time_now = t;
   const bool touching =
       std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (touching) {
-    solve_contacts_at(y);
+    dynamics_.calc_accelerations(y);
   } else {
-    calc_kinematics(y, true);
+    dynamics_.calc_motion(y, true);
     calc_contact_points();
   }
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const auto base = static_cast<Eigen::Index>(3 * c);
-    const ContactNow& now = d_.contact_now[c];
+    const ContactNow& now = d_.now[c];
     const ContactStatus& status = s_.contacts[c];
-    const PlaneContact& contact = model_.contacts[c];
+    const PlaneContact& contact = contacts_[c];
     g(base) = g(base + 1) = g(base + 2) = 1.0;
     // Apart, the point nearest to landing; touching, a polyhedron or a round body watches the
     // part that may land next.
@@ -206,10 +205,10 @@ void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) c
   }
 }
 
-bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
+bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
   d_.time_now = t;
   bool refresh = false;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const ContactStatus& s = s_.contacts[c];
     refresh |= s.mode == ContactMode::Sliding || rim_direction_kept_up(c);
   }
@@ -217,14 +216,14 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
   // The slip-stop event watches the slip's component along the direction it had at the start of
   // the step: in 3D the slip may turn, and it stops where that component first vanishes. A round
   // body's rim point leans towards where it was (round_contact.hpp): that is kept up with it.
-  calc_kinematics(y, true);
+  dynamics_.calc_motion(y, true);
   calc_contact_points();
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
     ContactStatus& status = s_.contacts[c];
-    const double slip = d_.contact_now[c].slip_W.norm();
+    const double slip = d_.now[c].slip_W.norm();
     if (status.mode == ContactMode::Sliding &&
         (slip > status.slip_zero || (status.slip_grown && slip > status.slip_floor))) {
-      status.slide_direction_W = d_.contact_now[c].slip_W / slip;
+      status.slide_direction_W = d_.now[c].slip_W / slip;
       status.slide_turn_W.setZero();  // the slip itself says where it goes
       status.slip_grown = true;
     }
@@ -246,55 +245,55 @@ bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {
         (status.slip_stop_armed && sliding && status.slip_left_near && slip <= near);
     status.slip_last_step = sliding ? slip : 0.0;
     if (rim_direction_kept_up(c)) {
-      status.rim_direction_B = rim_direction(d_.contact_now[c].n_B, status.rim_direction_B);
+      status.rim_direction_B = rim_direction(d_.now[c].n_B, status.rim_direction_B);
     }
   }
   return true;
 }
 
-bool ArticulatedFormulation::rim_direction_kept_up(std::size_t c) const {
+bool ContactSystem::rim_direction_kept_up(std::size_t c) const {
   // Only near flat does the lean towards the last direction count (round_contact.hpp); above
   // kRimKeptUpTilt it moves the rim point by less than 1e-10 of the radius, so the direction is
   // kept up with only there (judged by the last evaluation's normal in body axes).
-  const Vec3& n_B = d_.contact_now[c].n_B;
-  return holds_rim_point(model_.contacts[c].surface, s_.contacts[c].round_part) &&
+  const Vec3& n_B = d_.now[c].n_B;
+  return holds_rim_point(contacts_[c].surface, s_.contacts[c].round_part) &&
          std::hypot(n_B.x(), n_B.y()) < kRimKeptUpTilt;
 }
 
-void ArticulatedFormulation::note_contact(double t, std::size_t contact, std::string what) {
-  s_.contact_events.push_back({t, contact, std::move(what)});
+void ContactSystem::note_contact(double t, std::size_t contact, std::string what) {
+  s_.events.push_back({t, contact, std::move(what)});
 }
 
-double ArticulatedFormulation::height_above_plane(std::size_t c, const Vec3& p_B) const {
-  const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
-  return (w.r_G_W + w.R_WC * p_B - contact.point_W).dot(contact.normal_W);
+double ContactSystem::height_above_plane(std::size_t c, const Vec3& p_B) const {
+  const PlaneContact& contact = contacts_[c];
+  const BodyMotion w = dynamics_.motion(contact.body);
+  return (w.r_G_W + w.R_WB * p_B - contact.point_W).dot(contact.normal_W);
 }
 
-double ArticulatedFormulation::normal_speed(std::size_t c, const Vec3& p_B) const {
-  const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+double ContactSystem::normal_speed(std::size_t c, const Vec3& p_B) const {
+  const PlaneContact& contact = contacts_[c];
+  const BodyMotion w = dynamics_.motion(contact.body);
   const Vec3 v_P_B = w.velocity.tail<3>() + w.velocity.head<3>().cross(p_B);
-  return contact.normal_W.dot(w.R_WC * v_P_B);
+  return contact.normal_W.dot(w.R_WB * v_P_B);
 }
 
-double ArticulatedFormulation::normal_acceleration(std::size_t c, const Vec3& p_B) const {
-  const PlaneContact& contact = model_.contacts[c];
-  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+double ContactSystem::normal_acceleration(std::size_t c, const Vec3& p_B) const {
+  const PlaneContact& contact = contacts_[c];
+  const BodyMotion w = dynamics_.motion(contact.body);
   return contact.normal_W.dot(moving_point_acceleration_W(w, p_B, Vec3::Zero()));
 }
 
-bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
-                                               std::span<const Vec3> left_out_B) {
+bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
+                                      std::span<const Vec3> left_out_B) {
   ContactStatus& status = s_.contacts[c];
-  const PlaneContact& contact = model_.contacts[c];
-  const ContactNow& now = d_.contact_now[c];
+  const PlaneContact& contact = contacts_[c];
+  const ContactNow& now = d_.now[c];
   // Consistent: the plane pushes (N > 0) with its CoP in the feature, and the touching vertices
   // (points) left out of the feature do not go into the plane.
   const auto consistent = [&] {
     int side = -1;
     if (!(now.normal_force > 0.0) || support_margin_of(c, side) < 0.0) return false;
-    const double tolerance = kSlipZero * std::max(model_.gravity_W.norm(), 1.0);
+    const double tolerance = kSlipZero * std::max(gravity_W_.norm(), 1.0);
     for (const int i : d_.touching) {
       if (status.feature.contains(i)) continue;
       const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
@@ -310,7 +309,7 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
   // gives together: then it cannot roll or stick, and slides the way it is pushed.
   bool can_roll = true;
   try {
-    solve_contacts_at(y);
+    dynamics_.calc_accelerations(y);
   } catch (const InconsistentConstraints&) {
     can_roll = false;
   }
@@ -325,7 +324,7 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
     status.slip_grown = true;
     status.slip_left_near = false;
     status.slip_stop_armed = false;
-    solve_contacts_at(y);
+    dynamics_.calc_accelerations(y);
   } else if (contact.friction > 0.0 && now.normal_force > 0.0 &&
              demand.norm() <= contact.friction * now.normal_force) {
     if (!consistent()) return false;
@@ -338,9 +337,9 @@ bool ArticulatedFormulation::settle_on_feature(std::size_t c, double t, VecX& y,
   return consistent();
 }
 
-void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y, bool always_note) {
+void ContactSystem::classify_contact(std::size_t c, double t, VecX& y, bool always_note) {
   ContactStatus& status = s_.contacts[c];
-  const PlaneContact& contact = model_.contacts[c];
+  const PlaneContact& contact = contacts_[c];
   const ContactMode before = status.mode;
   const int size_before = status.feature.size();
   const RoundPart part_before = status.round_part;
@@ -361,9 +360,9 @@ void ArticulatedFormulation::classify_contact(std::size_t c, double t, VecX& y, 
   note_contact(t, c, std::move(what));
 }
 
-bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX& y) {
+bool ContactSystem::settle_on_candidates(std::size_t c, double t, VecX& y) {
   ContactStatus& status = s_.contacts[c];
-  const PlaneContact& contact = model_.contacts[c];
+  const PlaneContact& contact = contacts_[c];
   // The candidates, in order: the whole feature; a face's edges; its (or an edge's) vertices;
   // apart. The first whose forces are consistent is the one (for these few, enumerating them
   // solves the complementarity problem exactly).
@@ -372,8 +371,8 @@ bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX&
   const int k = static_cast<int>(d_.touching.size());
   const int edges = k >= 3 ? k : 0;
   const int vertices = k >= 2 ? k : 0;
-  calc_kinematics(y, false);
-  const Vec3 n_B = d_.work[m_.slot_of_body[contact.body]].R_WC.transpose() * contact.normal_W;
+  dynamics_.calc_motion(y, false);
+  const Vec3 n_B = dynamics_.motion(contact.body).R_WB.transpose() * contact.normal_W;
   for (int candidate = 0; candidate <= edges + vertices; ++candidate) {
     if (candidate > 0) {
       std::array<int, 2> pick{};
@@ -393,13 +392,12 @@ bool ArticulatedFormulation::settle_on_candidates(std::size_t c, double t, VecX&
   return false;
 }
 
-bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
+bool ContactSystem::settle_round(std::size_t c, double t, VecX& y) {
   ContactStatus& status = s_.contacts[c];
-  const RoundEnds ends = round_ends(model_.contacts[c].surface);
+  const RoundEnds ends = round_ends(contacts_[c].surface);
   d_.touching.clear();  // the round body's left-out points are named per candidate
-  calc_kinematics(y, false);
-  const Vec3 n_B = d_.work[m_.slot_of_body[model_.contacts[c].body]].R_WC.transpose() *
-                   model_.contacts[c].normal_W;
+  dynamics_.calc_motion(y, false);
+  const Vec3 n_B = dynamics_.motion(contacts_[c].body).R_WB.transpose() * contacts_[c].normal_W;
   const Vec3 u = rim_direction(n_B, status.rim_direction_B);
   const std::array<Vec3, 2> end_points = {rim_point(ends, 0, u), rim_point(ends, 1, u)};
   const auto one = [](const Vec3& p) { return std::span<const Vec3>(&p, 1); };
@@ -414,7 +412,7 @@ bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
     case RoundPart::FaceA:
     case RoundPart::FaceB:
       if (settle_on_feature(c, t, y)) return true;
-      tip_round(c, 0);  // onto the rim where the CoP went (the face's forces, in d_.contact_now)
+      tip_round(c, 0);  // onto the rim where the CoP went (the face's forces, in d_.now)
       return settle_on_feature(c, t, y, one(ends.centre_B[static_cast<std::size_t>(end_of(part))]));
     case RoundPart::EndA:
     case RoundPart::EndB: {
@@ -429,20 +427,19 @@ bool ArticulatedFormulation::settle_round(std::size_t c, double t, VecX& y) {
   }
 }
 
-bool ArticulatedFormulation::round_other_end_B(std::size_t c, Vec3& other_B) const {
+bool ContactSystem::round_other_end_B(std::size_t c, Vec3& other_B) const {
   const ContactStatus& status = s_.contacts[c];
-  const RoundEnds ends = round_ends(model_.contacts[c].surface);
+  const RoundEnds ends = round_ends(contacts_[c].surface);
   if (ends.one_rim || !is_end(status.round_part)) return false;
-  const Vec3 n_B = d_.work[m_.slot_of_body[model_.contacts[c].body]].R_WC.transpose() *
-                   model_.contacts[c].normal_W;
+  const Vec3 n_B = dynamics_.motion(contacts_[c].body).R_WB.transpose() * contacts_[c].normal_W;
   const int other = status.round_part == RoundPart::EndA ? 1 : 0;
   other_B = rim_point(ends, other, rim_direction(n_B, status.rim_direction_B));
   return true;
 }
 
-void ArticulatedFormulation::tip_round(std::size_t c, int side) {
+void ContactSystem::tip_round(std::size_t c, int side) {
   ContactStatus& status = s_.contacts[c];
-  const ContactNow& now = d_.contact_now[c];
+  const ContactNow& now = d_.now[c];
   if (status.round_part == RoundPart::Side) {
     status.round_part = side == 0 ? RoundPart::EndA : RoundPart::EndB;
   } else if (is_face(status.round_part)) {
@@ -452,7 +449,7 @@ void ArticulatedFormulation::tip_round(std::size_t c, int side) {
   }
 }
 
-void ArticulatedFormulation::set_apart(std::size_t c) {
+void ContactSystem::set_apart(std::size_t c) {
   ContactStatus& status = s_.contacts[c];
   status.mode = ContactMode::Apart;
   status.slide_turn_W.setZero();
@@ -463,21 +460,21 @@ void ArticulatedFormulation::set_apart(std::size_t c) {
   status.round_part = RoundPart::None;
 }
 
-bool ArticulatedFormulation::anchored(std::size_t c) const {
-  const ContactSurface& surface = model_.contacts[c].surface;
+bool ContactSystem::anchored(std::size_t c) const {
+  const ContactSurface& surface = contacts_[c].surface;
   const RoundPart part = s_.contacts[c].round_part;
   if (surface.kind == ContactSurface::Kind::Polyhedron || is_face(part)) return true;
   // A point fixed in the body: a cone's apex (an end of radius 0).
   return part == RoundPart::EndA && round_ends(surface).radius[0] == 0.0;
 }
 
-void ArticulatedFormulation::find_touching_round_part(std::size_t c, double within, bool resting) {
-  const PlaneContact& contact = model_.contacts[c];
+void ContactSystem::find_touching_round_part(std::size_t c, double within, bool resting) {
+  const PlaneContact& contact = contacts_[c];
   ContactStatus& status = s_.contacts[c];
-  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+  const BodyMotion w = dynamics_.motion(contact.body);
   const RoundEnds ends = round_ends(contact.surface);
   const Vec3& n = contact.normal_W;
-  const Vec3 n_B = w.R_WC.transpose() * n;
+  const Vec3 n_B = w.R_WB.transpose() * n;
   const Vec3 omega_B = w.velocity.head<3>();
   const auto touches = [&](const Vec3& p_B) {
     const double height = height_above_plane(c, p_B);
@@ -522,37 +519,37 @@ void ArticulatedFormulation::find_touching_round_part(std::size_t c, double with
   }
 }
 
-void ArticulatedFormulation::anchor_contact(std::size_t c) {
-  const PlaneContact& contact = model_.contacts[c];
+void ContactSystem::anchor_contact(std::size_t c) {
+  const PlaneContact& contact = contacts_[c];
   if (!anchored(c)) return;  // it rolls: no anchor
-  const ContactNow& now = d_.contact_now[c];
+  const ContactNow& now = d_.now[c];
   ContactStatus& status = s_.contacts[c];
-  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+  const BodyMotion w = dynamics_.motion(contact.body);
   const Vec3& n = contact.normal_W;
   const auto on_plane = [&](const Vec3& p_B) {
-    const Vec3 x = w.r_G_W + w.R_WC * p_B;
+    const Vec3 x = w.r_G_W + w.R_WB * p_B;
     return Vec3(x - n * n.dot(x - contact.point_W));
   };
   const bool edge = now.normal_point_count == 2;
   status.anchor_W[0] = on_plane(edge ? now.normal_points_B[0] : now.reference_B);
   status.anchor_W[1] = on_plane(edge ? now.normal_points_B[1] : now.reference_B);
-  status.anchor_R_WB = w.R_WC;
+  status.anchor_R_WB = w.R_WB;
 }
 
-void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
-  const PlaneContact& contact = model_.contacts[c];
+void ContactSystem::impact(std::size_t c, double t, VecX& y) {
+  const PlaneContact& contact = contacts_[c];
   ContactStatus& status = s_.contacts[c];
   const Vec3& n = contact.normal_W;
   const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
   const bool round = is_round(contact.surface);
-  calc_kinematics(y, true);
+  dynamics_.calc_motion(y, true);
   calc_contact_points();
   // The point that landed: apart, the one the event watched (not always the lowest).
-  Vec3 landing_B = d_.contact_now[c].support.p_GC_B;
+  Vec3 landing_B = d_.now[c].support.p_GC_B;
   if (status.mode == ContactMode::Apart) landing_watch(c, landing_B);
   const double vn_before = normal_speed(c, landing_B);
   const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
-  const double energy_before = kinetic_energy();
+  const double energy_before = dynamics_.kinetic_energy();
   // Vertices about to land with it (within the settling height) land together: a box falling
   // flat would otherwise rattle between its corners in ever shorter bounces.
   if (polyhedron) find_touching_vertices(c, status.landing_height);
@@ -578,21 +575,21 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
   Eigen::Index count = 0;
   for (const ImpactLaw& law : laws) {
     if (polyhedron)
-      make_feature(contact.surface.vertices, d_.touching, d_.contact_now[c].n_B, status.feature);
+      make_feature(contact.surface.vertices, d_.touching, d_.now[c].n_B, status.feature);
     status.round_part = landing_part;
     status.rim_direction_B = landing_rim_direction_B;
     for (int attempt = 0; attempt < 3; ++attempt) {
-      calc_kinematics(y, true);
+      dynamics_.calc_motion(y, true);
       calc_contact_points();
-      const ContactNow& now = d_.contact_now[c];
+      const ContactNow& now = d_.now[c];
       const auto solve_for_restitution = [&] {
         for (Eigen::Index i = 0; i < count; ++i) {
           const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
-          d_.contact_x(i) = -(row.normal ? 1.0 + law.e : 1.0) * row_velocity(row);
+          d_.x(i) = -(row.normal ? 1.0 + law.e : 1.0) * row_velocity(row);
         }
-        calc_contact_matrix(count, s_.schedule_time);
-        solve_contact_system(count, d_.contact_x);
-        set_contact_resultants(count, d_.contact_x);  // the impulse, as a force would be
+        calc_contact_matrix(count);
+        solve_contact_system(count, d_.x);
+        set_contact_resultants(count, d_.x);  // the impulse, as a force would be
       };
       if (law.friction) {
         count = append_contact_unknowns(c, ContactMode::Rolling, ContactRows::Projection,
@@ -629,15 +626,15 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       break;
     }
     d_.impact_y = y;
-    apply_contact_impulses(count, d_.contact_x, s_.schedule_time, d_.impact_y);
-    calc_kinematics(d_.impact_y, true);
-    work = kinetic_energy() - energy_before;
+    apply_contact_impulses(count, d_.x, d_.impact_y);
+    dynamics_.calc_motion(d_.impact_y, true);
+    work = dynamics_.kinetic_energy() - energy_before;
     if (work <= kWorkRoundOff * energy_before) break;
   }
   y = d_.impact_y;
-  y(m_.ledger + m_.contact_entry(c)) += work;
-  calc_kinematics(y, true);
-  const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+  add_work(c, work, y);
+  dynamics_.calc_motion(y, true);
+  const BodyMotion w = dynamics_.motion(contact.body);
   const double vn_after = normal_speed(c, landing_B);
   const std::string on =
       polyhedron ? fmt::format(" on {}", feature_name(status.feature.size()))
@@ -650,7 +647,7 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
       // On everything now at the plane: which part carries it is the classification's to find
       // (the impulse's own centre may have left a vertex out that the forces need).
       find_touching_vertices(c, status.touching_height);
-      make_feature(contact.surface.vertices, d_.touching, w.R_WC.transpose() * n, status.feature);
+      make_feature(contact.surface.vertices, d_.touching, w.R_WB.transpose() * n, status.feature);
     }
     // A round body on what landed with it: its points within the landing height that the
     // plastic impulse stopped (a face lands with its far side that high, not yet at the plane).
@@ -683,11 +680,11 @@ void ArticulatedFormulation::impact(std::size_t c, double t, VecX& y) {
     set_apart(c);
     return;
   }
-  make_feature(contact.surface.vertices, d_.touching, w.R_WC.transpose() * n, status.feature);
+  make_feature(contact.surface.vertices, d_.touching, w.R_WB.transpose() * n, status.feature);
   classify_contact(c, t, y);
 }
 
-void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, double speed) {
+void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed) {
   ContactStatus& status = s_.contacts[c];
   // A settled landing that nothing holds (it goes apart at once) and that follows the last one
   // within kCascadeGap of the time scale continues a cascade; anything else ends it.
@@ -703,11 +700,11 @@ void ArticulatedFormulation::check_landing_cascade(std::size_t c, double t, doub
       "contact '{}': {} landings from t = {:.9g} to {:.9g} s (the last at {:.3g} m/s) that no "
       "contact mode holds: no mode is consistent here (Painleve's paradox: friction {} presses "
       "the body on as it slides); lower the friction",
-      model_.contacts[c].name, status.cascade_landings, status.cascade_first_t, t, speed,
-      model_.contacts[c].friction));
+      contacts_[c].name, status.cascade_landings, status.cascade_first_t, t, speed,
+      contacts_[c].friction));
 }
 
-EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, VecX& y) {
+void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
   d_.time_now = t;
   s_.last_event_t = -std::numeric_limits<double>::infinity();  // until it is handled
   const std::size_t c = event_index / 3;
@@ -718,7 +715,7 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
       // Left apart with a point at the plane moving into it (the impulse on one vertex of an
       // edge can drive the other down), it lands again at once, rather than a step later.
       for (int round = 1; round < kImpactRounds && status.mode == ContactMode::Apart; ++round) {
-        calc_kinematics(y, true);
+        dynamics_.calc_motion(y, true);
         calc_contact_points();
         Vec3 p_B = Vec3::Zero();
         if (landing_watch(c, p_B) > 0.0 || !(normal_speed(c, p_B) < -status.slip_zero)) break;
@@ -726,22 +723,20 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
       }
       break;
     case 1: {  // support: lift-off, or the CoP at the feature's side
-      solve_contacts_at(y);
+      dynamics_.calc_accelerations(y);
       int side = -1;
       support_margin_of(c, side);
-      if (status.feature.size() >= 2 && d_.contact_now[c].normal_force > 0.0) {
-        tip_onto_side(model_.contacts[c].surface.vertices, side, d_.contact_now[c].n_B,
-                      status.feature);
+      if (status.feature.size() >= 2 && d_.now[c].normal_force > 0.0) {
+        tip_onto_side(contacts_[c].surface.vertices, side, d_.now[c].n_B, status.feature);
         note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
         classify_contact(c, t, y);
         break;
       }
-      if (side >= 0 && status.round_part != RoundPart::None &&
-          d_.contact_now[c].normal_force > 0.0) {
+      if (side >= 0 && status.round_part != RoundPart::None && d_.now[c].normal_force > 0.0) {
         tip_round(c, side);
-        note_contact(t, c,
-                     fmt::format("tips onto {}",
-                                 round_part_name(model_.contacts[c].surface, status.round_part)));
+        note_contact(
+            t, c,
+            fmt::format("tips onto {}", round_part_name(contacts_[c].surface, status.round_part)));
         classify_contact(c, t, y);
         break;
       }
@@ -751,12 +746,12 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
     }
     default:
       if (status.mode == ContactMode::Sliding) {
-        calc_kinematics(y, true);
+        dynamics_.calc_motion(y, true);
         calc_contact_points();
-        const double slip = d_.contact_now[c].slip_W.norm();
+        const double slip = d_.now[c].slip_W.norm();
         if (slip > kSlipStoppedNear * status.slip_zero) {
           // The slip turned away from the direction it had (3D); it did not stop.
-          status.slide_direction_W = d_.contact_now[c].slip_W / slip;
+          status.slide_direction_W = d_.now[c].slip_W / slip;
           status.slide_turn_W.setZero();
           status.slip_grown = true;
           status.slip_stop_armed = false;
@@ -772,7 +767,7 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
         }
         classify_contact(c, t, y);
       } else {
-        solve_contacts_at(y);
+        dynamics_.calc_accelerations(y);
         if (start_sliding(c, t, y)) {
           note_contact(t, c, "slides: the friction sticking needs leaves the cone");
           break;
@@ -782,7 +777,6 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
       break;
   }
   s_.last_event_t = t;
-  return EventAction::Jump;
 }
 
 namespace {
@@ -809,42 +803,41 @@ ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
 
 }  // namespace
 
-std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
-    const VecX& y0) const {
-  calc_kinematics(y0, true);
+std::optional<ContactSystem::StartProblem> ContactSystem::start_problem(const VecX& y0) const {
+  dynamics_.calc_motion(y0, true);
   calc_contact_points();
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const PlaneContact& contact = model_.contacts[c];
-    const ContactScales scales = contact_scales(contact, model_.gravity_W, d_.states[contact.body]);
-    const ContactNow& now = d_.contact_now[c];
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const PlaneContact& contact = contacts_[c];
+    const ContactScales scales = contact_scales(contact, gravity_W_, dynamics_.state(contact.body));
+    const ContactNow& now = d_.now[c];
     if (now.support.height < -scales.touching_height) {
       return StartProblem{
           c, fmt::format("body '{}' starts {:.6g} m inside the plane; place it on or above it",
-                         model_.bodies[contact.body].name, -now.support.height)};
+                         bodies_[contact.body].name, -now.support.height)};
     }
     const double vn = now.support_normal_speed;
     if (now.support.height <= scales.touching_height && vn < -scales.slip_zero) {
       return StartProblem{
           c, fmt::format("body '{}' starts touching the plane and moving into it at {:.6g} m/s; "
                          "start it above the plane, or without that speed",
-                         model_.bodies[contact.body].name, -vn)};
+                         bodies_[contact.body].name, -vn)};
     }
   }
   return std::nullopt;
 }
 
-void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
-  s_.contact_events.clear();
+void ContactSystem::begin(double t0, const VecX& y) {
+  s_.events.clear();
   s_.last_event_t = -std::numeric_limits<double>::infinity();
-  if (model_.contacts.empty()) return;
-  calc_kinematics(y, true);  // the bodies' states set the scales
-  VecX y_start = y;          // classifying may project it; the run starts from y itself
+  if (contacts_.empty()) return;
+  dynamics_.calc_motion(y, true);  // the bodies' states set the scales
+  VecX y_start = y;                // classifying may project it; the run starts from y itself
   d_.impact_y.resize(y.size());
   d_.onset_y.resize(y.size());
   d_.onset_dydt.resize(y.size());
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const PlaneContact& contact = model_.contacts[c];
-    const ContactScales scales = contact_scales(contact, model_.gravity_W, d_.states[contact.body]);
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const PlaneContact& contact = contacts_[c];
+    const ContactScales scales = contact_scales(contact, gravity_W_, dynamics_.state(contact.body));
     ContactStatus& status = s_.contacts[c];
     set_apart(c);
     status.rim_direction_B = Vec3::UnitX();
@@ -860,29 +853,28 @@ void ArticulatedFormulation::begin_contacts(double t0, const VecX& y) {
     status.landing_height = scales.landing_height;
     status.time_scale = std::max(contact_size(contact.surface), 1e-300) / scales.speed;
   }
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    calc_kinematics(y_start, true);
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    dynamics_.calc_motion(y_start, true);
     calc_contact_points();
-    const ContactNow& now = d_.contact_now[c];
+    const ContactNow& now = d_.now[c];
     const ContactStatus& status = s_.contacts[c];
     if (now.support.height > status.touching_height ||
         now.support_normal_speed > status.slip_zero) {
       continue;
     }
-    if (model_.contacts[c].surface.kind == ContactSurface::Kind::Polyhedron) {
+    if (contacts_[c].surface.kind == ContactSurface::Kind::Polyhedron) {
       find_touching_vertices(c, s_.contacts[c].touching_height);
-      make_feature(model_.contacts[c].surface.vertices, d_.touching, now.n_B,
-                   s_.contacts[c].feature);
+      make_feature(contacts_[c].surface.vertices, d_.touching, now.n_B, s_.contacts[c].feature);
     }
-    if (is_round(model_.contacts[c].surface)) {
+    if (is_round(contacts_[c].surface)) {
       find_touching_round_part(c, s_.contacts[c].touching_height, false);
     }
     classify_contact(c, t0, y_start);
   }
 }
 
-void ArticulatedFormulation::reclassify_contacts(double t, VecX& y) {
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+void ContactSystem::reclassify(double t, VecX& y) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode != ContactMode::Apart) classify_contact(c, t, y);
   }
 }

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <limits>
 
+#include "tumble/contact/contact_system.hpp"
 #include "tumble/contact/landing_bound.hpp"
 #include "tumble/contact/plane_contact.hpp"
-#include "tumble/multibody/articulated_formulation.hpp"
 
 namespace tumble {
 
@@ -21,21 +21,22 @@ constexpr double kTurningMargin = 2.0;
 
 }  // namespace
 
-double ArticulatedFormulation::step_limit(double t, const VecX& y) const {
+double ContactSystem::step_limit(double t, const VecX& y) const {
   double limit = std::numeric_limits<double>::infinity();
   const bool any_apart =
       std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode == ContactMode::Apart; });
   if (!any_apart) return limit;
   d_.time_now = t;
-  solve_contacts_at(y);  // the accelerations, for how fast the points' normal velocities turn
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+  dynamics_.calc_accelerations(
+      y);  // the accelerations, for how fast the points' normal velocities turn
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode != ContactMode::Apart) continue;
-    const PlaneContact& contact = model_.contacts[c];
-    const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+    const PlaneContact& contact = contacts_[c];
+    const BodyMotion w = dynamics_.motion(contact.body);
     const Vec3& n = contact.normal_W;
-    const SurfaceMotion motion{w.r_G_W, w.R_WC, w.R_WC * w.velocity.tail<3>(),
-                               w.R_WC * w.velocity.head<3>()};
+    const SurfaceMotion motion{w.r_G_W, w.R_WB, w.R_WB * w.velocity.tail<3>(),
+                               w.R_WB * w.velocity.head<3>()};
     const Vec3 a_G_W = moving_point_acceleration_W(w, Vec3::Zero(), Vec3::Zero());
     // A point r from the COM: n . (a_G + alpha x r + omega x (omega x r)) >= -turning; a
     // sphere's lowest point does not move with its turning.

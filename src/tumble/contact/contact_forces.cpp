@@ -1,6 +1,5 @@
-// Contacts with planes in the articulated formulation: their forces in each mode and the
-// projection onto their constraints (docs/design.md, "Contact"). The modes, events and impacts
-// are in articulated_contact_modes.cpp.
+// Contacts with planes: their forces in each mode and the projection onto their constraints
+// (docs/design.md, "Contact"). The modes, events and impacts are in contact_modes.cpp.
 //
 // In each mode a touching contact's force is the one that keeps its constraints' accelerations at
 // zero. A constraint row is linear . (velocity of the body's material point at a point P) +
@@ -20,10 +19,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "tumble/multibody/articulated_formulation.hpp"
+#include "tumble/contact/contact_system.hpp"
 
 #include "tumble/math/constraint_solve.hpp"
-#include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
 
@@ -40,14 +38,32 @@ Vec6 wrench_at(const Mat3& R_WB, const Vec3& p_B, const Vec3& F_W, const Vec3& M
 
 }  // namespace
 
-void ArticulatedFormulation::calc_contact_points() const {
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const PlaneContact& contact = model_.contacts[c];
+ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
+                             std::span<const RigidBody> bodies, const Vec3& gravity_W,
+                             const ContactDynamics& dynamics, ContactState& state,
+                             Eigen::Index dimension)
+    : contacts_(contacts),
+      bodies_(bodies),
+      gravity_W_(gravity_W),
+      dynamics_(dynamics),
+      data_(std::make_unique<ContactData>(contacts, dimension)),
+      d_(*data_),
+      s_(state) {
+  // Room for every feature now, so that finding one during a step allocates nothing.
+  s_.contacts.resize(contacts_.size());
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    reserve_feature(s_.contacts[c].feature, contacts_[c].surface.vertices.size());
+  }
+}
+
+void ContactSystem::calc_contact_points() const {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const PlaneContact& contact = contacts_[c];
     const ContactStatus& status = s_.contacts[c];
-    const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+    const BodyMotion w = dynamics_.motion(contact.body);
     const Vec3& n = contact.normal_W;
-    ContactNow& now = d_.contact_now[c];
-    now.n_B = w.R_WC.transpose() * n;
+    ContactNow& now = d_.now[c];
+    now.n_B = w.R_WB.transpose() * n;
     const Vec3 omega_B = w.velocity.head<3>();
     const Vec3 v_G_B = w.velocity.tail<3>();
     const ContactSurface& surface = contact.surface;
@@ -58,7 +74,7 @@ void ArticulatedFormulation::calc_contact_points() const {
       calc_round_contact_points(c, omega_B);
     } else if (feature.size() == 0) {
       // A sphere, or a polyhedron or round body apart: its support point is the contact point.
-      now.support = support_point(contact, w.r_G_W, w.R_WC);
+      now.support = support_point(contact, w.r_G_W, w.R_WB);
       now.reference_B = now.support.p_GC_B;
       now.reference_rate_B = support_rate_B(contact, now.n_B, omega_B);
       now.normal_points_B[0] = now.reference_B;
@@ -90,8 +106,8 @@ void ArticulatedFormulation::calc_contact_points() const {
       }
     }
     now.support_normal_speed = normal_speed(c, now.support.p_GC_B);
-    now.velocity_W = w.R_WC * (v_G_B + omega_B.cross(now.reference_B));
-    const double spin = (w.R_WC * omega_B).dot(n);
+    now.velocity_W = w.R_WB * (v_G_B + omega_B.cross(now.reference_B));
+    const double spin = (w.R_WB * omega_B).dot(n);
     now.slip_W = now.velocity_W - n * n.dot(now.velocity_W) + now.spin_radius * spin * n;
     now.wrench_B.setZero();
     now.force_W.setZero();
@@ -101,10 +117,10 @@ void ArticulatedFormulation::calc_contact_points() const {
   }
 }
 
-void ArticulatedFormulation::calc_round_contact_points(std::size_t c, const Vec3& omega_B) const {
-  const PlaneContact& contact = model_.contacts[c];
+void ContactSystem::calc_round_contact_points(std::size_t c, const Vec3& omega_B) const {
+  const PlaneContact& contact = contacts_[c];
   const ContactStatus& status = s_.contacts[c];
-  ContactNow& now = d_.contact_now[c];
+  ContactNow& now = d_.now[c];
   const RoundEnds ends = round_ends(contact.surface);
   const RoundPartPoints part =
       round_part_points(ends, status.round_part, now.n_B, omega_B, status.rim_direction_B);
@@ -142,9 +158,9 @@ void ArticulatedFormulation::calc_round_contact_points(std::size_t c, const Vec3
   }
 }
 
-Vec3 ArticulatedFormulation::slide_direction(std::size_t c) const {
+Vec3 ContactSystem::slide_direction(std::size_t c) const {
   const ContactStatus& status = s_.contacts[c];
-  const Vec3& slip_W = d_.contact_now[c].slip_W;
+  const Vec3& slip_W = d_.now[c].slip_W;
   const double slip = slip_W.norm();
   // Below slip_zero a grown slip is still followed while it keeps to the way it went at the start
   // of the step; past that (it stopped within the step) friction stays as it was, so that the
@@ -157,8 +173,8 @@ Vec3 ArticulatedFormulation::slide_direction(std::size_t c) const {
   return (status.slide_direction_W + since * status.slide_turn_W).normalized();
 }
 
-Vec3 ArticulatedFormulation::moving_point_acceleration_W(const Workspace& w, const Vec3& p_B,
-                                                         const Vec3& rate_B) const {
+Vec3 ContactSystem::moving_point_acceleration_W(const BodyMotion& w, const Vec3& p_B,
+                                                const Vec3& rate_B) const {
   // d/dt R (v_G + omega x p), with p moving over the body at p'_B:
   //   R (a_G + alpha x p + omega x (v_G + omega x p) + omega x p'_B),
   // from the spatial acceleration (alpha; a_O), whose classical value at the COM is
@@ -168,15 +184,15 @@ Vec3 ArticulatedFormulation::moving_point_acceleration_W(const Workspace& w, con
   const Vec3 v_P_B = w.velocity.tail<3>() + omega_B.cross(p_B);
   const Vec3 psi_B = w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p_B) +
                      omega_B.cross(v_P_B) + omega_B.cross(rate_B);
-  return w.R_WC * psi_B + model_.gravity_W;
+  return w.R_WB * psi_B + gravity_W_;
 }
 
-Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, ContactMode mode,
-                                                             ContactRows rows, const Vec3& slide_W,
-                                                             Eigen::Index count) const {
-  const PlaneContact& contact = model_.contacts[c];
-  const ContactNow& now = d_.contact_now[c];
-  const Mat3& R = d_.work[m_.slot_of_body[contact.body]].R_WC;
+Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode mode,
+                                                    ContactRows rows, const Vec3& slide_W,
+                                                    Eigen::Index count) const {
+  const PlaneContact& contact = contacts_[c];
+  const ContactNow& now = d_.now[c];
+  const Mat3& R = dynamics_.motion(contact.body).R_WB;
   const Vec3& n = contact.normal_W;
   const Vec3 zero = Vec3::Zero();
   const bool held_at_anchor = anchored(c);
@@ -240,9 +256,9 @@ Eigen::Index ArticulatedFormulation::append_contact_unknowns(std::size_t c, Cont
   return count;
 }
 
-Eigen::Index ArticulatedFormulation::gather_contact_unknowns(ContactRows rows) const {
+Eigen::Index ContactSystem::gather_contact_unknowns(ContactRows rows) const {
   Eigen::Index count = 0;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const ContactMode mode = s_.contacts[c].mode;
     const Vec3 slide = mode == ContactMode::Sliding && rows == ContactRows::Motion
                            ? slide_direction(c)
@@ -252,53 +268,41 @@ Eigen::Index ArticulatedFormulation::gather_contact_unknowns(ContactRows rows) c
   return count;
 }
 
-double ArticulatedFormulation::row_velocity(const ContactUnknown& row) const {
-  const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[row.contact].body]];
+double ContactSystem::row_velocity(const ContactUnknown& row) const {
+  const BodyMotion w = dynamics_.motion(contacts_[row.contact].body);
   const Vec3 omega_B = w.velocity.head<3>();
-  return row.linear_W.dot(w.R_WC * (w.velocity.tail<3>() + omega_B.cross(row.point_B))) +
-         row.angular_W.dot(w.R_WC * omega_B);
+  return row.linear_W.dot(w.R_WB * (w.velocity.tail<3>() + omega_B.cross(row.point_B))) +
+         row.angular_W.dot(w.R_WB * omega_B);
 }
 
-void ArticulatedFormulation::calc_contact_matrix(Eigen::Index count, double mode_time) const {
+void ContactSystem::calc_contact_matrix(Eigen::Index count) const {
   for (Eigen::Index j = 0; j < count; ++j) {
-    for (Workspace& w : d_.work) {
-      w.external.setZero();
-      w.qdd.setZero();
-    }
     const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
-    const std::size_t slot = m_.slot_of_body[model_.contacts[u.contact].body];
-    d_.work[slot].external += u.wrench_B;
-    // Only the bodies hung (through joints) from the same ground joint move: the others' rows
-    // respond with nothing, and their passes are skipped (three bodies racing down a ramp: a
-    // third of the work).
-    const std::size_t tree = m_.tree_root[slot];
-    solve(mode_time, true, tree);
+    const std::size_t body = contacts_[u.contact].body;
+    // Only the bodies that move with this one (hung through joints from the same ground joint)
+    // respond: the others' rows respond with nothing, and their passes are skipped (three
+    // bodies racing down a ramp: a third of the work).
+    dynamics_.respond_to_unit_wrench({body, u.wrench_B});
     for (Eigen::Index i = 0; i < count; ++i) {
       const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
-      const std::size_t row_slot = m_.slot_of_body[model_.contacts[row.contact].body];
-      if (m_.tree_root[row_slot] != tree) {
-        d_.contact_matrix(i, j) = 0.0;
+      const std::size_t row_body = contacts_[row.contact].body;
+      if (!dynamics_.moves_with(row_body, body)) {
+        d_.matrix(i, j) = 0.0;
         continue;
       }
-      const Workspace& w = d_.work[row_slot];
+      const BodyMotion w = dynamics_.motion(row_body);
       // The linear response of the row: no velocity terms in the impulsive passes.
       const Vec3 alpha_B = w.acceleration.head<3>();
-      d_.contact_matrix(i, j) =
-          row.linear_W.dot(w.R_WC * (w.acceleration.tail<3>() + alpha_B.cross(row.point_B))) +
-          row.angular_W.dot(w.R_WC * alpha_B);
+      d_.matrix(i, j) =
+          row.linear_W.dot(w.R_WB * (w.acceleration.tail<3>() + alpha_B.cross(row.point_B))) +
+          row.angular_W.dot(w.R_WB * alpha_B);
     }
   }
-  for (Workspace& w : d_.work) w.external.setZero();
 }
 
-void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
-  if (model_.contacts.empty()) {
-    solve(mode_time, false);
-    return;
-  }
+void ContactSystem::solve_forces() const {
   calc_contact_points();
-  for (Workspace& w : d_.work) w.applied = w.external;
-  solve(mode_time, false);
+  dynamics_.solve_under_loads();
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Motion);
   if (count == 0) return;
 
@@ -307,35 +311,34 @@ void ArticulatedFormulation::solve_with_contacts(double mode_time) const {
   // in the world).
   for (Eigen::Index i = 0; i < count; ++i) {
     const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
-    const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[row.contact].body]];
-    d_.contact_rhs(i) =
-        -row.linear_W.dot(moving_point_acceleration_W(w, row.point_B, row.point_rate_B)) -
-        row.angular_W.dot(w.R_WC * w.acceleration.head<3>());
+    const BodyMotion w = dynamics_.motion(contacts_[row.contact].body);
+    d_.rhs(i) = -row.linear_W.dot(moving_point_acceleration_W(w, row.point_B, row.point_rate_B)) -
+                row.angular_W.dot(w.R_WB * w.acceleration.head<3>());
   }
-  calc_contact_matrix(count, mode_time);
-  solve_contact_system(count, d_.contact_rhs);
-  set_contact_resultants(count, d_.contact_rhs);
-  for (Workspace& w : d_.work) w.external = w.applied;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    d_.work[m_.slot_of_body[model_.contacts[c].body]].external += d_.contact_now[c].wrench_B;
+  calc_contact_matrix(count);
+  solve_contact_system(count, d_.rhs);
+  set_contact_resultants(count, d_.rhs);
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    d_.wrenches[c] = {contacts_[c].body, d_.now[c].wrench_B};
   }
-  solve(mode_time, false);
+  dynamics_.solve_under_loads_and(
+      std::span<const BodyWrench>(d_.wrenches.data(), contacts_.size()));
 }
 
-void ArticulatedFormulation::solve_contact_system(Eigen::Index count, VecX& x) const {
-  solve_constraints_in_place(d_.contact_matrix, x, count, d_.solve_scratch);
+void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x) const {
+  solve_constraints_in_place(d_.matrix, x, count, d_.solve_scratch);
 }
 
-void ArticulatedFormulation::set_contact_resultants(Eigen::Index count, const VecX& x) const {
-  for (ContactNow& now : d_.contact_now) now.wrench_B.setZero();
+void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) const {
+  for (ContactNow& now : d_.now) now.wrench_B.setZero();
   for (Eigen::Index j = 0; j < count; ++j) {
     const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
-    d_.contact_now[u.contact].wrench_B += x(j) * u.wrench_B;
+    d_.now[u.contact].wrench_B += x(j) * u.wrench_B;
   }
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    ContactNow& now = d_.contact_now[c];
-    const Vec3& n = model_.contacts[c].normal_W;
-    const Mat3& R = d_.work[m_.slot_of_body[model_.contacts[c].body]].R_WC;
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    ContactNow& now = d_.now[c];
+    const Vec3& n = contacts_[c].normal_W;
+    const Mat3& R = dynamics_.motion(contacts_[c].body).R_WB;
     const Vec3 F_B = now.wrench_B.tail<3>();
     now.force_W = R * F_B;
     now.normal_force = now.force_W.dot(n);
@@ -344,115 +347,103 @@ void ArticulatedFormulation::set_contact_resultants(Eigen::Index count, const Ve
   }
 }
 
-void ArticulatedFormulation::respond_to_contact_impulses(Eigen::Index count, const VecX& impulses,
-                                                         double mode_time) const {
-  for (Workspace& w : d_.work) {
-    w.external.setZero();
-    w.qdd.setZero();
-  }
+void ContactSystem::respond_to_contact_impulses(Eigen::Index count, const VecX& impulses) const {
   for (Eigen::Index j = 0; j < count; ++j) {
     const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
-    d_.work[m_.slot_of_body[model_.contacts[u.contact].body]].external += impulses(j) * u.wrench_B;
+    d_.wrenches[static_cast<std::size_t>(j)] = {contacts_[u.contact].body,
+                                                impulses(j) * u.wrench_B};
   }
-  solve(mode_time, true);
+  dynamics_.respond_to_impulses(
+      std::span<const BodyWrench>(d_.wrenches.data(), static_cast<std::size_t>(count)));
 }
 
-void ArticulatedFormulation::apply_contact_impulses(Eigen::Index count, const VecX& impulses,
-                                                    double mode_time, VecX& y) const {
-  respond_to_contact_impulses(count, impulses, mode_time);
-  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
-    const TreeJoint& joint = m_.tree[k];
-    if (joint.nv > 0) y.segment(joint.v, joint.nv) += d_.work[k].qdd;
+void ContactSystem::apply_contact_impulses(Eigen::Index count, const VecX& impulses,
+                                           VecX& y) const {
+  respond_to_contact_impulses(count, impulses);
+  dynamics_.apply_speed_jumps(y);
+}
+
+void ContactSystem::write_powers(VecX& rates, Eigen::Index offset) const {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const BodyMotion w = dynamics_.motion(contacts_[c].body);
+    rates(offset + dynamics_.work_entry(c)) = d_.now[c].wrench_B.dot(w.velocity);
   }
 }
 
-void ArticulatedFormulation::write_contact_powers(VecX& rates, Eigen::Index offset) const {
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[c].body]];
-    rates(offset + m_.contact_entry(c)) = d_.contact_now[c].wrench_B.dot(w.velocity);
-  }
+void ContactSystem::add_work(std::size_t c, double work, VecX& y) const {
+  y(dynamics_.ledger_start() + dynamics_.work_entry(c)) += work;
 }
 
-void ArticulatedFormulation::solve_contacts_at(const VecX& y) const {
-  calc_kinematics(y, true);
-  accumulate_element_loads(y, s_.schedule_time, d_.rates, 0, nullptr);
-  solve_with_contacts(s_.schedule_time);
-}
-
-void ArticulatedFormulation::project_feature_positions(VecX& y) const {
+void ContactSystem::project_feature_positions(VecX& y) const {
   // The smallest move in the mass metric (the response to impulses along the rows) that puts the
   // normal points back on their planes, to first order (a face or an edge turns back flat as well
   // as moving), and a sticking polyhedron (a cone on its apex, a round body on a face) back on
-  // its anchor. A
-  // curved surface's single point moves the least too.
+  // its anchor. A curved surface's single point moves the least too.
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Position);
   for (Eigen::Index i = 0; i < count; ++i) {
     const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
-    const PlaneContact& contact = model_.contacts[row.contact];
+    const PlaneContact& contact = contacts_[row.contact];
     const ContactStatus& status = s_.contacts[row.contact];
-    const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
-    const Vec3 x_P = w.r_G_W + w.R_WC * row.point_B;
+    const BodyMotion w = dynamics_.motion(contact.body);
+    const Vec3 x_P = w.r_G_W + w.R_WB * row.point_B;
     if (row.anchor < 0) {
-      d_.contact_x(i) = -(x_P - contact.point_W).dot(contact.normal_W);
+      d_.x(i) = -(x_P - contact.point_W).dot(contact.normal_W);
     } else {
       // Off the anchor: the point's offset, and the small turn R_WB R_anchor^T as a vector.
-      const Eigen::AngleAxisd turn(w.R_WC * status.anchor_R_WB.transpose());
-      d_.contact_x(i) =
-          -row.linear_W.dot(x_P - status.anchor_W[static_cast<std::size_t>(row.anchor)]) -
-          row.angular_W.dot(turn.angle() * turn.axis());
+      const Eigen::AngleAxisd turn(w.R_WB * status.anchor_R_WB.transpose());
+      d_.x(i) = -row.linear_W.dot(x_P - status.anchor_W[static_cast<std::size_t>(row.anchor)]) -
+                row.angular_W.dot(turn.angle() * turn.axis());
     }
   }
-  calc_contact_matrix(count, s_.schedule_time);
-  solve_contact_system(count, d_.contact_x);
-  respond_to_contact_impulses(count, d_.contact_x, s_.schedule_time);
-  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
-    const TreeJoint& joint = m_.tree[k];
-    const auto& move = d_.work[k].qdd;
-    joint.kind->displace(joint, move, d_.work[k].R_WC, y);
-  }
+  calc_contact_matrix(count);
+  solve_contact_system(count, d_.x);
+  respond_to_contact_impulses(count, d_.x);
+  dynamics_.apply_displacement(y);
 }
 
-void ArticulatedFormulation::project(double t, VecX& y) const {
-  OdeSystem::project(t, y);
+void ContactSystem::project(double t, VecX& y) const {
+  dynamics_.normalise(t, y);
   const bool touching =
       std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (!touching) return;
   // A sphere's point, or a disk's, ring's or cylinder's rim point, is its support point: moving
-  // the body along the normal puts it back. A polyhedron, a cone, a side or a face has more.
+  // a free body along the normal puts it back. A polyhedron, a cone, a side or a face has more,
+  // and a body a joint holds moves only as its joints let it: the least move in the mass metric.
   bool features = false;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const ContactSurface::Kind kind = model_.contacts[c].surface.kind;
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    if (s_.contacts[c].mode == ContactMode::Apart) continue;
+    const ContactSurface::Kind kind = contacts_[c].surface.kind;
     const RoundPart part = s_.contacts[c].round_part;
     const bool rim_point =
         (kind == ContactSurface::Kind::Circle || kind == ContactSurface::Kind::Cylinder) &&
         is_end(part);
-    features |= kind != ContactSurface::Kind::Sphere && !rim_point &&
-                s_.contacts[c].mode != ContactMode::Apart;
+    features |= (kind != ContactSurface::Kind::Sphere && !rim_point) ||
+                !dynamics_.moves_freely(contacts_[c].body);
   }
   if (features) {
-    calc_kinematics(y, true);
+    dynamics_.calc_motion(y, true);
     calc_contact_points();
     project_feature_positions(y);
   } else {
-    // Positions: each touching body back onto its plane along the normal (its free joint's COM):
-    // one point's height is all a curved surface's contact constrains.
-    calc_kinematics(y, false);
-    for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    // Positions: each touching body back onto its plane along the normal (its COM): one point's
+    // height is all a curved surface's contact constrains.
+    dynamics_.calc_motion(y, false);
+    for (std::size_t c = 0; c < contacts_.size(); ++c) {
       if (s_.contacts[c].mode == ContactMode::Apart) continue;
-      const PlaneContact& contact = model_.contacts[c];
-      const Workspace& w = d_.work[m_.slot_of_body[contact.body]];
+      const PlaneContact& contact = contacts_[c];
+      const BodyMotion w = dynamics_.motion(contact.body);
       const RoundPart part = s_.contacts[c].round_part;
       double height = 0.0;
       if (part == RoundPart::None) {
-        height = support_point(contact, w.r_G_W, w.R_WC).height;
+        height = support_point(contact, w.r_G_W, w.R_WB).height;
       } else {
         // The rim point it touches at (not the other end's, which may be as low).
-        const Vec3 n_B = w.R_WC.transpose() * contact.normal_W;
+        const Vec3 n_B = w.R_WB.transpose() * contact.normal_W;
         const Vec3 u = rim_direction(n_B, s_.contacts[c].rim_direction_B);
         height = height_above_plane(c, rim_point(round_ends(contact.surface), end_of(part), u));
       }
-      y.segment<3>(m_.tree[m_.slot_of_body[contact.body]].q) -= height * contact.normal_W;
+      dynamics_.translate(contact.body, -height * contact.normal_W, y);
     }
   }
   // Velocities: the least kinetic-energy change (impulses at the contacts) that zeroes the
@@ -460,20 +451,20 @@ void ArticulatedFormulation::project(double t, VecX& y) const {
   // contact's ledger entry like an impact's: after a step it is the drift's, ~rtol; after an
   // event it can be a point that the mode now holds coming down onto the plane (a cone landing
   // on its apex, whose rim then comes down too: held on the side, the rim's approach is stopped).
-  calc_kinematics(y, true);
+  dynamics_.calc_motion(y, true);
   calc_contact_points();
   const Eigen::Index count = gather_contact_unknowns(ContactRows::Projection);
   for (Eigen::Index i = 0; i < count; ++i) {
-    d_.contact_x(i) = -row_velocity(d_.unknowns[static_cast<std::size_t>(i)]);
+    d_.x(i) = -row_velocity(d_.unknowns[static_cast<std::size_t>(i)]);
   }
-  d_.contact_rhs.head(count) = d_.contact_x.head(count);  // minus each row's velocity before
-  calc_contact_matrix(count, s_.schedule_time);
-  solve_contact_system(count, d_.contact_x);
-  apply_contact_impulses(count, d_.contact_x, s_.schedule_time, y);
+  d_.rhs.head(count) = d_.x.head(count);  // minus each row's velocity before
+  calc_contact_matrix(count);
+  solve_contact_system(count, d_.x);
+  apply_contact_impulses(count, d_.x, y);
   // An impulse P on a row whose velocity goes from v to 0 does P v / 2 of work.
   for (Eigen::Index i = 0; i < count; ++i) {
     const std::size_t c = d_.unknowns[static_cast<std::size_t>(i)].contact;
-    y(m_.ledger + m_.contact_entry(c)) -= 0.5 * d_.contact_x(i) * d_.contact_rhs(i);
+    add_work(c, -0.5 * d_.x(i) * d_.rhs(i), y);
   }
 }
 

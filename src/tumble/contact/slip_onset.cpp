@@ -18,7 +18,7 @@
 #include <array>
 #include <cmath>
 
-#include "tumble/multibody/articulated_formulation.hpp"
+#include "tumble/contact/contact_system.hpp"
 
 namespace tumble {
 
@@ -32,9 +32,9 @@ constexpr double kOnsetTurnStep = 1e-5;
 
 }  // namespace
 
-bool ArticulatedFormulation::start_sliding(std::size_t c, double t, const VecX& y) {
+bool ContactSystem::start_sliding(std::size_t c, double t, const VecX& y) {
   ContactStatus& status = s_.contacts[c];
-  const Vec3 d0 = pushed_direction(c);  // from the rolling forces in d_.contact_now
+  const Vec3 d0 = pushed_direction(c);  // from the rolling forces in d_.now
   status.mode = ContactMode::Sliding;
   status.slide_direction_W = d0;
   status.slide_turn_W.setZero();
@@ -43,7 +43,7 @@ bool ArticulatedFormulation::start_sliding(std::size_t c, double t, const VecX& 
   status.slip_left_near = false;
   status.slip_stop_armed = false;
   const Vec3 a = slip_acceleration_at(c, y, d0);
-  if (model_.contacts[c].friction == 0.0) return true;  // nothing can drive it back
+  if (contacts_[c].friction == 0.0) return true;  // nothing can drive it back
   // Accelerations below this are round-off of zero (slip_zero over the time scale).
   const double zero = status.slip_zero / status.time_scale;
   bool grows = a.dot(d0) > zero;
@@ -51,18 +51,18 @@ bool ArticulatedFormulation::start_sliding(std::size_t c, double t, const VecX& 
     // At the cone's edge: the jerk decides, and the direction turns as it needs.
     grows = turn_starting_slip(c, t, y);
   }
-  solve_contacts_at(y);
+  dynamics_.calc_accelerations(y);
   return grows;
 }
 
-bool ArticulatedFormulation::turn_starting_slip(std::size_t c, double t, const VecX& y) {
+bool ContactSystem::turn_starting_slip(std::size_t c, double t, const VecX& y) {
   ContactStatus& status = s_.contacts[c];
   const Vec3 d0 = status.slide_direction_W;
-  const Vec3& n = model_.contacts[c].normal_W;
+  const Vec3& n = contacts_[c].normal_W;
 
   // The jerk with the direction held, along the motion the derivative gives.
   const double dt = kOnsetTimeStep * status.time_scale;
-  derivative(t, y, d_.onset_dydt);
+  dynamics_.calc_rates(t, y, d_.onset_dydt);
   d_.onset_y = y + dt * d_.onset_dydt;
   const Vec3 after = slip_acceleration_at(c, d_.onset_y, d0);
   d_.onset_y = y - dt * d_.onset_dydt;
@@ -72,7 +72,7 @@ bool ArticulatedFormulation::turn_starting_slip(std::size_t c, double t, const V
   // Slip space: the plane's tangents, and the normal too where the contact has a spin radius
   // (slip_W's spin component). Its basis: d0, then the directions d may turn in.
   std::array<Vec3, 3> basis = {d0, Vec3::Zero(), Vec3::Zero()};
-  const bool with_spin = d_.contact_now[c].spin_radius > 0.0;
+  const bool with_spin = d_.now[c].spin_radius > 0.0;
   int turns = 1;
   if (with_spin) {
     plane_basis(d0, basis[1], basis[2]);
@@ -104,10 +104,10 @@ bool ArticulatedFormulation::turn_starting_slip(std::size_t c, double t, const V
   return true;
 }
 
-void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, const VecX& y) {
+void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& y) {
   ContactStatus& status = s_.contacts[c];
   const ContactStatus sliding = status;
-  const ContactNow& now = d_.contact_now[c];
+  const ContactNow& now = d_.now[c];
   std::array<Vec3, 4> points_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   std::size_t count = 0;
   for (int k = 0; k < now.normal_point_count; ++k) {
@@ -118,7 +118,7 @@ void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, con
     points_B[count++] = other;
   }
   set_apart(c);
-  solve_contacts_at(y);
+  dynamics_.calc_accelerations(y);
   // A zero of what the normal acceleration is measured against (gravity's scale).
   const double tolerance = status.slip_zero / status.time_scale;
   bool leaves = true;
@@ -133,25 +133,24 @@ void ArticulatedFormulation::lift_off_or_hold_slide(std::size_t c, double t, con
   // tangential impulse, not built): it slides along the pushed direction, held.
   status = sliding;
   status.slide_turn_W.setZero();
-  solve_contacts_at(y);
+  dynamics_.calc_accelerations(y);
   note_contact(t, c, "slides: the friction sticking needs leaves the cone (inconsistent)");
 }
 
-Vec3 ArticulatedFormulation::slip_acceleration_at(std::size_t c, const VecX& y,
-                                                  const Vec3& slide_W) {
+Vec3 ContactSystem::slip_acceleration_at(std::size_t c, const VecX& y, const Vec3& slide_W) {
   s_.contacts[c].slide_direction_W = slide_W;
-  solve_contacts_at(y);
+  dynamics_.calc_accelerations(y);
   return slip_acceleration(c);
 }
 
-Vec3 ArticulatedFormulation::slip_acceleration(std::size_t c) const {
+Vec3 ContactSystem::slip_acceleration(std::size_t c) const {
   // slip_W = the tangential part of O's velocity + rho (omega . n) n, with O moving over the
   // body at its rate and n fixed in the world.
-  const ContactNow& now = d_.contact_now[c];
-  const Workspace& w = d_.work[m_.slot_of_body[model_.contacts[c].body]];
-  const Vec3& n = model_.contacts[c].normal_W;
+  const ContactNow& now = d_.now[c];
+  const BodyMotion w = dynamics_.motion(contacts_[c].body);
+  const Vec3& n = contacts_[c].normal_W;
   const Vec3 a_O_W = moving_point_acceleration_W(w, now.reference_B, now.reference_rate_B);
-  const double spin_rate = n.dot(w.R_WC * w.acceleration.head<3>());
+  const double spin_rate = n.dot(w.R_WB * w.acceleration.head<3>());
   return a_O_W - n * n.dot(a_O_W) + now.spin_radius * spin_rate * n;
 }
 

@@ -1,0 +1,75 @@
+#pragma once
+// A run's scratch for its contacts (part of what MuJoCo calls mjData): the points, forces and
+// constraint rows found at the state last evaluated, and the small dense solve's matrix, sized
+// once for the model's contacts so that nothing is allocated in a step. It holds nothing a run
+// needs to go on (that is y and the ContactState): any evaluation overwrites it. One per run.
+#include <array>
+#include <span>
+#include <vector>
+
+#include "tumble/contact/contact_dynamics.hpp"
+#include "tumble/contact/plane_contact.hpp"
+#include "tumble/math/constraint_solve.hpp"
+
+namespace tumble {
+
+// What calc_contact_points and solve_forces found for a contact at the current y. The reference
+// point O is where slip is taken and friction acts: a curved surface's contact point, a
+// polyhedron's feature centroid (apart: its lowest vertex).
+struct ContactNow {
+  // Touchdown: the curved surface's contact point, or the lowest polyhedron vertex not in the
+  // feature, its height and its velocity along the normal.
+  SupportPoint support;
+  double support_normal_speed = 0.0;
+  Vec3 n_B = Vec3::UnitZ();
+  Vec3 reference_B = Vec3::Zero();       // O from the COM, body axes
+  Vec3 reference_rate_B = Vec3::Zero();  // O's motion over the body (curved surfaces)
+  // The points whose normal motion the contact constrains (the vertex, the edge's ends, three
+  // of the face's corners; curved: O).
+  std::array<Vec3, 3> normal_points_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  // Their motion over the body (curved surfaces).
+  std::array<Vec3, 3> normal_point_rates_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  int normal_point_count = 0;
+  double spin_radius = 0.0;        // torsional friction radius of the feature (0 at a point)
+  Vec3 velocity_W = Vec3::Zero();  // of the body's material point at O
+  // Slip: O's tangential velocity, and the spin about the normal times the feature's spin
+  // radius as the component along the normal (a polyhedron's face or edge; 0 otherwise).
+  Vec3 slip_W = Vec3::Zero();
+  Vec6 wrench_B = Vec6::Zero();          // the contact's (moment about the COM; force), body axes
+  Vec3 force_W = Vec3::Zero();           // its force
+  double normal_force = 0.0;             // force_W's component along the plane's normal
+  Vec3 friction_W = Vec3::Zero();        // force_W's tangential part
+  Vec3 moment_about_O_B = Vec3::Zero();  // its moment about O, body axes
+};
+
+// One unknown of the contact forces and the constraint row that goes with it: the row is
+// linear_W . (velocity or acceleration of the material point at point_B) + angular_W . omega.
+struct ContactUnknown {
+  std::size_t contact = 0;
+  Vec3 point_B = Vec3::Zero();
+  Vec3 point_rate_B = Vec3::Zero();  // the point's motion over the body
+  Vec3 linear_W = Vec3::Zero();
+  Vec3 angular_W = Vec3::Zero();
+  bool normal = false;  // a row of the normal motion (restitution applies at impacts)
+  int anchor = -1;      // a sticking polyhedron's row: the ContactStatus::anchor_W it holds
+  Vec6 wrench_B = Vec6::Zero();  // per unit of the unknown: (moment about the COM; force)
+};
+
+struct ContactData {
+  // Sized for these contacts and a state of `dimension` numbers.
+  ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension);
+
+  std::vector<ContactNow> now;           // per contact
+  std::vector<ContactUnknown> unknowns;  // sized to 6 per contact
+  MatX matrix;                           // the rows' response to the unknowns
+  VecX rhs, x;
+  ConstraintSolveScratch solve_scratch;  // for rows that joints or other contacts make redundant
+  std::vector<BodyWrench> wrenches;      // sized to 6 per contact: forces or impulses on bodies
+  std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
+  VecX impact_y;                         // impact()'s
+  VecX onset_y, onset_dydt;              // turn_starting_slip()'s
+  // The time of the state being evaluated: a starting slip's direction turns with it.
+  double time_now = 0.0;
+};
+
+}  // namespace tumble

@@ -1,0 +1,230 @@
+#pragma once
+// Contact with planes as a subsystem of its own (docs/design.md, "Contact"): a hybrid system in
+// which each contact is apart, sliding or rolling (sticking), and only located events change
+// that. In a mode the contact's force is whatever keeps its constraints' accelerations zero
+// (sliding: the normal one, with Coulomb's friction mu N against the slip; rolling: all three),
+// found from the bodies' response to unit wrenches; project() puts positions and velocities back
+// on the constraints after every step; touchdowns are impacts (restitution and friction on the
+// impulse).
+//
+// It talks to the dynamics only through ContactDynamics (contact_dynamics.hpp): poses, twists,
+// accelerations, responses to wrenches and impulses. The formulation that owns it forwards its
+// contact events, projection, step limit and start checks here, and calls solve_forces() in its
+// right-hand side between gathering the loads and the last solve.
+//
+// Model, data, state: the contacts (PlaneContact) are the model's, constant and shared; the
+// scratch is this run's ContactData; the modes and records are the run's ContactState (in its
+// HybridState), which a checkpoint copies. The code is in contact_forces.cpp (forces, impulses,
+// projection), contact_modes.cpp (events, modes, impacts), slip_onset.cpp and
+// contact_step_limit.cpp.
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "tumble/body/rigid_body.hpp"
+#include "tumble/contact/contact_data.hpp"
+#include "tumble/contact/contact_dynamics.hpp"
+#include "tumble/contact/contact_status.hpp"
+#include "tumble/contact/plane_contact.hpp"
+
+namespace tumble {
+
+class ContactSystem {
+ public:
+  // The contacts of `bodies` (gravity_W m/s^2), moved by `dynamics`, whose state y has
+  // `dimension` numbers; its modes and records are kept in `state`. Both references must
+  // outlive this object.
+  ContactSystem(std::span<const PlaneContact> contacts, std::span<const RigidBody> bodies,
+                const Vec3& gravity_W, const ContactDynamics& dynamics, ContactState& state,
+                Eigen::Index dimension);
+
+  bool empty() const { return contacts_.empty(); }
+  std::size_t size() const { return contacts_.size(); }
+  // What was found for contact c at the state last evaluated, and its status.
+  const ContactNow& now(std::size_t c) const { return d_.now[c]; }
+  const ContactStatus& status(std::size_t c) const { return s_.contacts[c]; }
+
+  // The time of the state about to be evaluated (a starting slip's direction turns with it).
+  void set_time(double t) const { d_.time_now = t; }
+
+  // After the dynamics' calc_motion (with velocities) and its loads: the contacts' forces in
+  // their current modes, and the dynamics' accelerations under the loads and those forces
+  // (solve_under_loads_and).
+  void solve_forces() const;
+  // Each contact's power (its wrench on its body's twist, W) into rates at offset + its work
+  // entry, after solve_forces.
+  void write_powers(VecX& rates, Eigen::Index offset) const;
+
+  // Why the run cannot start from y0: a contact inside its plane, or touching it and moving into
+  // it.
+  struct StartProblem {
+    std::size_t contact = 0;
+    std::string why;
+  };
+  std::optional<StartProblem> start_problem(const VecX& y0) const;
+  // The modes at the start: touching contacts roll, stick or slide; the others are apart.
+  void begin(double t0, const VecX& y);
+  // After a breakpoint (a load switched, an impulse): the touching contacts' modes again.
+  void reclassify(double t, VecX& y);
+
+  // Three event functions per contact, into g from 3 c on: touchdown (a contact point, or a
+  // polyhedron's vertex not yet touching, reaches the plane), support (the normal force reaches
+  // 0: lift-off; or a polyhedron's centre of pressure reaches its feature's side: it tips), and
+  // stick-slip (sliding: the slip stops; rolling or sticking: the friction it needs reaches the
+  // cone's edge).
+  void event_functions(double t, const VecX& y, VecX& g) const;
+  bool refresh_event_functions(double t, const VecX& y);
+  void on_event(std::size_t event_index, double t, VecX& y);
+  // The dynamics' own projection (normalise), then each touching contact back on its plane and
+  // its velocity on its mode's constraints (no normal velocity; rolling: no slip).
+  void project(double t, VecX& y) const;
+  // While a contact is apart: no step so long that a point of its surface could dip through the
+  // plane and back unseen (landing_bound.hpp).
+  double step_limit(double t, const VecX& y) const;
+
+ private:
+  // Contact points, reference points and their velocities, after the dynamics' calc_motion.
+  void calc_contact_points() const;
+  // calc_contact_points for a touching round body: its part's points, and what may land next.
+  void calc_round_contact_points(std::size_t contact, const Vec3& omega_B) const;
+  // Which constraints a contact's unknowns hold:
+  //  - Motion: its mode's (sliding: the normal motion, with Coulomb's friction riding on each
+  //    normal force; rolling or sticking: all its motion the feature allows);
+  //  - Projection: as Motion, with no friction on sliding's normal impulses;
+  //  - Position: the normal motion, with normal forces; a sticking polyhedron: its Projection
+  //    rows (held at its anchor).
+  enum class ContactRows { Motion, Projection, Position };
+  // The unknowns of every touching contact (into d_.unknowns); returns their count.
+  Eigen::Index gather_contact_unknowns(ContactRows rows) const;
+  // Appends contact c's unknowns in `mode` at d_.unknowns[count...], with sliding friction along
+  // `slide_W` (Motion); returns the new count.
+  Eigen::Index append_contact_unknowns(std::size_t c, ContactMode mode, ContactRows rows,
+                                       const Vec3& slide_W, Eigen::Index count) const;
+  // The constraint matrix A (rows: the unknowns' rows, columns: their forces) from the responses
+  // to unit wrenches.
+  void calc_contact_matrix(Eigen::Index count) const;
+  // Solves A x = b for the leading count rows, in place (b becomes x); throws
+  // InconsistentConstraints if the rows contradict each other.
+  void solve_contact_system(Eigen::Index count, VecX& x) const;
+  // Each contact's resultant (d_.now's wrench, force, normal force, friction, moment about O)
+  // from the unknowns' values x.
+  void set_contact_resultants(Eigen::Index count, const VecX& x) const;
+  // A row's value on the current velocities (after calc_motion).
+  double row_velocity(const ContactUnknown& row) const;
+  // The dynamics' response (speed jumps) to the impulses x_j along the unknowns j.
+  void respond_to_contact_impulses(Eigen::Index count, const VecX& impulses) const;
+  // Jump the speeds by the impulses x_j along the unknowns j.
+  void apply_contact_impulses(Eigen::Index count, const VecX& impulses, VecX& y) const;
+  // project()'s position step when a polyhedron, a round body or a held body touches (after
+  // calc_contact_points).
+  void project_feature_positions(VecX& y) const;
+  // The current slip direction of a sliding contact (at d_.time_now).
+  Vec3 slide_direction(std::size_t contact) const;
+  // The slip direction of a contact that must slide with no slip yet: the way it is pushed,
+  // against the friction sticking needs (from d_.now).
+  Vec3 pushed_direction(std::size_t contact) const;
+  // Contact c, with no slip, starts to slide along pushed_direction (after a rolling solve at y;
+  // slip_onset.cpp). True if the slip can grow that way: its acceleration along it is positive
+  // or, where the needed friction has just reached the cone's edge (no acceleration), its jerk
+  // is, with the direction turning as it needs. False where friction would drive the slip back
+  // (Painleve's case: friction high enough that it presses the contact on).
+  bool start_sliding(std::size_t contact, double t, const VecX& y);
+  // Where the rolling contact c cannot start sliding: it lifts off if, with no force, its points
+  // (a round body's other end too, if it is at the plane) leave the plane; if not, no mode is
+  // consistent, and it slides along the pushed direction.
+  void lift_off_or_hold_slide(std::size_t contact, double t, const VecX& y);
+  // At the cone's edge: the rate the starting slip's direction turns at (into slide_turn_W);
+  // false if no turn lets the slip grow.
+  bool turn_starting_slip(std::size_t contact, double t, const VecX& y);
+  // The slip's rate of change (slip_W's) after a solve, and at y sliding along slide_W.
+  Vec3 slip_acceleration(std::size_t contact) const;
+  Vec3 slip_acceleration_at(std::size_t contact, const VecX& y, const Vec3& slide_W);
+  // The acceleration (world axes, gravity's included) of the point p_B that moves over the body
+  // at rate_B, after a solve: d/dt of its velocity R (v_G + omega x p).
+  Vec3 moving_point_acceleration_W(const BodyMotion& w, const Vec3& p_B, const Vec3& rate_B) const;
+  // N times the CoP's least distance inside a polyhedron's feature (N itself for a point), and
+  // the side of the feature where it is least; from d_.now.
+  double support_margin_of(std::size_t contact, int& side) const;
+  // The friction the contact carries as a slip-space vector: the tangential force, and the
+  // moment about the normal over the spin radius along the normal. Its length is what the
+  // cone bounds by mu N; from d_.now.
+  Vec3 friction_demand(std::size_t contact) const;
+  // The touching vertices of a polyhedron contact into d_.touching, after calc_motion: those
+  // within touching_height of the plane, and those within `within` not moving away from it (at
+  // least the lowest).
+  void find_touching_vertices(std::size_t contact, double within) const;
+  // The mode a touching contact takes now (slip stopped, touchdown settled, start): rolling or
+  // sticking if the friction that needs fits in the cone, else sliding the way the body is
+  // pushed; a polyhedron tips onto a smaller feature while its CoP would leave the feature.
+  // Notes the mode if it changed (or, with always_note, in any case).
+  void classify_contact(std::size_t contact, double t, VecX& y, bool always_note = false);
+  // Tries contact c on its current feature: sticking if the friction fits, else sliding; true
+  // if the forces are consistent (N > 0, the CoP in the feature, no touching vertex left out
+  // going into the plane). Touching vertices: d_.touching.
+  // A round body's candidates also name the points they leave out (left_out_B).
+  bool settle_on_feature(std::size_t contact, double t, VecX& y,
+                         std::span<const Vec3> left_out_B = {});
+  // classify_contact's candidates for contact c (settle_on_feature on the feature, its edges,
+  // its vertices; settle_round); true if one holds.
+  bool settle_on_candidates(std::size_t contact, double t, VecX& y);
+  // classify_contact for a round body: its touching part, then (if that is inconsistent) the
+  // parts it may tip onto: the side onto either end's rim point, a face onto the rim point where
+  // its CoP left. True if one holds.
+  bool settle_round(std::size_t contact, double t, VecX& y);
+  // A round body on one end's rim point (a cone's apex): the other end's lowest rim point, into
+  // other_B; false on no end's rim point, or for a disk or ring, whose ends are one rim (after
+  // calc_motion).
+  bool round_other_end_B(std::size_t contact, Vec3& other_B) const;
+  // A round body on its side or a face tips onto the end of the side (support margin's side 0:
+  // end A's rim point, 1: end B's), or the face's rim point where the CoP leaves it (after a
+  // solve).
+  void tip_round(std::size_t contact, int side);
+  void set_apart(std::size_t contact);
+  // Whether contact c holds a rim point near flat, where its direction is kept up with after
+  // each step.
+  bool rim_direction_kept_up(std::size_t contact) const;
+  // The acceleration along the plane's normal of the body's material point p_B (after a solve).
+  double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
+  // The height above the plane of the body's point p_B, and its material velocity along the
+  // plane's normal (after calc_motion).
+  double height_above_plane(std::size_t contact, const Vec3& p_B) const;
+  double normal_speed(std::size_t contact, const Vec3& p_B) const;
+  // Whether a point at this height (within the landing height) moving at this normal speed lands
+  // with the one that touches down.
+  bool lands_with(std::size_t contact, double height, double normal_speed) const;
+  // What the touchdown event sees of a point at this height moving at this normal speed.
+  double watched_height(std::size_t contact, double height, double normal_speed) const;
+  // Apart: the touchdown event's value, the least watched height over the points that may land
+  // first, and the point that sets it (after calc_contact_points).
+  double landing_watch(std::size_t contact, Vec3& landing_B) const;
+  // A polyhedron that starts sticking: its anchor where it is now (after calc_contact_points).
+  void anchor_contact(std::size_t contact);
+  // Whether contact c, sticking, is held at an anchor: a polyhedron, a cone on its apex, a round
+  // body on a face (the parts fixed in the body); rolling parts move over the body and are not.
+  bool anchored(std::size_t contact) const;
+  // The part of a round body that touches (into its status, after calc_motion): a face if
+  // its whole rim is within `within` of the plane, else the side if both ends' lowest rim points
+  // are, else the end that is (at least the lower). A point counts if it lands with the touchdown
+  // (lands_with: within `within` and not moving away, or at the plane and not bouncing off);
+  // with `resting`, only if not moving away.
+  void find_touching_round_part(std::size_t contact, double within, bool resting);
+  void impact(std::size_t contact, double t, VecX& y);
+  // After a settled landing at `speed`: throws std::runtime_error where such landings have
+  // come kCascadeLandings in a row, each going apart at once (no consistent mode).
+  void check_landing_cascade(std::size_t contact, double t, double speed);
+  void note_contact(double t, std::size_t contact, std::string what);
+  // The work J done on contact c's body at an instant (an impact, a projection), into y's ledger.
+  void add_work(std::size_t contact, double work, VecX& y) const;
+
+  std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run
+  std::span<const RigidBody> bodies_;
+  Vec3 gravity_W_;
+  const ContactDynamics& dynamics_;
+  // This run's scratch, written by const evaluations: a run serves one thread at a time.
+  std::unique_ptr<ContactData> data_;
+  ContactData& d_;  // *data_
+  ContactState& s_;
+};
+
+}  // namespace tumble

@@ -10,9 +10,18 @@
 
 namespace tumble {
 
-BodyMotion ArticulatedFormulation::ContactBodies::motion(std::size_t body) const {
-  const Workspace& w = f_.d_.work[f_.m_.slot_of_body[body]];
-  return {w.R_WC, w.r_G_W, w.velocity, w.acceleration};
+ArticulatedFormulation::ContactBodies::ContactBodies(const ArticulatedFormulation& f) : f_(f) {
+  // A body's motion is its inbound joint's workspace (sized once: the addresses hold); the bodies
+  // hung from the same ground joint move together.
+  const std::size_t bodies = f_.m_.body_count();
+  motion_sources_.resize(bodies);
+  motion_group_.resize(bodies);
+  for (std::size_t body = 0; body < bodies; ++body) {
+    const std::size_t slot = f_.m_.slot_of_body[body];
+    const Workspace& w = f_.d_.work[slot];
+    motion_sources_[body] = {&w.R_WC, &w.r_G_W, &w.velocity, &w.acceleration};
+    motion_group_[body] = f_.m_.tree_root[slot];
+  }
 }
 
 const BodyState& ArticulatedFormulation::ContactBodies::state(std::size_t body) const {
@@ -55,11 +64,6 @@ void ArticulatedFormulation::ContactBodies::respond_to_unit_wrench(const BodyWre
   const std::size_t slot = f_.m_.slot_of_body[unit.body];
   f_.d_.work[slot].external += unit.wrench_B;
   f_.solve(f_.s_.schedule_time, true, f_.m_.tree_root[slot]);
-}
-
-bool ArticulatedFormulation::ContactBodies::moves_with(std::size_t body, std::size_t other) const {
-  const ArticulatedModel& m = f_.m_;
-  return m.tree_root[m.slot_of_body[body]] == m.tree_root[m.slot_of_body[other]];
 }
 
 void ArticulatedFormulation::ContactBodies::respond_to_impulses(

@@ -123,8 +123,7 @@ class ArticulatedFormulation final : public Formulation {
   // are the impulsive passes; a body moves with the others hung from the same ground joint.
   class ContactBodies final : public ContactDynamics {
    public:
-    explicit ContactBodies(const ArticulatedFormulation& f) : f_(f) {}
-    BodyMotion motion(std::size_t body) const override;
+    explicit ContactBodies(const ArticulatedFormulation& f);
     const BodyState& state(std::size_t body) const override;
     void calc_motion(const VecX& y, bool with_velocities) const override;
     void calc_accelerations(const VecX& y) const override;
@@ -132,7 +131,6 @@ class ArticulatedFormulation final : public Formulation {
     void solve_under_loads() const override;
     void solve_under_loads_and(std::span<const BodyWrench> wrenches) const override;
     void respond_to_unit_wrench(const BodyWrench& unit) const override;
-    bool moves_with(std::size_t body, std::size_t other) const override;
     void respond_to_impulses(std::span<const BodyWrench> impulses) const override;
     void apply_speed_jumps(VecX& y) const override;
     void apply_displacement(VecX& y) const override;

@@ -118,6 +118,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"box_slides_to_rest", 0.5, "a box sliding on its face"},
                       Case{"cubli", 0.0005, "before the lock at 1 ms"},
                       Case{"cubli", 0.7, "after the lock"},
+                      Case{"cubli_falls_back", 0.3, "a held box in flight, before it lands"},
+                      Case{"cubli_falls_back", 0.55, "between its first two bounces"},
                       Case{"rolling_coin", 1.0, "a coin rolling on its rim"}),
     [](const ::testing::TestParamInfo<Case>& param) {
       return std::string(param.param.example) + "_" + std::to_string(param.index);

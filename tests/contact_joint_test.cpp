@@ -8,7 +8,14 @@
 //    (the axle's travel) and phi (the rod's angle) are
 //        (M + I/R^2 + m) x'' + m l phi'' = 0,   (I_p + m l^2) phi'' + m l x'' + m g l phi = 0,
 //    (the rolling adds I/R^2 to the cylinder's mass), so the rod swings at
-//        omega^2 = m g l / (I_p + m l^2 - (m l)^2 / (M + I/R^2 + m)).
+//        omega^2 = m g l / (I_p + m l^2 - (m l)^2 / (M + I/R^2 + m));
+//  - the chapter's Cubli (equations.md, 6) started on the ground: its frame (a box with the four
+//    rods' inertia) lies on its face, hinged at the edge through O, with the wheel spinning at
+//    w0 below w0_crit. The brake hands the frame Omega = m R^2 w0 / I_total about O, it rises to
+//    where (M + m) g (L/sqrt(2)) (sin phi_max - sin 45 deg) = I_total Omega^2 / 2, falls back and
+//    lands on its face at t_lock + 2 T, T = the integral of dphi / phi' from 45 deg to phi_max,
+//    at Omega again (energy); it rebounds at e Omega, and with e = 0 lies still on its face with
+//    the plane pushing (M + m) g / 2 at the far edge (moments about O).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "scenario_run.hpp"
+#include "tumble/math/types.hpp"
 
 namespace tumble {
 namespace {
@@ -122,6 +130,119 @@ simulate: {{duration: 6, integrator: dop853, rtol: 1e-11, atol: 1e-14, output_ev
   const double period = (up.back() - up.front()) / static_cast<double>(up.size() - 1);
   // The amplitude's own correction to the period is a^2 / 16 = 6e-8 of it.
   EXPECT_NEAR(period, 2 * M_PI / omega, 1e-6 * period);
+}
+
+// The Cubli's frame on the ground: a box on a hinge, on a plane (a held polyhedron).
+std::string cubli_on_the_ground(double w0_fraction, double e) {
+  return fmt::format(R"(tumble: 1
+parameters:
+  M: 0.8
+  m: 0.3
+  L: 0.15
+  w: 0.02
+  R: 0.06
+  g: {}
+  I_total: M*L^2/3 + (M + m)*L^2/2 + m*R^2
+  w0_crit: sqrt((sqrt(2) - 1)*(M + m)*g*L*I_total)/(m*R^2)
+  w0: {}*w0_crit
+gravity: [0, 0, -g]
+bodies:
+  frame:
+    shape: box
+    size: [L, w, L]
+    mass: M
+    inertia: [M*L^2/6, M*L^2/3, M*L^2/6]
+    position: [L/2, 0, L/2]
+  wheel:
+    shape: ring
+    radius: R
+    mass: m
+    position: [L/2, 0, L/2]
+    orientation: {{axis: [1, 0, 0], angle: 90 deg}}
+    angular_velocity: [0, -w0, 0]
+joints:
+  corner: {{type: hinge, body: frame, at: [0, 0, 0], axis: [0, 1, 0]}}
+  axle: {{type: hinge, bodies: [frame, wheel], at: [L/2, 0, L/2], axis: [0, 1, 0],
+          lock: {{at: 0.001}}}}
+contacts:
+  - {{name: floor, type: plane, body: frame, plane: {{point: [0, 0, 0], normal: [0, 0, 1]}},
+     friction: 0.5, restitution: {}}}
+simulate: {{duration: 1.2, integrator: dop853, rtol: 1e-11, atol: 1e-14, output_every: 0.001}}
+)",
+                     kG, w0_fraction, e);
+}
+
+TEST(ContactOnAJointedBody, TheCubliStartedOnTheGroundFallsBackAndLandsOnItsFace) {
+  const double M = 0.8, m = 0.3, L = 0.15, R = 0.06, t_lock = 0.001;
+  const double I_total = M * L * L / 3 + (M + m) * L * L / 2 + m * R * R;
+  const double w0_crit = std::sqrt((std::sqrt(2.0) - 1) * (M + m) * kG * L * I_total) / (m * R * R);
+  const double w0 = 0.9 * w0_crit;
+  const double Omega = m * R * R * w0 / I_total;
+  // The centre's angle phi about O (45 deg on the ground): phi'^2 = Omega^2 - (2 (M + m) g d /
+  // I_total) (sin phi - sin 45 deg), d = L/sqrt(2) from O to the centre.
+  const double d = L / std::sqrt(2.0), phi0 = M_PI / 4;
+  const double k = 2 * (M + m) * kG * d / I_total;
+  const double phi_max = std::asin(std::sin(phi0) + Omega * Omega / k);
+  // The time to rise, with phi = phi_max - s^2 (the integrand 2 s / phi' stays finite), by
+  // Simpson's rule: its error at 4000 intervals is far below the 1e-9 asked.
+  const auto rate = [&](double phi) {
+    return std::sqrt(std::max(0.0, Omega * Omega - k * (std::sin(phi) - std::sin(phi0))));
+  };
+  const double s_end = std::sqrt(phi_max - phi0);
+  const int n = 4000;
+  const auto integrand = [&](double s) {
+    if (s == 0.0) return 2.0 / std::sqrt(k * std::cos(phi_max));  // the limit of 2 s / phi'
+    return 2.0 * s / rate(phi_max - s * s);
+  };
+  double rise = integrand(0.0) + integrand(s_end);
+  for (int i = 1; i < n; ++i) rise += (i % 2 == 1 ? 4.0 : 2.0) * integrand(s_end * i / n);
+  rise *= s_end / (3.0 * n);
+  const double t_land = t_lock + 2 * rise;
+
+  for (const double e : {0.0, 0.5}) {
+    const auto run = run_inline_scenario(cubli_on_the_ground(0.9, e), "cubli_ground");
+    const auto& events = run.contact_events;
+    ASSERT_GE(events.size(), 3u) << "e " << e;
+    EXPECT_EQ(events[0].what, "sticks on a face");
+    EXPECT_EQ(events[1].t, t_lock);
+    EXPECT_EQ(events[1].what, "apart");  // thrown up by the brake: only the hinge's edge stays
+    EXPECT_NEAR(events[2].t, t_land, 1e-9 * t_land) << events[2].what;
+    EXPECT_NE(events[2].what.find("on a face"), std::string::npos) << events[2].what;
+    const double E_flight = run.rows.front().quantities.potential_energy +
+                            0.5 * I_total * Omega * Omega;  // after the lock
+    const double E_scale = (M + m) * kG * L;
+    double highest = 0.0;
+    for (const Row& row : run.rows) {
+      const BodyState& frame = row.states[0];
+      const double phi = std::atan2(frame.r_G.z(), frame.r_G.x());
+      // No corner of the frame below the floor: the lowest is the one off the hinge, at
+      // phi - 45 deg below the x axis when phi < 45 deg.
+      EXPECT_GE(phi, phi0 - 1e-9) << "the frame is through the floor at t " << row.t;
+      highest = std::max(highest, phi);
+      const double N = row.extras.contacts[0].normal_force;
+      if (row.t < t_lock) {
+        // On its face, the plane at the far edge carries half the weight (moments about O).
+        EXPECT_NEAR(phi, phi0, 1e-12);
+        EXPECT_NEAR(N, (M + m) * kG / 2, 1e-9 * (M + m) * kG);
+      } else if (row.t > t_lock && row.t < t_land) {
+        EXPECT_NEAR(row.quantities.total_energy, E_flight, 1e-9 * E_scale) << row.t;
+        EXPECT_EQ(N, 0.0);
+      } else if (row.t > t_land && e == 0.0) {
+        // It lands plastically and lies still on its face.
+        EXPECT_NEAR(phi, phi0, 1e-12) << row.t;
+        EXPECT_NEAR(frame.omega_W.norm(), 0.0, 1e-9 * Omega);
+        EXPECT_NEAR(N, (M + m) * kG / 2, 1e-9 * (M + m) * kG) << row.t;
+        EXPECT_EQ(row.extras.contacts[0].mode, 2);
+      } else if (row.t > t_land && row.t < t_land + 0.05) {
+        // It rebounds at e Omega: e^2 of the kinetic energy it landed with.
+        const double E_rebound =
+            run.rows.front().quantities.potential_energy + 0.5 * I_total * e * e * Omega * Omega;
+        EXPECT_NEAR(row.quantities.total_energy, E_rebound, 1e-9 * E_scale) << row.t;
+        EXPECT_LT(frame.omega_W.y(), 0.0);  // rising again (about -y)
+      }
+    }
+    EXPECT_NEAR(highest, phi_max, 1e-4) << "the rows are 1 ms apart: the peak within their step";
+  }
 }
 
 }  // namespace

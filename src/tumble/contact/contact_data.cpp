@@ -10,10 +10,12 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
     most_vertices = std::max(most_vertices, contact.surface.vertices.size());
   }
   touching.reserve(most_vertices);
+  // Rows per contact at most: a face's six; a held polyhedron's three at each of three points.
+  constexpr std::size_t kMostRows = 9;
   now.resize(contacts.size());
-  unknowns.resize(6 * contacts.size());
-  wrenches.resize(6 * contacts.size());
-  const auto rows = static_cast<Eigen::Index>(6 * contacts.size());
+  unknowns.resize(kMostRows * contacts.size());
+  wrenches.resize(kMostRows * contacts.size());
+  const auto rows = static_cast<Eigen::Index>(kMostRows * contacts.size());
   matrix.resize(rows, rows);
   rhs.resize(rows);
   x.resize(rows);

@@ -40,6 +40,10 @@ struct ContactNow {
   double normal_force = 0.0;             // force_W's component along the plane's normal
   Vec3 friction_W = Vec3::Zero();        // force_W's tangential part
   Vec3 moment_about_O_B = Vec3::Zero();  // its moment about O, body axes
+  // A polyhedron on a body a joint holds: the least normal force (or impulse) among the feature's
+  // points whose rows the solve kept (the joint takes the rest of the load), and that point.
+  double least_point_force = 0.0;
+  Vec3 least_point_B = Vec3::Zero();
 };
 
 // One unknown of the contact forces and the constraint row that goes with it: the row is
@@ -60,11 +64,11 @@ struct ContactData {
   ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension);
 
   std::vector<ContactNow> now;           // per contact
-  std::vector<ContactUnknown> unknowns;  // sized to 6 per contact
+  std::vector<ContactUnknown> unknowns;  // sized to the most rows per contact
   MatX matrix;                           // the rows' response to the unknowns
   VecX rhs, x;
   ConstraintSolveScratch solve_scratch;  // for rows that joints or other contacts make redundant
-  std::vector<BodyWrench> wrenches;      // sized to 6 per contact: forces or impulses on bodies
+  std::vector<BodyWrench> wrenches;      // as many: forces or impulses on bodies
   std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                         // impact()'s
   VecX onset_y, onset_dydt;              // turn_starting_slip()'s

@@ -17,6 +17,7 @@
 //    an edge's (5: it may still turn about the edge), a face's (6: the body is held).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "tumble/contact/contact_system.hpp"
@@ -36,6 +37,9 @@ Vec6 wrench_at(const Mat3& R_WB, const Vec3& p_B, const Vec3& F_W, const Vec3& M
   return wrench;
 }
 
+// Responses below this fraction of the heaviest touching body's 1/m are round-off.
+constexpr double kRoundOffResponse = 1e-6;
+
 }  // namespace
 
 ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
@@ -51,9 +55,17 @@ ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
       s_(state) {
   // Room for every feature now, so that finding one during a step allocates nothing.
   s_.contacts.resize(contacts_.size());
+  double heaviest = 0.0;
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
-    reserve_feature(s_.contacts[c].feature, contacts_[c].surface.vertices.size());
+    const PlaneContact& contact = contacts_[c];
+    reserve_feature(s_.contacts[c].feature, contact.surface.vertices.size());
+    const bool held = !dynamics_.moves_freely(contact.body);
+    held_polyhedron_.push_back(held && contact.surface.kind == ContactSurface::Kind::Polyhedron);
+    any_held_ = any_held_ || held;
+    heaviest = std::max(heaviest, bodies_[contact.body].mass);
   }
+  // A free body's response to a unit force is at least 1/m: a floor far below every real one.
+  if (heaviest > 0.0) least_response_ = kRoundOffResponse / heaviest;
 }
 
 void ContactSystem::calc_contact_points() const {
@@ -225,11 +237,28 @@ Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode m
     }
     return count;
   }
+  Vec3 t1, t2;
+  plane_basis(n, t1, t2);
+  if (held_polyhedron_[c]) {
+    // On a body a joint holds, the joint and the plane share the load in a way no choice of the
+    // resultant's rows can split: each of the feature's points is held still (along n, t1, t2),
+    // and the solve keeps the rows the joint leaves free and gives the others no force. Each kept
+    // normal row's force is what the plane pushes with at that point; all must push
+    // (least_point_force >= 0). A Cubli's frame lying on its face, hinged at one edge: the
+    // points on the hinge's axis respond with nothing, and the far edge carries the plane's load.
+    for (int k = 0; k < now.normal_point_count; ++k) {
+      const Vec3& p = now.normal_points_B[static_cast<std::size_t>(k)];
+      const Vec3& rate = now.normal_point_rates_B[static_cast<std::size_t>(k)];
+      const Vec3* held_along[3] = {&n, &t1, &t2};
+      for (int a = 0; a < 3; ++a) {
+        add(p, rate, *held_along[a], zero, a == 0, wrench_at(R, p, *held_along[a], zero), -1);
+      }
+    }
+    return count;
+  }
   // Rolling or sticking: the reference point's velocity (for a vertex or a curved surface that
   // is all); an edge's other end may not move across the edge or off the plane; a face may not
   // turn at all.
-  Vec3 t1, t2;
-  plane_basis(n, t1, t2);
   const Vec3& O = now.reference_B;
   const Vec3* lin[3] = {&n, &t1, &t2};
   if (now.normal_point_count == 2) {
@@ -326,6 +355,19 @@ void ContactSystem::solve_forces() const {
 }
 
 void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x) const {
+  if (any_held_) {
+    // A row that no force moves (a point on a hinge's axis: the joint holds that motion
+    // entirely) carries no force. Its entries are round-off, and where every row is such, A's
+    // own scale is round-off too and the solve could not tell them from real ones: each is set
+    // aside here, against the floor of a real response.
+    for (Eigen::Index i = 0; i < count; ++i) {
+      if (d_.matrix.row(i).head(count).cwiseAbs().maxCoeff() > least_response_) continue;
+      d_.matrix.row(i).head(count).setZero();
+      d_.matrix.col(i).head(count).setZero();
+      d_.matrix(i, i) = 1.0;
+      x(i) = 0.0;
+    }
+  }
   solve_constraints_in_place(d_.matrix, x, count, d_.solve_scratch);
 }
 
@@ -344,6 +386,23 @@ void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) co
     now.normal_force = now.force_W.dot(n);
     now.friction_W = now.force_W - now.normal_force * n;
     now.moment_about_O_B = now.wrench_B.head<3>() - now.reference_B.cross(F_B);
+    now.least_point_force = std::numeric_limits<double>::infinity();
+  }
+  // A held polyhedron's least push among the points whose rows were kept (a row the solve left
+  // out has exactly no force); with none kept, the plane does not push at all.
+  for (Eigen::Index j = 0; j < count; ++j) {
+    const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
+    ContactNow& now = d_.now[u.contact];
+    if (!u.normal || !held_polyhedron_[u.contact] || x(j) == 0.0) continue;
+    if (x(j) < now.least_point_force) {
+      now.least_point_force = x(j);
+      now.least_point_B = u.point_B;
+    }
+  }
+  for (ContactNow& now : d_.now) {
+    if (now.least_point_force == std::numeric_limits<double>::infinity()) {
+      now.least_point_force = now.normal_force;
+    }
   }
 }
 

@@ -68,6 +68,11 @@ double ContactSystem::support_margin_of(std::size_t c, int& side) const {
   const ContactNow& now = d_.now[c];
   const ContactStatus& status = s_.contacts[c];
   const ContactSurface& surface = contacts_[c].surface;
+  if (held_polyhedron_[c]) {
+    // The plane pushes at each point it holds, or the point leaves (drop_point).
+    side = -1;
+    return now.least_point_force;
+  }
   if (status.round_part != RoundPart::None) {
     return round_support_margin(surface, status.round_part, now.normal_points_B, now.reference_B,
                                 now.n_B, now.normal_force, now.moment_about_O_B, side);
@@ -352,7 +357,7 @@ void ContactSystem::classify_contact(std::size_t c, double t, VecX& y, bool alwa
   if (same && !always_note) return;
   std::string what = status.mode == ContactMode::Apart     ? "apart"
                      : status.mode == ContactMode::Sliding ? "slides"
-                     : anchored(c)                         ? "sticks"
+                     : anchored(c) || held_polyhedron_[c]  ? "sticks"
                                                            : "rolls";
   if (polyhedron && size > 0) what += fmt::format(" on {}", feature_name(size));
   if (status.round_part != RoundPart::None)
@@ -461,6 +466,8 @@ void ContactSystem::set_apart(std::size_t c) {
 }
 
 bool ContactSystem::anchored(std::size_t c) const {
+  // A held polyhedron's points are held one by one, and the joint holds the rest.
+  if (held_polyhedron_[c]) return false;
   const ContactSurface& surface = contacts_[c].surface;
   const RoundPart part = s_.contacts[c].round_part;
   if (surface.kind == ContactSurface::Kind::Polyhedron || is_face(part)) return true;
@@ -616,7 +623,11 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
       }
       int side = -1;
       if (status.feature.size() >= 2 && support_margin_of(c, side) < 0.0) {
-        tip_onto_side(contact.surface.vertices, side, now.n_B, status.feature);
+        if (held_polyhedron_[c]) {
+          drop_point(c, now.least_point_B);
+        } else {
+          tip_onto_side(contact.surface.vertices, side, now.n_B, status.feature);
+        }
         continue;
       }
       if (round && support_margin_of(c, side) < 0.0 && side >= 0) {
@@ -726,6 +737,17 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
       dynamics_.calc_accelerations(y);
       int side = -1;
       support_margin_of(c, side);
+      if (held_polyhedron_[c] && status.feature.size() >= 2 && d_.now[c].normal_force > 0.0) {
+        drop_point(c, d_.now[c].least_point_B);
+        if (status.feature.size() == 0) {
+          set_apart(c);
+          note_contact(t, c, "lifts off");
+          break;
+        }
+        note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
+        classify_contact(c, t, y);
+        break;
+      }
       if (status.feature.size() >= 2 && d_.now[c].normal_force > 0.0) {
         tip_onto_side(contacts_[c].surface.vertices, side, d_.now[c].n_B, status.feature);
         note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
@@ -873,10 +895,63 @@ void ContactSystem::begin(double t0, const VecX& y) {
   }
 }
 
-void ContactSystem::reclassify(double t, VecX& y) {
+void ContactSystem::reclassify(double t, VecX& y, bool speeds_jumped) {
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
-    if (s_.contacts[c].mode != ContactMode::Apart) classify_contact(c, t, y);
+    if (s_.contacts[c].mode == ContactMode::Apart) continue;
+    if (speeds_jumped && !still_touches_after_jump(c, y)) {
+      set_apart(c);
+      note_contact(t, c, "lifts off: the jump sends it away from the plane");
+      continue;
+    }
+    classify_contact(c, t, y);
   }
+}
+
+bool ContactSystem::still_touches_after_jump(std::size_t c, const VecX& y) {
+  const PlaneContact& contact = contacts_[c];
+  ContactStatus& status = s_.contacts[c];
+  dynamics_.calc_motion(y, true);
+  calc_contact_points();
+  const ContactNow& now = d_.now[c];
+  int leaving = 0;
+  for (int k = 0; k < now.normal_point_count; ++k) {
+    if (normal_speed(c, now.normal_points_B[static_cast<std::size_t>(k)]) > status.slip_zero) {
+      ++leaving;
+    }
+  }
+  if (leaving == 0) return true;
+  if (leaving == now.normal_point_count) return false;
+  // Some of its points leave, some stay: it touches with those that stay (a frame hinged at one
+  // edge of its face, thrown up: the hinge's edge stays).
+  if (contact.surface.kind == ContactSurface::Kind::Polyhedron) {
+    d_.touching.clear();
+    for (std::size_t i = 0; i < contact.surface.vertices.size(); ++i) {
+      const Vec3& p = contact.surface.vertices[i];
+      if (height_above_plane(c, p) <= status.touching_height &&
+          normal_speed(c, p) <= status.slip_zero) {
+        d_.touching.push_back(static_cast<int>(i));
+      }
+    }
+    if (d_.touching.empty()) return false;
+    make_feature(contact.surface.vertices, d_.touching, now.n_B, status.feature);
+    return true;
+  }
+  find_touching_round_part(c, status.touching_height, true);
+  return status.round_part != RoundPart::None;
+}
+
+void ContactSystem::drop_point(std::size_t c, const Vec3& p_B) {
+  const ContactSurface& surface = contacts_[c].surface;
+  ContactStatus& status = s_.contacts[c];
+  d_.touching.clear();
+  for (const int i : status.feature.polygon) {
+    if (surface.vertices[static_cast<std::size_t>(i)] != p_B) d_.touching.push_back(i);
+  }
+  if (d_.touching.empty()) {
+    set_apart(c);
+    return;
+  }
+  make_feature(surface.vertices, d_.touching, d_.now[c].n_B, status.feature);
 }
 
 }  // namespace tumble

@@ -65,8 +65,10 @@ class ContactSystem {
   std::optional<StartProblem> start_problem(const VecX& y0) const;
   // The modes at the start: touching contacts roll, stick or slide; the others are apart.
   void begin(double t0, const VecX& y);
-  // After a breakpoint (a load switched, an impulse): the touching contacts' modes again.
-  void reclassify(double t, VecX& y);
+  // After a breakpoint (a load switched; with `speeds_jumped`, an impulse, a lock or a motor's
+  // start): the touching contacts' modes again. A jump that sends every touching point away from
+  // the plane (a kick, a brake that throws a body up) leaves the contact apart.
+  void reclassify(double t, VecX& y, bool speeds_jumped);
 
   // Three event functions per contact, into g from 3 c on: touchdown (a contact point, or a
   // polyhedron's vertex not yet touching, reaches the plane), support (the normal force reaches
@@ -216,11 +218,25 @@ class ContactSystem {
   void note_contact(double t, std::size_t contact, std::string what);
   // The work J done on contact c's body at an instant (an impact, a projection), into y's ledger.
   void add_work(std::size_t contact, double work, VecX& y) const;
+  // After a jump of the speeds: whether a touching contact still touches (some of its points at
+  // the plane and not leaving it); its feature or part becomes those points.
+  bool still_touches_after_jump(std::size_t contact, const VecX& y);
+  // A held polyhedron's point p_B (least_point_B) leaves its feature: the feature becomes the
+  // rest of its vertices, or none.
+  void drop_point(std::size_t contact, const Vec3& p_B);
 
   std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run
   std::span<const RigidBody> bodies_;
   Vec3 gravity_W_;
   const ContactDynamics& dynamics_;
+  // Per contact: a polyhedron on a body a joint holds. Its rows are its feature's points, each
+  // held still, and the solve keeps those the joint leaves free (contact_forces.cpp).
+  std::vector<bool> held_polyhedron_;
+  // Whether any contact is on a body a joint holds, whose rows may be ones no force moves; and
+  // the floor of a real response (1/kg): below this fraction of the heaviest touching body's
+  // 1/m, a row's response is round-off (solve_contact_system).
+  bool any_held_ = false;
+  double least_response_ = 0.0;
   // This run's scratch, written by const evaluations: a run serves one thread at a time.
   std::unique_ptr<ContactData> data_;
   ContactData& d_;  // *data_

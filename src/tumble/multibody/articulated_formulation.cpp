@@ -348,8 +348,8 @@ void ArticulatedFormulation::begin(double t0, const VecX& y) {
 void ArticulatedFormulation::at_breakpoint(double t, VecX& y) {
   s_.schedule_time = t;
   contacts_.set_time(t);
-  apply_jumps_at(t, y);
-  contacts_.reclassify(t, y);
+  const bool speeds_jumped = apply_jumps_at(t, y);
+  contacts_.reclassify(t, y, speeds_jumped);
 }
 
 void ArticulatedFormulation::event_functions(double t, const VecX& y, VecX& g) const {
@@ -380,7 +380,7 @@ std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
   return StartProblem{problem->contact, std::move(problem->why)};
 }
 
-void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
+bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   calc_kinematics(y, true);
   for (Workspace& w : d_.work) w.external.setZero();
 
@@ -413,7 +413,7 @@ void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
       note("motor " + model_joint.name + " starts");
     }
   }
-  if (what.empty()) return;
+  if (what.empty()) return false;
 
   JumpRecord record;
   record.t = t;
@@ -464,6 +464,7 @@ void ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
     ++slot;
   }
   s_.jumps.push_back(std::move(record));
+  return true;
 }
 
 }  // namespace tumble

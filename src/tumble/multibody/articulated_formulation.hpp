@@ -41,7 +41,7 @@ class ArticulatedFormulation final : public Formulation {
   // One run of a shared model, with its own scratch and state.
   explicit ArticulatedFormulation(std::shared_ptr<const ArticulatedModel> model);
   // Throws std::invalid_argument if the joints close a loop, or a body a joint holds touches a
-  // plane with anything but a sphere's or shell's point.
+  // plane with a round body (a disk, ring, cylinder, tube or cone).
   explicit ArticulatedFormulation(Model model);
 
   std::unique_ptr<Formulation> new_run() const override {
@@ -113,8 +113,8 @@ class ArticulatedFormulation final : public Formulation {
   // offset + first_motor_entry() to the end.
   void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
   JointReaction reaction_of(std::size_t model_joint) const;
-  // Impulses, locks and starting motors at a breakpoint.
-  void apply_jumps_at(double t, VecX& y);
+  // Impulses, locks and starting motors at a breakpoint; whether any jumped the speeds.
+  bool apply_jumps_at(double t, VecX& y);
   double kinetic_energy() const;               // from the workspaces' velocities
   Vec3 angular_momentum_about_origin() const;  // from the states of the last calc_kinematics
 

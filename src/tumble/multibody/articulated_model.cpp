@@ -58,13 +58,14 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
 
   for (const PlaneContact& contact : model.contacts) {
     // Held by a joint, a body's contact rows may be redundant with it (the solve allows that);
-    // features of more than one point on such a body are not modelled yet (the reader says so).
+    // a round body's parts on such a body are not modelled yet (the reader says so).
     if (tree[slot_of_body[contact.body]].type != JointType::Free &&
-        contact.surface.kind != ContactSurface::Kind::Sphere) {
+        contact.surface.kind != ContactSurface::Kind::Sphere &&
+        contact.surface.kind != ContactSurface::Kind::Polyhedron) {
       throw std::invalid_argument("contact '" + contact.name + "': body '" +
                                   model.bodies[contact.body].name +
-                                  "' is held by a joint; only a sphere's or shell's contact is "
-                                  "modelled on a held body");
+                                  "' is held by a joint; only a sphere's, a shell's or a "
+                                  "polyhedron's contact is modelled on a held body");
     }
     event_specs.push_back({contact.name + " touchdown", EventDirection::Falling});
     event_specs.push_back({contact.name + " lift-off", EventDirection::Falling});

@@ -17,7 +17,7 @@ namespace tumble {
 
 struct ArticulatedModel {
   // Throws std::invalid_argument if the joints close a loop, or a body a joint holds touches a
-  // plane with anything but a sphere's or shell's point.
+  // plane with a round body (a disk, ring, cylinder, tube or cone).
   explicit ArticulatedModel(std::shared_ptr<const Model> model);
 
   std::shared_ptr<const Model> shared_model;

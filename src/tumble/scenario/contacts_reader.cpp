@@ -1,7 +1,8 @@
 // `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
 // The body must be of a shape whose contact with a plane tumble resolves: a curved surface
 // touching at one point, a cone, or a polyhedron (docs/scenario.md, Contacts); a body that a joint
-// holds (to ground, or to the body its group hangs from) only a sphere or a shell, for now.
+// holds (to ground, or to the body its group hangs from) only a sphere, a shell or a polyhedron,
+// for now.
 #include <fmt/format.h>
 #include <algorithm>
 #include <map>
@@ -105,15 +106,19 @@ void check_held_bodies(const Reader& reader, const std::vector<Field>& items,
     const BodySpec& body =
         *std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
                       [&](const BodySpec& b) { return b.name == contacts[i].body; });
-    if (body.shape.kind == ShapeKind::Sphere || body.shape.kind == ShapeKind::Shell) continue;
+    const ShapeKind kind = body.shape.kind;
+    if (kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Box ||
+        kind == ShapeKind::Plate || kind == ShapeKind::Mesh) {
+      continue;
+    }
     const MapReader map(reader, items[i], "a contact");
     reader.fail_at_value(
         *map.find("body"),
         "body '" + body.name +
-            "' is held by a joint; on a held body tumble models a sphere's or "
-            "shell's contact (one point) for now, not a " +
-            std::string(shape_name(body.shape.kind)) +
-            "'s: free it, or weld a sphere to it (a fixed joint) where it touches");
+            "' is held by a joint; on a held body tumble models a sphere's, a shell's or a "
+            "polyhedron's (box, plate, mesh) contact for now, not a " +
+            std::string(shape_name(kind)) +
+            "'s: free it, or weld a sphere or a box to it (a fixed joint) where it touches");
   }
 }
 

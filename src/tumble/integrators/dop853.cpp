@@ -215,10 +215,11 @@ void Dop853::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
   dense_ready_ = false;
   system_->derivative(t_, y_, stages_[accepted_][kStages - 1]);
   ++stats_.rhs_evaluations;
+  step_control::absolute_tolerances(system, y0, control_.atol, atols_);
   h_ = control_.initial_step > 0.0 ? std::min(control_.initial_step, h_max_) : initial_step();
 }
 
-// Hairer's HINIT for order 8, with sk_i = atol + rtol |y0_i| and sums of squares:
+// Hairer's HINIT for order 8, with sk_i = atol_i + rtol |y0_i| and sums of squares:
 //   h0 = 0.01 sqrt(sum (y0/sk)^2 / sum (f0/sk)^2)   (1e-6 if either sum is <= 1e-10),
 //   one explicit Euler step of h0, f1 = f(t0 + h0, y0 + h0 f0),
 //   d2 = sqrt(sum ((f1 - f0)/sk)^2) / h0,  d12 = max(d2, sqrt(sum (f0/sk)^2)),
@@ -227,12 +228,11 @@ void Dop853::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
 double Dop853::initial_step() {
   const VecX& f0 = stages_[accepted_][kStages - 1];
   VecX& f1 = trial_stages()[1];
-  const double atol = control_.atol;
   const double rtol = control_.rtol;
   double sum_f = 0.0;
   double sum_y = 0.0;
   for (Eigen::Index i = 0; i < y_.size(); ++i) {
-    const double sk = atol + rtol * std::abs(y_[i]);
+    const double sk = atols_[i] + rtol * std::abs(y_[i]);
     sum_f += (f0[i] / sk) * (f0[i] / sk);
     sum_y += (y_[i] / sk) * (y_[i] / sk);
   }
@@ -245,7 +245,7 @@ double Dop853::initial_step() {
   ++stats_.rhs_evaluations;
   double sum_df = 0.0;
   for (Eigen::Index i = 0; i < y_.size(); ++i) {
-    const double sk = atol + rtol * std::abs(y_[i]);
+    const double sk = atols_[i] + rtol * std::abs(y_[i]);
     sum_df += ((f1[i] - f0[i]) / sk) * ((f1[i] - f0[i]) / sk);
   }
   const double d2 = std::sqrt(sum_df) / h;
@@ -319,7 +319,7 @@ StepOutcome Dop853::step(double t_stop) {
               er11 * k[10] + er12 * k[11];
     error3_ = increment_ - bhh1 * k[0] - bhh2 * k[8] - bhh3 * k[11];
     const double err =
-        step_control::dop853_error(error5_, error3_, y_, y_new_, control_.atol, control_.rtol, h);
+        step_control::dop853_error(error5_, error3_, y_, y_new_, atols_, control_.rtol, h);
     if (!std::isfinite(err) || !y_new_.allFinite()) {
       ++stats_.rejected_steps;
       if (!step_control::shorten_after_blow_up(h_abs, h_min)) {

@@ -82,6 +82,7 @@ class Dop853 final : public Integrator {
   VecX y_new_;        // the 8th-order solution of the step being tried
   VecX error5_;       // the 5th-order error estimate (without h)
   VecX error3_;       // the 3rd-order error estimate (without h)
+  VecX atols_;        // the absolute tolerance per component (step_control::absolute_tolerances)
 
   // Lazy continuous extension of the last accepted step.
   mutable bool dense_ready_ = false;

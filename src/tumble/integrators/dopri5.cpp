@@ -61,11 +61,13 @@ void Dopri5::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
   accepted_ = 0;
   system_->derivative(t_, y_, stages_[accepted_][kStages - 1]);
   ++stats_.rhs_evaluations;
+  step_control::absolute_tolerances(system, y0, control_.atol, thresholds_);
 
   h_ = control_.initial_step > 0.0
            ? std::min(control_.initial_step, h_max_)
            : step_control::ode45_initial_step(y_, stages_[accepted_][kStages - 1], control_.rtol,
-                                              control_.atol, h_max_, span, t0);
+                                              thresholds_, h_max_, span, t0);
+  thresholds_ /= control_.rtol;  // atol_i / rtol, as the error measure takes them
 }
 
 void Dopri5::restart(double t, const VecX& y) {
@@ -85,7 +87,6 @@ StepOutcome Dopri5::step(double t_stop) {
   Stages& k = trial_stages();
   k[0] = accepted_stages()[kStages - 1];  // FSAL: f at the current state
   const double rtol = control_.rtol;
-  const double threshold = control_.atol / rtol;
   const double h_min = step_control::minimum_step(t_);
   double h_abs = std::min({h_max_, std::max(h_min, step_bound_), std::max(h_min, h_)});
   bool rejected_before = false;
@@ -113,7 +114,7 @@ StepOutcome Dopri5::step(double t_stop) {
     stats_.rhs_evaluations += 6;
 
     error_ = h * (e1 * k[0] + e3 * k[2] + e4 * k[3] + e5 * k[4] + e6 * k[5] + e7 * k[6]);
-    const double err = step_control::max_norm_error(error_, y_, y_new_, threshold);
+    const double err = step_control::max_norm_error(error_, y_, y_new_, thresholds_);
     if (!std::isfinite(err) || !y_new_.allFinite()) {
       ++stats_.rejected_steps;
       if (!step_control::shorten_after_blow_up(h_abs, h_min)) {

@@ -73,6 +73,7 @@ class Dopri5 final : public Integrator {
   VecX y_stage_;      // argument of f at the inner stages
   VecX y_new_;        // the 5th-order solution of the step being tried
   VecX error_;        // its local error estimate
+  VecX thresholds_;   // atol_i / rtol per component (step_control::absolute_tolerances)
 };
 
 }  // namespace tumble

@@ -29,6 +29,10 @@ bool rescale_quaternion_derivatives(std::span<const Eigen::Index> offsets, const
   return true;
 }
 
+void OdeSystem::tolerance_units(const VecX& /*y0*/, VecX& units) const {
+  units.setOnes();
+}
+
 void OdeSystem::project(double /*t*/, VecX& y) const {
   normalize_unit_quaternions(unit_quaternion_offsets(), y);
 }

@@ -52,6 +52,15 @@ class OdeSystem {
   // jump. The default normalises the unit quaternions.
   virtual void project(double t, VecX& y) const;
 
+  // Per component of y, the unit its absolute tolerance is given in, fixed from y0 when a method
+  // starts (units sized to y0): atol_i = atol units_i. The default, 1 for every component: atol
+  // is in the state's own units (m, m/s, rad/s, a quaternion's 1). A system whose components
+  // scale with the problem (a work ledger's joules scale with the masses and with gravity) gives
+  // them the problem's own scale, so that the same motion at any mass or gravity is held to the
+  // same relative accuracy and takes the same steps. docs/integrators.md, "How the tolerances
+  // are scaled".
+  virtual void tolerance_units(const VecX& y0, VecX& units) const;
+
   // Located events. event_functions fills g (size events().size()).
   virtual std::span<const EventSpec> events() const { return {}; }
   virtual void event_functions(double t, const VecX& y, VecX& g) const;

@@ -20,12 +20,12 @@ namespace {
 
 }  // namespace
 
-double max_norm_error(const VecX& error, const VecX& y, const VecX& y_new, double threshold) {
+double max_norm_error(const VecX& error, const VecX& y, const VecX& y_new, const VecX& thresholds) {
   // A NaN anywhere must come out as NaN (std::max would drop it), so the ratio is summed into
   // the result through a comparison that NaN wins.
   double err = 0.0;
   for (Eigen::Index i = 0; i < error.size(); ++i) {
-    const double scale = std::max({std::abs(y[i]), std::abs(y_new[i]), threshold});
+    const double scale = std::max({std::abs(y[i]), std::abs(y_new[i]), thresholds[i]});
     const double ratio = std::abs(error[i]) / scale;
     if (!(ratio <= err)) err = ratio;
   }
@@ -33,11 +33,11 @@ double max_norm_error(const VecX& error, const VecX& y, const VecX& y_new, doubl
 }
 
 double dop853_error(const VecX& error5, const VecX& error3, const VecX& y, const VecX& y_new,
-                    double atol, double rtol, double h) {
+                    const VecX& atol, double rtol, double h) {
   double sum5 = 0.0;
   double sum3 = 0.0;
   for (Eigen::Index i = 0; i < error5.size(); ++i) {
-    const double sk = atol + rtol * std::max(std::abs(y[i]), std::abs(y_new[i]));
+    const double sk = atol[i] + rtol * std::max(std::abs(y[i]), std::abs(y_new[i]));
     const double e5 = error5[i] / sk;
     const double e3 = error3[i] / sk;
     sum5 += e5 * e5;
@@ -46,6 +46,12 @@ double dop853_error(const VecX& error5, const VecX& error3, const VecX& y, const
   double denominator = sum5 + 0.01 * sum3;
   if (denominator <= 0.0) denominator = 1.0;  // both estimates vanish: the step is exact
   return std::abs(h) * sum5 / std::sqrt(static_cast<double>(error5.size()) * denominator);
+}
+
+void absolute_tolerances(const OdeSystem& system, const VecX& y0, double atol, VecX& atols) {
+  atols.resize(y0.size());
+  system.tolerance_units(y0, atols);
+  atols *= atol;
 }
 
 double spacing(double t) {
@@ -57,12 +63,12 @@ double minimum_step(double t) {
   return 16.0 * spacing(t);
 }
 
-double ode45_initial_step(const VecX& y0, const VecX& f0, double rtol, double atol, double h_max,
-                          double span, double t0) {
-  const double threshold = atol / rtol;
+double ode45_initial_step(const VecX& y0, const VecX& f0, double rtol, const VecX& atol,
+                          double h_max, double span, double t0) {
   double h = std::min(h_max, std::abs(span));
   double f_scaled = 0.0;
   for (Eigen::Index i = 0; i < y0.size(); ++i) {
+    const double threshold = atol[i] / rtol;
     f_scaled = std::max(f_scaled, std::abs(f0[i]) / std::max(std::abs(y0[i]), threshold));
   }
   const double rh = f_scaled / (0.8 * std::pow(rtol, 0.2));

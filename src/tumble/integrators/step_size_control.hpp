@@ -14,18 +14,22 @@
 namespace tumble::step_control {
 
 // ode45's error measure of one step:
-//   err = max_i |e_i| / max(|y_i|, |y_new_i|, threshold),   threshold = atol / rtol,
+//   err = max_i |e_i| / max(|y_i|, |y_new_i|, threshold_i),   threshold_i = atol_i / rtol,
 // compared with rtol (err <= rtol accepts). e is the local error estimate (already times h).
-double max_norm_error(const VecX& error, const VecX& y, const VecX& y_new, double threshold);
+double max_norm_error(const VecX& error, const VecX& y, const VecX& y_new, const VecX& thresholds);
 
 // Hairer's DOP853 error measure, combining the 5th-order estimate e5 and the 3rd-order one e3
-// (both WITHOUT the factor h) in the RMS norm with sk_i = atol + rtol * max(|y_i|, |y_new_i|):
+// (both WITHOUT the factor h) in the RMS norm with sk_i = atol_i + rtol * max(|y_i|, |y_new_i|):
 //   E5 = sum_i (e5_i / sk_i)^2,  E3 = sum_i (e3_i / sk_i)^2,
 //   err = |h| E5 / sqrt(n (E5 + 0.01 E3))      (1 when E5 + 0.01 E3 == 0 is replaced by 1),
 // compared with 1. The 3rd-order estimate in the denominator keeps the 5th-order one, which is
 // asymptotically too small for large steps, honest (Hairer-Norsett-Wanner I, section II.10).
 double dop853_error(const VecX& error5, const VecX& error3, const VecX& y, const VecX& y_new,
-                    double atol, double rtol, double h);
+                    const VecX& atol, double rtol, double h);
+
+// The absolute tolerance per component, atol in each component's unit
+// (OdeSystem::tolerance_units). Called once when a method starts.
+void absolute_tolerances(const OdeSystem& system, const VecX& y0, double atol, VecX& atols);
 
 // MATLAB's eps(t): the gap from |t| to the next larger double.
 double spacing(double t);
@@ -34,10 +38,10 @@ double spacing(double t);
 // underflow (the solution changes faster than the time grid can resolve).
 double minimum_step(double t);
 
-// ode45's first step: h = min(h_max, |t_end - t0|); rh = ||f0 ./ max(|y0|, atol/rtol)||_inf
+// ode45's first step: h = min(h_max, |t_end - t0|); rh = ||f0 ./ max(|y0|, atol_i/rtol)||_inf
 // / (0.8 rtol^(1/5)); if h rh > 1 then h = 1 / rh; then at least minimum_step(t0).
-double ode45_initial_step(const VecX& y0, const VecX& f0, double rtol, double atol, double h_max,
-                          double span, double t0);
+double ode45_initial_step(const VecX& y0, const VecX& f0, double rtol, const VecX& atol,
+                          double h_max, double span, double t0);
 
 // A step too long for the solution can blow its stages up (a fast mode, a contact's friction
 // turning over): a rejection, retried ten times shorter. Shortens h_abs (not below h_min) and

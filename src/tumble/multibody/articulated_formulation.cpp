@@ -1,6 +1,7 @@
 #include "tumble/multibody/articulated_formulation.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "tumble/math/rotation.hpp"
@@ -27,6 +28,43 @@ void invert_joint_inertia(const Matrix& D, Matrix& D_inv) {
     default:
       throw std::logic_error("a joint has 0, 1, 3 or 6 freedoms");
   }
+}
+
+// The work-ledger's unit for its absolute tolerance, J: how much the system's energy changes
+// when its state is off by one unit of each coordinate and speed (1 m, 1 m/s, 1 rad/s; a
+// radian of a hinge), so that atol means the same for the books as for the state. Per body
+// m |g| + m |v_G| + (tr I_G / 2) |omega| (its weight, linear and angular momentum at y0); per
+// load, spring (its force or moment at y0), impulse and motor its own size: |F| or |M|, |J|, a
+// speed motor's momentum about its axis (|m v| or (tr I / 2) |w|), an effort's |F| or |tau|. It
+// scales as the masses do, so the same motion at any mass takes the same steps; a problem with
+// none of these (nothing moves or drives) takes 1 J.
+double ledger_unit(const Model& model, std::span<const BodyState> states,
+                   std::span<const Vec6> element_wrenches_B) {
+  double unit = 0.0;
+  const double g = model.gravity_W.norm();
+  for (std::size_t i = 0; i < model.bodies.size(); ++i) {
+    const RigidBody& body = model.bodies[i];
+    const double inertia = body.I_G_B.trace() / 2.0;
+    unit += body.mass * (g + states[i].v_G.norm()) + inertia * states[i].omega_W.norm();
+    unit += element_wrenches_B[i].head<3>().norm() + element_wrenches_B[i].tail<3>().norm();
+  }
+  for (const AppliedLoad& load : model.loads) unit += load.value.norm();
+  for (const ImpulseLoad& impulse : model.impulses) unit += impulse.value.norm();
+  // A motor drives both its bodies (either may be ground): the same whichever it lists first.
+  for (const JointModel& joint : model.joints) {
+    if (joint.motor.kind == JointMotor::Kind::None) continue;
+    const double value = std::abs(joint.motor.value);
+    if (joint.motor.kind == JointMotor::Kind::Effort) {
+      unit += value;
+      continue;
+    }
+    for (const int b : {joint.body_a, joint.body_b}) {
+      if (b < 0) continue;
+      const RigidBody& body = model.bodies[static_cast<std::size_t>(b)];
+      unit += (joint.type == JointType::Prismatic ? body.mass : body.I_G_B.trace() / 2.0) * value;
+    }
+  }
+  return unit > 0.0 ? unit : 1.0;
 }
 
 }  // namespace
@@ -281,6 +319,18 @@ void ArticulatedFormulation::unpack_all(const VecX& y, std::span<BodyState> stat
 BodyState ArticulatedFormulation::unpack(const VecX& y, std::size_t body) const {
   calc_kinematics(y, true);
   return d_.states[body];
+}
+
+void ArticulatedFormulation::tolerance_units(const VecX& y0, VecX& units) const {
+  units.setOnes();
+  calc_kinematics(y0, true);
+  accumulate_element_loads(y0, s_.schedule_time, d_.rates, 0, nullptr);
+  std::vector<Vec6> element_wrenches_B(body_count(), Vec6::Zero());  // once, at the start
+  for (std::size_t i = 0; i < body_count(); ++i) {
+    element_wrenches_B[i] = d_.work[m_.slot_of_body[i]].external;
+  }
+  units.tail(m_.dimension - m_.ledger)
+      .setConstant(ledger_unit(model_, d_.states, element_wrenches_B));
 }
 
 double ArticulatedFormulation::kinetic_energy() const {

@@ -35,6 +35,7 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   const SimulateSpec& sim = scenario.simulate;
   const IntegratorStats& stats = result.report.stats;
   fmt::print("{} ({})\n", scenario.name, scenario.file);
+  for (const std::string& warning : scenario.warnings) fmt::print("  warning        {}\n", warning);
   fmt::print("  integrator     {} (formulation: {})", simulation.integrator->name(),
              simulation.formulation->name());
   if (simulation.integrator->adaptive()) {

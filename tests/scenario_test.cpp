@@ -198,6 +198,49 @@ TEST(Scenario, EveryNumberMayBeAnExpressionOverTheParameters) {
   EXPECT_EQ(rod.angular_velocity_W.z(), 1e-3);
 }
 
+TEST(Scenario, UnitsAfterANumberConvertItToSI) {
+  // rpm to rad/s (x pi/30), cm and mm to m, ms to s, deg to rad; a unit's name is reserved.
+  const Scenario s = load_text(kHead +
+                               "parameters: {spin: 1500 rpm, r: 15 cm, w: (2 + 3) mm, t: 20 ms}\n"
+                               "bodies:\n"
+                               "  wheel: {shape: disk, radius: r, mass: 2, angular_velocity: [0, "
+                               "0, spin], position: [w, 0, 0]}\n"
+                               "simulate: {duration: 1, output_every: t}\n");
+  EXPECT_DOUBLE_EQ(s.parameters.at("spin"), 1500 * kPi / 30);
+  EXPECT_DOUBLE_EQ(s.parameters.at("r"), 0.15);
+  EXPECT_DOUBLE_EQ(s.bodies[0].position_W.x(), 0.005);
+  EXPECT_DOUBLE_EQ(s.simulate.output_every, 0.02);
+  for (const char* unit : {"rpm", "cm", "mm", "ms", "deg"}) {
+    try {
+      load_text(kHead + "parameters: {" + unit + ": 2}\n" + kSphere + kSimulate);
+      ADD_FAILURE() << unit << " was accepted as a parameter's name";
+    } catch (const ScenarioError& error) {
+      EXPECT_NE(error.why().find("is reserved"), std::string::npos) << error.what();
+    }
+  }
+}
+
+TEST(Scenario, AnAngleOfMoreThanATurnWrittenAsABareNumberIsReadInRadiansWithAWarning) {
+  // `th: 25` is 25 rad (1432 degrees): accepted, as the contract says, and the warning says so
+  // where it is; written with deg or pi, or within a turn, no warning.
+  const auto body = [](const std::string& angle) {
+    return kHead +
+           "parameters: {th: 25}\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 2,\n" +
+           "    orientation: {axis: [0, 0, 1], angle: " + angle + "}}\n" + kSimulate;
+  };
+  const Scenario bare = load_text(body("th"));
+  ASSERT_EQ(bare.warnings.size(), 1u);
+  EXPECT_NE(bare.warnings[0].find(":5:"), std::string::npos) << bare.warnings[0];
+  EXPECT_NE(bare.warnings[0].find("bodies.ball.orientation.angle"), std::string::npos)
+      << bare.warnings[0];
+  EXPECT_NE(bare.warnings[0].find("read in radians (1432 degrees"), std::string::npos)
+      << bare.warnings[0];
+  EXPECT_EQ(load_text(body("7")).warnings.size(), 1u);
+  for (const char* fine : {"25 deg", "4*pi", "6", "-6.2"}) {
+    EXPECT_TRUE(load_text(body(fine)).warnings.empty()) << fine;
+  }
+}
+
 TEST(Scenario, SetOverridesAParameterAndTheValuesThatUseIt) {
   const std::string text = kHead +
                            "parameters: {a: 4, b: 1, c: 2, m: 3*a}\n"

@@ -13,8 +13,37 @@
 namespace tumble {
 namespace {
 
+// Units written after a number ("30 deg", "1500 rpm", "15 cm"): each converts to the SI unit the
+// key takes (rad, rad/s, m, s). The list is the one reserved_units() names.
 double degrees_to_radians(double degrees) {
   return degrees * std::numbers::pi / 180.0;
+}
+double rpm_to_radians_per_second(double rpm) {
+  return rpm * std::numbers::pi / 30.0;
+}
+double centimetres_to_metres(double cm) {
+  return cm / 100.0;
+}
+double millimetres_to_metres(double mm) {
+  return mm / 1000.0;
+}
+double milliseconds_to_seconds(double ms) {
+  return ms / 1000.0;
+}
+
+struct Unit {
+  const char* name;
+  double (*to_si)(double);
+};
+constexpr Unit kUnits[] = {{"deg", degrees_to_radians},
+                           {"rpm", rpm_to_radians_per_second},
+                           {"cm", centimetres_to_metres},
+                           {"mm", millimetres_to_metres},
+                           {"ms", milliseconds_to_seconds}};
+
+bool is_unit(std::string_view name) {
+  return std::any_of(std::begin(kUnits), std::end(kUnits),
+                     [&](const Unit& unit) { return name == unit.name; });
 }
 
 std::string_view trim(std::string_view text) {
@@ -58,7 +87,7 @@ struct ExpressionEvaluator::Impl {
 ExpressionEvaluator::ExpressionEvaluator() : impl_(std::make_unique<Impl>()) {
   impl_->parser.DefineConst("pi", std::numbers::pi);
   impl_->parser.DefineConst("e", std::numbers::e);
-  impl_->parser.DefinePostfixOprt("deg", degrees_to_radians);
+  for (const Unit& unit : kUnits) impl_->parser.DefinePostfixOprt(unit.name, unit.to_si);
 }
 
 ExpressionEvaluator::~ExpressionEvaluator() = default;
@@ -70,9 +99,10 @@ void ExpressionEvaluator::define(const std::string& name, double value) {
                               "starting with a letter",
                           "");
   }
-  if (name == "pi" || name == "e" || name == "deg") {
-    throw ExpressionError("'" + name + "' is reserved (the constants pi and e, the unit deg); " +
-                              "rename the parameter",
+  if (name == "pi" || name == "e" || is_unit(name)) {
+    throw ExpressionError("'" + name +
+                              "' is reserved (the constants pi and e, the units deg, rpm, cm, mm, "
+                              "ms); rename the parameter",
                           "");
   }
   const mu::funmap_type& functions = impl_->parser.GetFunDef();

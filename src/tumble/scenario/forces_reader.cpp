@@ -141,7 +141,7 @@ TorsionalSpringSpec read_torsional_spring(const Reader& reader, const MapReader&
                            "orientation {axis: [x, y, z], angle: ...} of the second "
                            "body's frame relative to the first's");
     }
-    spring.rest_angle = reader.number(*rest);
+    spring.rest_angle = reader.angle(*rest);
   } else {
     spring.rest_orientation = read_orientation(reader, *rest);
   }

@@ -237,7 +237,8 @@ Scenario load_scenario_text(const std::string& text, const std::string& path,
                             const std::vector<ParameterOverride>& overrides) {
   const YAML::Node document = parse_yaml(text, path);
   ExpressionEvaluator expressions;
-  const Reader reader(path, expressions);
+  std::vector<std::string> warnings;
+  const Reader reader(path, expressions, &warnings);
   if (!document || document.IsNull()) {
     reader.fail(YAML::Mark(), "", "the file is empty; a scenario begins with `tumble: 1`");
   }
@@ -271,6 +272,7 @@ Scenario load_scenario_text(const std::string& text, const std::string& path,
       reader, root.require("simulate", "the run's settings, at least duration"),
       has_system || !scenario.loads.empty(), has_system);
   scenario.output = scenario_reading::read_output(reader, root.find("output"), stem);
+  scenario.warnings = std::move(warnings);
   return scenario;
 }
 

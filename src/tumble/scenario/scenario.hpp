@@ -191,6 +191,9 @@ struct Scenario {
   std::vector<ContactSpec> contacts;                   // `contacts:`
   SimulateSpec simulate;
   OutputSpec output;
+  // What the reader accepted but that is likely not what was meant (an angle of more than a turn
+  // written as a bare number), "FILE:LINE:COL: KEY: why"; `tumble run` prints them.
+  std::vector<std::string> warnings;
 };
 
 // A --set NAME=VALUE override; VALUE is an expression.

@@ -333,7 +333,7 @@ Mat3 read_orientation(const Reader& reader, const Field& field) {
     const Field axis_field = map.require("axis", "the unit-free direction [x, y, z] to turn about");
     const Field angle_field = map.require("angle", "rad, or degrees as '30 deg'");
     const Vec3 axis = reader.vec3(axis_field);
-    const double angle = reader.number(angle_field);
+    const double angle = reader.angle(angle_field);
     if (!(axis.norm() > 0.0)) {
       reader.fail_at_value(axis_field,
                            "axis [0, 0, 0] has no direction; give a nonzero vector "

@@ -1,5 +1,8 @@
 #include "tumble/scenario/yaml_reader.hpp"
 
+#include <cmath>
+#include <numbers>
+
 #include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
@@ -120,6 +123,24 @@ SourceLocation Reader::location(const YAML::Mark& mark) const {
 
 void Reader::fail(const YAML::Mark& mark, const std::string& key, const std::string& why) const {
   throw ScenarioError(location(mark), key, why);
+}
+
+double Reader::angle(const Field& field) const {
+  const double value = number(field);
+  const std::string written = field.node.Scalar();
+  const bool says_unit =
+      written.find("deg") != std::string::npos || written.find("pi") != std::string::npos;
+  if (std::abs(value) > 2.0 * std::numbers::pi && !says_unit) {
+    warn(field, fmt::format("the angle {} is read in radians ({:.4g} degrees, more than a turn); "
+                            "write '{} deg' if degrees were meant",
+                            written, value * 180.0 / std::numbers::pi, written));
+  }
+  return value;
+}
+
+void Reader::warn(const Field& field, const std::string& why) const {
+  if (warnings_ == nullptr) return;
+  warnings_->push_back(ScenarioError(location(field.value_mark()), field.path, why).what());
 }
 
 double Reader::number(const Field& field) const {

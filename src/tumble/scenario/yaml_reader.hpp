@@ -40,8 +40,11 @@ std::optional<std::string> closest_match(std::string_view word,
 
 class Reader {
  public:
-  Reader(std::string file, const ExpressionEvaluator& expressions)
-      : file_(std::move(file)), expressions_(&expressions) {}
+  // Warnings (what is accepted but likely not meant) go to `warnings`, if given, as
+  // "FILE:LINE:COL: KEY: why".
+  Reader(std::string file, const ExpressionEvaluator& expressions,
+         std::vector<std::string>* warnings = nullptr)
+      : file_(std::move(file)), expressions_(&expressions), warnings_(warnings) {}
 
   const std::string& file() const { return file_; }
   SourceLocation location(const YAML::Mark& mark) const;
@@ -57,6 +60,10 @@ class Reader {
 
   // A number or an expression over the parameters.
   double number(const Field& field) const;
+  // An angle, rad: a number; one beyond 2 pi written without `deg` or `pi` (a bare `25`, or a
+  // parameter) is read in radians, with a warning that says so.
+  double angle(const Field& field) const;
+  void warn(const Field& field, const std::string& why) const;
   // A list of exactly `count` numbers; `form` names the expected form in messages ("[x, y, z]").
   std::vector<double> numbers(const Field& field, std::size_t count, std::string_view form) const;
   Vec3 vec3(const Field& field) const;
@@ -70,6 +77,7 @@ class Reader {
  private:
   std::string file_;
   const ExpressionEvaluator* expressions_;
+  std::vector<std::string>* warnings_;
 };
 
 // A mapping of the file. Construction fails unless the value is a mapping with distinct scalar

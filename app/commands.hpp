@@ -19,7 +19,8 @@ struct RunArguments {
 
 struct InertiaArguments {
   std::string scenario;
-  std::string body;  // empty: every body
+  std::string body;           // empty: every body
+  std::vector<double> about;  // a world point at t = 0 (3 numbers), or empty
 };
 
 // tumble plot: columns of a CSV against another, drawn by gnuplot (docs/plotting.md).

@@ -63,11 +63,18 @@ int main(int argc, char** argv) {
   InertiaArguments inertia_args;
   CLI::App* inertia = app.add_subcommand(
       "inertia",
-      "Print each body's mass, COM, inertia about the COM, principal moments and axes.\nExit "
+      "Print each body's mass, COM, inertia about the COM, principal moments and axes (and with\n"
+      "--about, its inertia about that point). The scenario needs no simulate: section.\nExit "
       "status: 0 done, 2 bad command line (or no such body), 3 invalid scenario.");
   inertia->set_version_flag("--version", version);
   inertia->add_option("scenario", inertia_args.scenario, "Scenario file (YAML)")->required();
   inertia->add_option("body", inertia_args.body, "Only this body");
+  inertia
+      ->add_option("--about", inertia_args.about,
+                   "X Y Z: also the inertia about this world point at t = 0 (a pivot O, m): "
+                   "I_O = I_G + m (|d|^2 E - d d^T), d from O to the COM (parallel axis "
+                   "theorem), in world and body axes, with its principal moments")
+      ->expected(3);
 
   PlotArguments plot_args;
   CLI::App* plot = app.add_subcommand(

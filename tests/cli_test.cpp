@@ -305,5 +305,23 @@ TEST(Cli, InertiaOfOneBodyAndOfAnUnknownBody) {
   EXPECT_NE(r.out.find("no body 'wheel'"), std::string::npos) << r.out;
 }
 
+TEST(Cli, InertiaAboutAPivotNeedsNoSimulateSection) {
+  // A uniform rod of length L hung from its end O: I_O = M L^2/3 (+ M r^2/4 of its thickness)
+  // about the axes across it, by the parallel axis theorem from I_G = M (3 r^2 + L^2)/12.
+  const fs::path dir = fresh_dir("inertia_about");
+  const fs::path p = write_file(dir, "rod.yaml",
+                                "tumble: 1\nbodies:\n  rod: {shape: cylinder, radius: 0.01, "
+                                "length: 1, mass: 3, position: [0, 0, -0.5]}\n");
+  const CommandResult r = run_tumble("inertia " + p.string() + " --about 0 0 0");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("inertia about O = [0 0 0]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1.000075"), std::string::npos) << r.out;  // 3 (1/3 + 1e-4/4)
+  EXPECT_EQ(run_tumble("inertia " + p.string() + " --about 0 0").status, 2);
+  // `tumble run` still needs it.
+  const CommandResult run = run_tumble("run " + p.string() + " --out " + dir.string());
+  EXPECT_EQ(run.status, 3);
+  EXPECT_NE(run.out.find("missing required key 'simulate'"), std::string::npos) << run.out;
+}
+
 }  // namespace
 }  // namespace tumble

@@ -229,12 +229,13 @@ std::map<std::string, double> read_parameters(const Reader& reader,
 
 }  // namespace
 
-Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides) {
-  return load_scenario_text(read_scenario_file(path), path, overrides);
+Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides,
+                       bool needs_simulate) {
+  return load_scenario_text(read_scenario_file(path), path, overrides, needs_simulate);
 }
 
 Scenario load_scenario_text(const std::string& text, const std::string& path,
-                            const std::vector<ParameterOverride>& overrides) {
+                            const std::vector<ParameterOverride>& overrides, bool needs_simulate) {
   const YAML::Node document = parse_yaml(text, path);
   ExpressionEvaluator expressions;
   std::vector<std::string> warnings;
@@ -268,9 +269,11 @@ Scenario load_scenario_text(const std::string& text, const std::string& path,
   const bool has_system = !scenario.joints.empty() || !scenario.impulses.empty() ||
                           !scenario.springs.empty() || !scenario.torsional_springs.empty() ||
                           !scenario.contacts.empty();
-  scenario.simulate = scenario_reading::read_simulate(
-      reader, root.require("simulate", "the run's settings, at least duration"),
-      has_system || !scenario.loads.empty(), has_system);
+  if (needs_simulate || root.has("simulate")) {
+    scenario.simulate = scenario_reading::read_simulate(
+        reader, root.require("simulate", "the run's settings, at least duration"),
+        has_system || !scenario.loads.empty(), has_system);
+  }
   scenario.output = scenario_reading::read_output(reader, root.find("output"), stem);
   scenario.warnings = std::move(warnings);
   return scenario;

@@ -204,10 +204,14 @@ struct ParameterOverride {
 
 // Reads, evaluates and checks a scenario. Throws ScenarioError (with file, line, column and key)
 // for anything the contract rejects, including a missing or unreadable file (line 0).
-Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides);
+// With `needs_simulate` false (`tumble inertia`: the bodies are all it reads), `simulate:` may be
+// left out, and the defaults stand.
+Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides,
+                       bool needs_simulate = true);
 // The same from scenario text in memory; `path` names it in messages and places files it refers
 // to (meshes) relative to its directory.
 Scenario load_scenario_text(const std::string& text, const std::string& path,
-                            const std::vector<ParameterOverride>& overrides);
+                            const std::vector<ParameterOverride>& overrides,
+                            bool needs_simulate = true);
 
 }  // namespace tumble

@@ -4,17 +4,22 @@
 
 namespace tumble::cli {
 
-bool energy_changes(const Scenario& scenario) {
-  if (!scenario.loads.empty() || !scenario.impulses.empty()) return true;
+bool only_contacts_may_do_work(const Scenario& scenario) {
+  if (!scenario.loads.empty() || !scenario.impulses.empty()) return false;
   for (const JointSpec& joint : scenario.joints) {
-    if (joint.motor.kind != MotorSpec::Kind::None || std::isfinite(joint.lock_at)) return true;
+    if (joint.motor.kind != MotorSpec::Kind::None || std::isfinite(joint.lock_at)) return false;
   }
   for (const SpringSpec& spring : scenario.springs) {
-    if (spring.damping > 0.0) return true;
+    if (spring.damping > 0.0) return false;
   }
   for (const TorsionalSpringSpec& spring : scenario.torsional_springs) {
-    if (spring.damping > 0.0) return true;
+    if (spring.damping > 0.0) return false;
   }
+  return true;
+}
+
+bool energy_changes(const Scenario& scenario) {
+  if (!only_contacts_may_do_work(scenario)) return true;
   for (const ContactSpec& contact : scenario.contacts) {
     if (contact.friction > 0.0 || contact.restitution < 1.0) return true;
   }

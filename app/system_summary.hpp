@@ -9,6 +9,12 @@ namespace tumble::cli {
 // Whether anything in the scenario does work on the bodies besides gravity and conservative
 // springs (so E is not expected to stay constant).
 bool energy_changes(const Scenario& scenario);
+// Whether the only elements that may change E are contacts (no loads, impulses, motors, locks or
+// dampers): if they did no work (they rolled or stuck), E is conserved.
+bool only_contacts_may_do_work(const Scenario& scenario);
+// The contacts did no work when their largest |work| is within this factor of the work-energy
+// balance's residual (the integration's own error in the books).
+inline constexpr double kWorklessFactor = 10.0;
 // Whether anything outside the bodies exerts a moment on them (gravity, loads, impulses, joints,
 // springs to ground, contacts), so |L| about the origin is not expected to stay constant. Motors,
 // locks and springs between bodies are internal.

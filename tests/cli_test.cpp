@@ -305,6 +305,21 @@ TEST(Cli, InertiaOfOneBodyAndOfAnUnknownBody) {
   EXPECT_NE(r.out.find("no body 'wheel'"), std::string::npos) << r.out;
 }
 
+TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
+  // Three bodies rolling down a ramp without slip: friction acts but does no work (equations.md,
+  // rolling), so E is conserved; the backspin disk slides first, and its friction does work.
+  const fs::path dir = fresh_dir("workless");
+  const CommandResult rolls =
+      run_tumble("run " + example("ramp_race.yaml") + " --out " + dir.string());
+  EXPECT_EQ(rolls.status, 0) << rolls.out;
+  EXPECT_NE(rolls.out.find("the contacts did no work"), std::string::npos) << rolls.out;
+  EXPECT_NE(rolls.out.find("E is conserved)"), std::string::npos) << rolls.out;
+  const CommandResult slides =
+      run_tumble("run " + example("backspin_disk.yaml") + " --out " + dir.string());
+  EXPECT_EQ(slides.status, 0) << slides.out;
+  EXPECT_NE(slides.out.find("E is not conserved"), std::string::npos) << slides.out;
+}
+
 TEST(Cli, InertiaAboutAPivotNeedsNoSimulateSection) {
   // A uniform rod of length L hung from its end O: I_O = M L^2/3 (+ M r^2/4 of its thickness)
   // about the axes across it, by the parallel axis theorem from I_G = M (3 r^2 + L^2)/12.

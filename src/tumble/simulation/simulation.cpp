@@ -218,6 +218,11 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     ConservationReport& c = result.conservation;
     double work = -(gravity_potential - base.gravity_potential0);
     for (const ElementWork& e : extras.elements) work += e.work;
+    // The contacts' entries are the ledger's last (ArticulatedModel::element_names).
+    const std::size_t contacts = std::min(model.contacts.size(), extras.elements.size());
+    for (std::size_t i = extras.elements.size() - contacts; i < extras.elements.size(); ++i) {
+      c.max_contact_work = std::max(c.max_contact_work, std::abs(extras.elements[i].work));
+    }
     c.max_work_energy_residual =
         std::max(c.max_work_energy_residual, std::abs(q.kinetic_energy - base.KE0 - work));
     c.max_kinetic_energy = std::max(c.max_kinetic_energy, q.kinetic_energy);

@@ -66,6 +66,9 @@ struct ConservationReport {
   // the largest departure over the rows, in J, and the largest KE it compares with.
   double max_work_energy_residual = 0.0;
   double max_kinetic_energy = 0.0;
+  // The largest |work| any contact's forces and impulses had done at any row, J: rolling and
+  // sticking contacts do none (it is then the integration's error), sliding and impacts do.
+  double max_contact_work = 0.0;
 };
 
 using RowObserver = std::function<void(double t, std::span<const BodyState> states,

@@ -2,6 +2,8 @@
 // messages, atomic output and determinism, by running the real executable.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "run_tumble.hpp"
 
 #include <sys/wait.h>
@@ -194,10 +196,13 @@ TEST(Cli, RunsTheTumblingPrismAndWritesTheContractCsv) {
   const auto rows = read_csv(dir / "tumbling_prism.csv");
   ASSERT_EQ(rows.size(), 1u + 401u);  // header, t = 0, 0.05, ..., 20
   const std::vector<std::string> expected_header = {
-      "t",         "prism.x",   "prism.y",   "prism.z",   "prism.vx",  "prism.vy",  "prism.vz",
-      "prism.wx",  "prism.wy",  "prism.wz",  "prism.R11", "prism.R12", "prism.R13", "prism.R21",
-      "prism.R22", "prism.R23", "prism.R31", "prism.R32", "prism.R33", "KE",        "PE",
-      "E",         "px",        "py",        "pz",        "Lx",        "Ly",        "Lz"};
+      "t", "prism.x", "prism.y", "prism.z", "prism.vx", "prism.vy", "prism.vz", "prism.wx",
+      "prism.wy", "prism.wz", "prism.R11", "prism.R12", "prism.R13", "prism.R21", "prism.R22",
+      "prism.R23", "prism.R31", "prism.R32", "prism.R33", "KE", "PE", "E", "px", "py", "pz", "Lx",
+      "Ly", "Lz",
+      // After the contract's columns, tumble's own: omega in body axes (omega_1, omega_2,
+      // omega_3 of Euler's equations).
+      "prism.w1", "prism.w2", "prism.w3"};
   EXPECT_EQ(rows[0], expected_header);
   for (std::size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(rows[i].size(), expected_header.size());
   EXPECT_DOUBLE_EQ(std::stod(rows[200][0]), 9.95);
@@ -209,6 +214,13 @@ TEST(Cli, RunsTheTumblingPrismAndWritesTheContractCsv) {
   for (int k = 0; k < 3; ++k) w(k) = std::stod(rows.back()[7 + k]);
   EXPECT_LT(testing::state_error(R, w, ref), 30 * 1e-8);
   EXPECT_NEAR(std::stod(rows.back()[21]), 8.501, 1e-7);  // E
+  // omega in body axes is R^T omega_W, row for row.
+  for (std::size_t i = 1; i < rows.size(); i += 50) {
+    for (int k = 0; k < 9; ++k) R(k / 3, k % 3) = std::stod(rows[i][10 + k]);
+    for (int k = 0; k < 3; ++k) w(k) = std::stod(rows[i][7 + k]);
+    const Vec3 omega_B = R.transpose() * w;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::stod(rows[i][28 + k]), omega_B(k), 1e-15);
+  }
   // Nothing but the finished file is left behind.
   int files = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
@@ -303,6 +315,45 @@ TEST(Cli, InertiaOfOneBodyAndOfAnUnknownBody) {
   const CommandResult r = run_tumble("inertia " + example("tumbling_prism.yaml") + " wheel");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("no body 'wheel'"), std::string::npos) << r.out;
+}
+
+// The column of `name` in a CSV's header row.
+std::size_t column_of(const std::vector<std::string>& header, const std::string& name) {
+  const auto it = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(it, header.end()) << name;
+  return static_cast<std::size_t>(it - header.begin());
+}
+
+TEST(Cli, JointCoordinateColumnsAgreeWithTheBodiesPositions) {
+  // The compound pendulum's hinge (axis y through O at the origin): its angle is the bat's turn
+  // about y since t = 0, atan2(-x, -z) - theta0 from the COM's position, and its rate omega_y.
+  const fs::path dir = fresh_dir("joint_columns");
+  ASSERT_EQ(
+      run_tumble("run " + example("compound_pendulum.yaml") + " --out " + dir.string()).status, 0);
+  const auto rows = read_csv(dir / "compound_pendulum.csv");
+  const auto& header = rows[0];
+  const std::size_t x = column_of(header, "bat.x"), z = column_of(header, "bat.z");
+  const std::size_t wy = column_of(header, "bat.wy");
+  const std::size_t angle = column_of(header, "knob.angle"), rate = column_of(header, "knob.rate");
+  const double theta0 = 5 * M_PI / 180;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const double swing = std::atan2(-std::stod(rows[i][x]), -std::stod(rows[i][z])) - theta0;
+    EXPECT_NEAR(std::stod(rows[i][angle]), swing, 1e-13) << rows[i][0];
+    EXPECT_NEAR(std::stod(rows[i][rate]), std::stod(rows[i][wy]), 1e-13) << rows[i][0];
+  }
+  // The gyroscope's ball joint to ground: its rotation vector is R_WB's, as an angle and axis.
+  ASSERT_EQ(run_tumble("run " + example("gyroscope.yaml") + " --out " + dir.string()).status, 0);
+  const auto gyro = read_csv(dir / "gyroscope.csv");
+  const std::size_t r11 = column_of(gyro[0], "wheel.R11"), rx = column_of(gyro[0], "pivot.rx");
+  for (std::size_t i = 1; i < gyro.size(); i += 37) {
+    Mat3 R;
+    for (int k = 0; k < 9; ++k) R(k / 3, k % 3) = std::stod(gyro[i][r11 + k]);
+    const Eigen::AngleAxisd turn(R);
+    const Vec3 rotation = turn.angle() * turn.axis();
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(std::stod(gyro[i][rx + k]), rotation(k), 1e-12) << gyro[i][0];
+    }
+  }
 }
 
 TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {

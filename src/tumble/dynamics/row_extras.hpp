@@ -22,11 +22,20 @@ struct ContactOutput {
   double slip_speed = 0.0;         // m/s, of the body's material point at the contact
   int mode = 0;                    // 0 apart, 1 sliding, 2 rolling / sticking
 };
+// A joint's own coordinates (the CSV's J.angle J.rate, J.travel J.speed, J.rx J.ry J.rz): a
+// hinge's angle (rad) and rate (rad/s), or a slider's travel (m) and speed (m/s), signed as the
+// scenario states the joint and 0 at t = 0; a ball joint's relative rotation, the rotation
+// vector (rad) of the second body's axes relative to the first's, in the first's axes.
+struct JointCoordinates {
+  double position = 0.0, rate = 0.0;  // hinge, prismatic
+  Vec3 rotation = Vec3::Zero();       // ball
+};
 struct RowExtras {
-  std::vector<JointReaction> joints;    // one per Model::joints entry
-  std::vector<ContactOutput> contacts;  // one per Model::contacts entry
-  std::vector<ElementWork> elements;    // one per element_names() entry
-  double elastic_energy = 0.0;          // J, stored in springs: part of PE
+  std::vector<JointReaction> joints;          // one per Model::joints entry
+  std::vector<JointCoordinates> coordinates;  // one per Model::joints entry
+  std::vector<ContactOutput> contacts;        // one per Model::contacts entry
+  std::vector<ElementWork> elements;          // one per element_names() entry
+  double elastic_energy = 0.0;                // J, stored in springs: part of PE
 };
 
 }  // namespace tumble

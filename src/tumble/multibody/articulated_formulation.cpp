@@ -370,7 +370,24 @@ void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras&
   accumulate_element_loads(y, s_.schedule_time, d_.rates, 0, &extras.elastic_energy);
   solve_with_contacts();
   extras.joints.resize(model_.joints.size());
-  for (std::size_t j = 0; j < model_.joints.size(); ++j) extras.joints[j] = reaction_of(j);
+  extras.coordinates.resize(model_.joints.size());
+  for (std::size_t j = 0; j < model_.joints.size(); ++j) {
+    extras.joints[j] = reaction_of(j);
+    const JointModel& joint = model_.joints[j];
+    JointCoordinates& coordinates = extras.coordinates[j];
+    if (has_axis(joint.type)) {
+      coordinates.position = m_.hinge_angle(y, j);
+      coordinates.rate = m_.joint_rate(y, j);
+    } else if (joint.type == JointType::Ball) {
+      // R_AB = R_WA^T R_WB, as a rotation vector in A's axes.
+      const Mat3 R_WA = joint.body_a == kGround
+                            ? Mat3::Identity()
+                            : d_.states[static_cast<std::size_t>(joint.body_a)].R_WB;
+      const Eigen::AngleAxisd turn(R_WA.transpose() *
+                                   d_.states[static_cast<std::size_t>(joint.body_b)].R_WB);
+      coordinates.rotation = turn.angle() * turn.axis();
+    }
+  }
   extras.contacts.resize(model_.contacts.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const ContactNow& now = contacts_.now(c);

@@ -8,12 +8,17 @@
 //   its second, world, moment about the joint point), then per contact C: C.N C.Fx C.Fy C.Fz
 //   C.slip C.mode (normal force, friction force on the body, world, slip speed, 0 apart /
 //   1 sliding / 2 rolling), then per force element, motor, impulse, lock and contact E: E.P E.W
-//   (power now, work since t0).
+//   (power now, work since t0), then per body B: B.w1 B.w2 B.w3 (its angular velocity in its own
+//   axes: the chapter's omega_1, omega_2, omega_3 of Euler's equations), then per joint J its own
+//   coordinates: a hinge's J.angle J.rate (rad, rad/s), a slider's J.travel J.speed (m, m/s), a
+//   ball joint's J.rx J.ry J.rz (the rotation vector of its second body relative to its first,
+//   rad, the first's axes); a fixed joint none.
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "tumble/dynamics/joint_type.hpp"
 #include "tumble/output/output_row.hpp"
 
 namespace tumble {
@@ -22,6 +27,7 @@ namespace tumble {
 struct ColumnLayout {
   std::vector<std::string> bodies;
   std::vector<std::string> joints;
+  std::vector<JointType> joint_types;  // as many as joints: which coordinates each has
   std::vector<std::string> contacts;
   std::vector<std::string> elements;  // Formulation::element_names()
 };
@@ -78,6 +84,33 @@ void walk_columns(const ColumnLayout& layout, const OutputRow* row, Column&& col
     const ElementWork* w = e != nullptr ? &e->elements[i] : nullptr;
     column(layout.elements[i], "P", w ? w->power : 0.0);
     column(layout.elements[i], "W", w ? w->work : 0.0);
+  }
+  static constexpr std::string_view kOmegaBody[3] = {"w1", "w2", "w3"};
+  for (std::size_t b = 0; b < layout.bodies.size(); ++b) {
+    const BodyState* s = row != nullptr ? &row->states[b] : nullptr;
+    const Vec3 omega_B = s ? Vec3(s->R_WB.transpose() * s->omega_W) : Vec3::Zero();
+    for (int k = 0; k < 3; ++k) column(layout.bodies[b], kOmegaBody[k], omega_B(k));
+  }
+  static constexpr std::string_view kRotation[3] = {"rx", "ry", "rz"};
+  for (std::size_t j = 0; j < layout.joints.size(); ++j) {
+    const JointCoordinates* c =
+        e != nullptr && j < e->coordinates.size() ? &e->coordinates[j] : nullptr;
+    const std::string_view joint = layout.joints[j];
+    switch (layout.joint_types[j]) {
+      case JointType::Hinge:
+        column(joint, "angle", c ? c->position : 0.0);
+        column(joint, "rate", c ? c->rate : 0.0);
+        break;
+      case JointType::Prismatic:
+        column(joint, "travel", c ? c->position : 0.0);
+        column(joint, "speed", c ? c->rate : 0.0);
+        break;
+      case JointType::Ball:
+        for (int k = 0; k < 3; ++k) column(joint, kRotation[k], c ? c->rotation(k) : 0.0);
+        break;
+      default:
+        break;
+    }
   }
 }
 

@@ -296,7 +296,10 @@ SimulationResult run_simulation(PreparedSimulation& simulation, RowSink& sink,
 ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation) {
   ColumnLayout layout;
   for (const BodySpec& b : scenario.bodies) layout.bodies.push_back(b.name);
-  for (const JointSpec& j : scenario.joints) layout.joints.push_back(j.name);
+  for (const JointSpec& j : scenario.joints) {
+    layout.joints.push_back(j.name);
+    layout.joint_types.push_back(j.type);
+  }
   for (const ContactSpec& c : scenario.contacts) layout.contacts.push_back(c.name);
   layout.elements = formulation.element_names();
   return layout;

@@ -18,8 +18,9 @@ int main(int argc, char** argv) {
   RunArguments run_args;
   CLI::App* run = app.add_subcommand(
       "run",
-      "Integrate a scenario; write its trajectory CSV (with --animate an HTML page that animates "
-      "it, with --video an .mp4 or .gif of that page's 3D view) and print a summary (steps, "
+      "Integrate a scenario; write its trajectory CSV, its events CSV when it has contact events "
+      "or jumps (with --animate an HTML page that animates it, with --video an .mp4 or .gif of "
+      "that page's 3D view) and print a summary (steps, "
       "evaluations, wall time, drift of E and |L|, largest |R^T R - I|).\nExit status: 0 done, "
       "2 bad command line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed "
       "(the rows so far stay a valid CSV), 5 output not writable (or the video could not be "

@@ -8,6 +8,7 @@
 #include "exit_status.hpp"
 #include "system_summary.hpp"
 #include "tumble/output/animation_html.hpp"
+#include "tumble/output/events_csv.hpp"
 #include "tumble/output/trajectory_csv.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "video_export.hpp"
@@ -30,6 +31,7 @@ namespace {
 
 void print_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                    const SimulationResult& result, const std::filesystem::path& trajectory,
+                   const std::optional<std::filesystem::path>& events,
                    const std::optional<std::filesystem::path>& animation,
                    const std::optional<std::string>& video) {
   const SimulateSpec& sim = scenario.simulate;
@@ -89,6 +91,10 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   print_system_summary(scenario, simulation, result);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,
              result.report.t_reached);
+  if (events) {
+    fmt::print("  events         {} ({} contact events, {} jumps)\n", events->string(),
+               result.contact_events.size(), result.jumps.size());
+  }
   if (animation) fmt::print("  animation      {}\n", animation->string());
   if (video) fmt::print("  video          {}\n", *video);
 }
@@ -205,8 +211,20 @@ int run_command(const RunArguments& args) {
   if (recorded) sinks.push_back(&*recorded);
   RowFanOut rows(std::move(sinks));
   const SimulationResult result = run_simulation(*simulation, rows);
+  // The events CSV: when the run had events or jumps, or the scenario asks for it.
+  std::optional<std::filesystem::path> events;
+  if (scenario.output.events_given || !result.contact_events.empty() || !result.jumps.empty()) {
+    events = out_dir / scenario.output.events;
+  }
   try {
     writer->finish();
+    if (events) {
+      std::vector<std::string> contact_names, joint_names;
+      for (const ContactSpec& c : scenario.contacts) contact_names.push_back(c.name);
+      for (const JointSpec& j : scenario.joints) joint_names.push_back(j.name);
+      std::filesystem::create_directories(events->parent_path());
+      write_events_csv(*events, contact_names, joint_names, result.contact_events, result.jumps);
+    }
     if (animation && recorded->rows() > 0) {
       std::filesystem::create_directories(animation->parent_path());
       write_animation_html(*animation, make_animation_scene(scenario), *recorded);
@@ -234,7 +252,7 @@ int run_command(const RunArguments& args) {
       video_failure = fmt::format("no video written to {}: {}", video->path.string(), e.what());
     }
   }
-  print_summary(scenario, *simulation, result, trajectory, animation, video_line);
+  print_summary(scenario, *simulation, result, trajectory, events, animation, video_line);
   if (video_status != kDone) {
     fmt::print(stderr, "tumble run: {}\n", video_failure);
     return video_status;

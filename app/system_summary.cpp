@@ -64,16 +64,18 @@ void print_system_summary(const Scenario& scenario, const PreparedSimulation& si
   constexpr std::size_t kContactEventsShown = 24;
   const std::vector<ContactEventRecord>& events = result.contact_events;
   for (std::size_t i = 0; i < events.size() && i < kContactEventsShown; ++i) {
-    fmt::print("  t = {:<10.8g} {}: {}\n", events[i].t, scenario.contacts[events[i].contact].name,
+    fmt::print("  t = {:<14.12g} {}: {}\n", events[i].t, scenario.contacts[events[i].contact].name,
                events[i].what);
   }
   if (events.size() > kContactEventsShown) {
-    fmt::print("  ...            {} more contact events; the last at t = {:.8g}: {}: {}\n",
-               events.size() - kContactEventsShown, events.back().t,
-               scenario.contacts[events.back().contact].name, events.back().what);
+    fmt::print(
+        "  ...            {} more contact events (the events CSV has them all); the last at "
+        "t = {:.12g}: {}: {}\n",
+        events.size() - kContactEventsShown, events.back().t,
+        scenario.contacts[events.back().contact].name, events.back().what);
   }
   for (const JumpRecord& jump : result.jumps) {
-    fmt::print("  t = {:<10.6g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,
+    fmt::print("  t = {:<14.12g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,
                jump.kinetic_energy_before, jump.kinetic_energy_after);
     const Vec3& L0 = jump.angular_momentum_before_W;
     const Vec3& L1 = jump.angular_momentum_after_W;

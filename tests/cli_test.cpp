@@ -356,6 +356,36 @@ TEST(Cli, JointCoordinateColumnsAgreeWithTheBodiesPositions) {
   }
 }
 
+TEST(Cli, TheEventsCsvHasEachJumpsReactionImpulses) {
+  // The Cubli on the ground, its brake at t = 1 ms (equations.md, 6): angular momentum about O
+  // carries over, the frame (at rest on the floor until then) and wheel turn together at
+  // Omega = m R^2 w0 / I_total about -y, and the corner's impulse is what gives the pair its
+  // momentum: (M + m) Omega L/2 (-1, 0, 1) (the centre at (L/2, 0, L/2) moving at
+  // Omega L/2 (-1, 0, 1)); KE after, I_total Omega^2 / 2. The floor's events follow it.
+  const fs::path dir = fresh_dir("events");
+  const CommandResult r =
+      run_tumble("run " + example("cubli_falls_back.yaml") + " --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto rows = read_csv(dir / "cubli_falls_back_events.csv");
+  ASSERT_GE(rows.size(), 4u);
+  const auto& header = rows[0];
+  // (read_csv splits at commas and keeps the quotes: these texts hold none.)
+  EXPECT_EQ(rows[1][column_of(header, "what")], "\"sticks on a face\"");
+  const auto& jump = rows[2];
+  EXPECT_EQ(rows[3][column_of(header, "what")], "\"apart\"");
+  EXPECT_EQ(jump[column_of(header, "t")], "0.001");
+  EXPECT_EQ(jump[column_of(header, "source")], "\"jump\"");
+  const double M = 0.8, m = 0.3, L = 0.15, R = 0.06, g = 9.81;
+  const double I_total = M * L * L / 3 + (M + m) * L * L / 2 + m * R * R;
+  const double w0_crit = std::sqrt((std::sqrt(2.0) - 1) * (M + m) * g * L * I_total) / (m * R * R);
+  const double Omega = m * R * R * 0.95 * w0_crit / I_total;
+  const double J = (M + m) * Omega * L / 2;
+  EXPECT_NEAR(std::stod(jump[column_of(header, "corner.Fx")]), -J, 1e-9 * J);
+  EXPECT_NEAR(std::stod(jump[column_of(header, "corner.Fz")]), J, 1e-9 * J);
+  const double KE_after = 0.5 * I_total * Omega * Omega;
+  EXPECT_NEAR(std::stod(jump[column_of(header, "KE_after")]), KE_after, 1e-9 * KE_after);
+}
+
 TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
   // Three bodies rolling down a ramp without slip: friction acts but does no work (equations.md,
   // rolling), so E is conserved; the backspin disk slides first, and its friction does work.

@@ -486,7 +486,7 @@ TEST(ScenarioError, UnknownKeySuggestsTheClosestValidKey) {
   // A key with no near match lists the valid ones.
   expect_error(
       kHead + kSphere + kSimulate + "output: {movie: a.mp4}\n",
-      {5, 10, "output.movie", "unknown key 'movie' (output takes: trajectory, animation)"});
+      {5, 10, "output.movie", "unknown key 'movie' (output takes: trajectory, animation, events)"});
 }
 
 TEST(ScenarioError, ADimensionOfAnotherShapeIsAnUnknownKey) {

@@ -174,6 +174,10 @@ struct SimulateSpec {
 struct OutputSpec {
   std::string trajectory;  // relative path; default "<scenario file stem>.csv"
   std::string animation;   // relative path of the animation page; empty: none (unless --animate)
+  // relative path of the events CSV (output/events_csv.hpp); default "<file stem>_events.csv",
+  // written when the run has contact events or jumps, or always when given
+  std::string events;
+  bool events_given = false;
   SourceLocation trajectory_where;  // where output.trajectory is given (line 0: the default)
 };
 

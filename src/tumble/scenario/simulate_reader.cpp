@@ -180,10 +180,12 @@ OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
                        const std::string& file_stem) {
   OutputSpec output;
   output.trajectory = file_stem + ".csv";
+  output.events = file_stem + "_events.csv";
   if (!field) return output;
   const MapReader map(reader, *field,
-                      "the output's settings {trajectory: file.csv, animation: file.html}");
-  map.allow_only({"trajectory", "animation"}, "output");
+                      "the output's settings {trajectory: file.csv, animation: file.html, "
+                      "events: file.csv}");
+  map.allow_only({"trajectory", "animation", "events"}, "output");
   if (const auto f = map.find("trajectory")) {
     output.trajectory = read_relative_path(reader, *f, "run.csv");
     output.trajectory_where = reader.location(f->value_mark());
@@ -197,6 +199,25 @@ OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
                                    "' is output.trajectory too: the page would overwrite the "
                                    "trajectory; give each its own file (e.g. run.csv and "
                                    "run.html)");
+    }
+  }
+  if (const auto f = map.find("events"); !f) {
+    // The default beside a trajectory that took its name: the trajectory's own name + _events.
+    if (std::filesystem::path(output.events).lexically_normal() ==
+        std::filesystem::path(output.trajectory).lexically_normal()) {
+      output.events =
+          std::filesystem::path(output.trajectory).replace_extension().string() + "_events.csv";
+    }
+  } else {
+    output.events = read_relative_path(reader, *f, "run_events.csv");
+    output.events_given = true;
+    const std::filesystem::path events = std::filesystem::path(output.events).lexically_normal();
+    for (const std::string* other : {&output.trajectory, &output.animation}) {
+      if (events == std::filesystem::path(*other).lexically_normal()) {
+        reader.fail_at_value(*f, "'" + output.events +
+                                     "' is another output's file too; give the events their "
+                                     "own (e.g. run_events.csv)");
+      }
     }
   }
   return output;

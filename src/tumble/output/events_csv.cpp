@@ -1,0 +1,67 @@
+#include "tumble/output/events_csv.hpp"
+
+#include <fmt/format.h>
+#include <limits>
+
+#include "tumble/output/atomic_file.hpp"
+
+namespace tumble {
+
+namespace {
+
+// A text cell, quoted (RFC 4180): the summaries' texts hold commas.
+std::string quoted(const std::string& text) {
+  std::string cell = "\"";
+  for (const char c : text) {
+    if (c == '"') cell += '"';
+    cell += c;
+  }
+  return cell + "\"";
+}
+
+}  // namespace
+
+void write_events_csv(const std::filesystem::path& path, std::span<const std::string> contacts,
+                      std::span<const std::string> joints,
+                      std::span<const ContactEventRecord> contact_events,
+                      std::span<const JumpRecord> jumps) {
+  AtomicFile file(path);
+  fmt::memory_buffer text;
+  auto out = std::back_inserter(text);
+  fmt::format_to(out, "t,source,what,KE_before,KE_after");
+  for (const std::string& joint : joints) {
+    for (const char* field : {"Fx", "Fy", "Fz", "Mx", "My", "Mz"}) {
+      fmt::format_to(out, ",{}.{}", joint, field);
+    }
+  }
+  text.push_back('\n');
+  // In time order; at one instant the jump comes first (the contacts' modes are decided again
+  // after it).
+  std::size_t next_event = 0;
+  const auto write_contact_events_before = [&](double t, bool including) {
+    for (; next_event < contact_events.size(); ++next_event) {
+      const ContactEventRecord& e = contact_events[next_event];
+      if (e.t > t || (e.t == t && !including)) break;
+      fmt::format_to(out, "{:.17g},{},{},,", e.t, quoted(contacts[e.contact]), quoted(e.what));
+      for (std::size_t k = 0; k < 6 * joints.size(); ++k) text.push_back(',');
+      text.push_back('\n');
+    }
+  };
+  for (const JumpRecord& jump : jumps) {
+    write_contact_events_before(jump.t, false);
+    fmt::format_to(out, "{:.17g},\"jump\",{},{:.17g},{:.17g}", jump.t, quoted(jump.what),
+                   jump.kinetic_energy_before, jump.kinetic_energy_after);
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+      const JointReaction r =
+          j < jump.reaction_impulses.size() ? jump.reaction_impulses[j] : JointReaction{};
+      for (int k = 0; k < 3; ++k) fmt::format_to(out, ",{:.17g}", r.F_W(k));
+      for (int k = 0; k < 3; ++k) fmt::format_to(out, ",{:.17g}", r.M_J_W(k));
+    }
+    text.push_back('\n');
+  }
+  write_contact_events_before(std::numeric_limits<double>::infinity(), true);
+  file.write(std::string_view(text.data(), text.size()));
+  file.finish();
+}
+
+}  // namespace tumble

@@ -1,0 +1,25 @@
+#pragma once
+// The run's events CSV: every contact event (mode change, impact) and every jump at a breakpoint
+// (impulse, lock, motor start) in time order, at full precision (17 significant digits, as the
+// trajectory), with each jump's kinetic energy before and after and each joint's reaction impulse.
+//   t, source (the contact's name, or "jump"; texts are quoted), what (as the summary says it),
+//   KE_before,
+//   KE_after (J; jumps only), then per joint J: J.Fx J.Fy J.Fz (N s) J.Mx J.My J.Mz (N m s, about
+//   the joint point): the impulse its first body exerts on its second (jumps only; empty cells
+//   where a row has none).
+// Written through an AtomicFile: it appears only when complete.
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tumble/dynamics/hybrid_state.hpp"
+
+namespace tumble {
+
+void write_events_csv(const std::filesystem::path& path, std::span<const std::string> contacts,
+                      std::span<const std::string> joints,
+                      std::span<const ContactEventRecord> contact_events,
+                      std::span<const JumpRecord> jumps);
+
+}  // namespace tumble

@@ -54,6 +54,13 @@ constexpr double kSettleHeight = 1e-6;
 // an impulse on one vertex drives another into the plane less each time.
 constexpr int kImpactRounds = 100;
 
+// Rolling or sticking holds while the friction it needs is within this fraction of mu N over
+// the cone's edge: at the edge itself (a sphere on a ramp at exactly mu = (2/7) tan(theta)) the
+// two agree only to round-off, and a slip that started there would grow slower than slip_zero
+// over the time scale (start_sliding could not see it grow, and the contact would be left with
+// no mode: apart, landing again at once).
+constexpr double kFrictionEdge = 1e-9;
+
 // An impact's work counts as none (not a gain) within this fraction of the kinetic energy: an
 // elastic impact's is zero up to round-off.
 constexpr double kWorkRoundOff = 1e-12;
@@ -205,7 +212,10 @@ void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
         if (status.slip_stop_armed) g(base + 2) = std::min(g(base + 2), status.slip_stop_by - t);
       }
     } else {
-      g(base + 2) = contact.friction * now.normal_force - friction_demand(c).norm();
+      // The cone's edge as classification takes it (kFrictionEdge): at exactly the critical
+      // friction the demand hovers at mu N to round-off, and must not leave it.
+      g(base + 2) =
+          (1.0 + kFrictionEdge) * contact.friction * now.normal_force - friction_demand(c).norm();
     }
   }
 }
@@ -331,7 +341,7 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
     status.slip_stop_armed = false;
     dynamics_.calc_accelerations(y);
   } else if (contact.friction > 0.0 && now.normal_force > 0.0 &&
-             demand.norm() <= contact.friction * now.normal_force) {
+             demand.norm() <= (1.0 + kFrictionEdge) * contact.friction * now.normal_force) {
     if (!consistent()) return false;
     anchor_contact(c);
     project(t, y);  // no slip at all from here

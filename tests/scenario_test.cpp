@@ -540,18 +540,21 @@ TEST(ScenarioError, ANonPositiveDefiniteInertiaIsAnError) {
   expect_error(
       kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1, inertia: [1, 0, 1]}\n" + kSimulate,
       {3, 51, "bodies.b.inertia", "inertia is not positive definite"});
-  // A lone rod has no inertia about its axis: the error says so and gives the fixes.
+  // A free rod has no inertia about its axis: the error says so and gives the fixes (held by a
+  // hinge across it, it is a valid slender body: slender_body_test.cpp).
   expect_error(kHead + "bodies:\n  stick: {shape: rod, length: 1, mass: 1}\n" + kSimulate,
                {3, 18, "bodies.stick.shape",
-                "a lone rod has no inertia about its own axis, so it cannot be a body: give "
-                "`inertia:`"});
+                "a rod has no inertia about its own axis: free, nothing would say how it turns "
+                "about that line; hold it with a hinge across it"});
   // Two points alone lie on one line.
   expect_error(kHead +
                    "bodies:\n  pair:\n    parts:\n"
                    "      - {shape: point, mass: 1}\n"
                    "      - {shape: point, mass: 1, position: [1, 0, 0]}\n" +
                    kSimulate,
-               {4, 5, "bodies.pair.parts", "the parts together have no valid inertia"});
+               {4, 5, "bodies.pair.parts",
+                "parts on one line have no inertia about it: free, nothing would say how it "
+                "turns about that line"});
 }
 
 TEST(ScenarioError, TheTriangleInequalityOfPrincipalMomentsIsChecked) {
@@ -816,7 +819,8 @@ TEST(ScenarioError, GroundIsNotABodyName) {
 TEST(ScenarioError, APointIsNoBodyOnItsOwn) {
   expect_error(kHead + "bodies:\n  dot: {shape: point, mass: 1}\n" + kSimulate,
                {3, 16, "bodies.dot.shape",
-                "a point has no inertia and cannot be a body on its own; use it inside `parts:`"});
+                "a point has no inertia at all: free, nothing would say how it turns about its "
+                "COM"});
   expect_error(kHead + "bodies:\n  b: {shape: cube, size: [1, 1, 1], mass: 1}\n" + kSimulate,
                {3, 14, "bodies.b.shape", "unknown shape 'cube'; did you mean 'box'?"});
 }

@@ -4,6 +4,8 @@
 // express_in_parent and combine (the parallel axis theorem) for parts.
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
+
 #include "tumble/inertia/mesh.hpp"
 #include "tumble/scenario/readers.hpp"
 
@@ -16,6 +18,20 @@ const std::vector<std::string> kMotionKeys = {"position", "orientation", "veloci
 std::vector<std::string> with(std::vector<std::string> keys, const std::vector<std::string>& more) {
   keys.insert(keys.end(), more.begin(), more.end());
   return keys;
+}
+
+// A rod's, a point's or a line of parts' inertia about the COM: finite, symmetric, positive
+// semi-definite and singular (a principal moment zero to 1e-12 of the largest; a point's all zero).
+// Such a body is slender: valid where its joints make its motion well-posed
+// (check_slender_bodies).
+bool slender_inertia(const Mat3& inertia) {
+  if (!inertia.allFinite() || !inertia.isApprox(inertia.transpose(), 1e-12)) return false;
+  const double largest = inertia.cwiseAbs().maxCoeff();
+  if (largest == 0.0) return true;  // a point
+  const Eigen::SelfAdjointEigenSolver<Mat3> solver(inertia);
+  const Vec3 moments = solver.eigenvalues();  // ascending
+  return moments(0) >= -1e-12 * largest && moments(0) <= 1e-12 * largest &&
+         moments(1) + moments(0) >= moments(2) - 1e-9 * largest;
 }
 
 // Mass properties of one shape of the given mass in its own frame; a mesh that cannot be read
@@ -57,12 +73,18 @@ void read_single_shape(const Reader& reader, const MapReader& map,
                        const std::filesystem::path& directory, BodySpec& body) {
   const std::vector<std::string> keys =
       with({"shape", "mass", "density", "inertia", "parts"}, kMotionKeys);
-  const ShapeRead read = read_shape_and_mass(reader, map, directory, false, keys, "a body");
+  const ShapeRead read = read_shape_and_mass(reader, map, directory, true, keys, "a body");
   body.shape = read.shape;
   body.mass_properties = shape_properties(reader, map, read);
   if (const auto inertia = map.find("inertia")) {
     body.mass_properties.inertia_about_com = read_inertia(reader, *inertia);
     body.inertia_overridden = true;
+    return;
+  }
+  if (slender_inertia(body.mass_properties.inertia_about_com)) {
+    body.slender = true;
+    body.slender_where = reader.location(read.shape_field.value_mark());
+    body.slender_key = read.shape_field.path;
     return;
   }
   try {
@@ -121,6 +143,12 @@ void read_composite(const Reader& reader, const MapReader& map,
   if (const auto inertia = map.find("inertia")) {
     body.mass_properties.inertia_about_com = read_inertia(reader, *inertia);
     body.inertia_overridden = true;
+    return;
+  }
+  if (slender_inertia(body.mass_properties.inertia_about_com)) {
+    body.slender = true;
+    body.slender_where = reader.location(parts_field.key_mark);
+    body.slender_key = parts_field.path;
     return;
   }
   try {
@@ -187,6 +215,52 @@ void check_name(const Reader& reader, const Field& where, const std::string& nam
                                           "('{}.x'), so it may not be empty or hold '.', ',', "
                                           "quotes or spaces",
                                           what, name, name));
+  }
+}
+
+void check_slender_bodies(const Scenario& scenario) {
+  const std::set<std::string> held = held_bodies(scenario, scenario.contacts);
+  for (const BodySpec& body : scenario.bodies) {
+    if (!body.slender) continue;
+    const MassProperties& mp = body.mass_properties;
+    const bool point = mp.inertia_about_com.cwiseAbs().maxCoeff() == 0.0;
+    const std::string what = point ? "a point has no inertia at all"
+                             : body.shape.kind == ShapeKind::Rod
+                                 ? "a rod has no inertia about its own axis"
+                                 : "parts on one line have no inertia about it";
+    const auto fail = [&](const std::string& why) {
+      throw ScenarioError(body.slender_where, body.slender_key, what + ": " + why);
+    };
+    if (held.count(body.name) == 0) {
+      fail(std::string("free, nothing would say how it turns about ") +
+           (point ? "its COM" : "that line") +
+           "; hold it with a hinge across it (away from a point), a slider or a weld, or give "
+           "`inertia:`");
+    }
+    const Mat3 I_G_W = body.R_WB * mp.inertia_about_com * body.R_WB.transpose();
+    const Vec3 r_G_W = body.position_W + body.R_WB * mp.com;
+    for (const JointSpec& joint : scenario.joints) {
+      if (joint.body_a != body.name && joint.body_b != body.name) continue;
+      if (joint.type == JointType::Ball || joint.type == JointType::Free) {
+        fail(
+            fmt::format("on the ball joint '{}' it could turn about the line from the pivot "
+                        "through it with nothing to say how; hinge it, or give `inertia:`",
+                        joint.name));
+      }
+      if (joint.type != JointType::Hinge) continue;
+      // Its inertia about the hinge's axis n through the joint point: n.I_G.n + m |n x d|^2.
+      const Vec3& n = joint.axis_W;
+      const Vec3 d = r_G_W - joint.at_W;
+      const double about_axis = n.dot(I_G_W * n) + mp.mass * n.cross(d).squaredNorm();
+      const double scale = I_G_W.trace() / 2.0 + mp.mass * d.squaredNorm();
+      if (!(about_axis > 1e-9 * scale)) {
+        fail(
+            fmt::format("the hinge '{}' turns it about an axis it has no inertia about (along "
+                        "it, through it), so nothing says how fast; hinge it across that line, "
+                        "or give `inertia:`",
+                        joint.name));
+      }
+    }
   }
 }
 

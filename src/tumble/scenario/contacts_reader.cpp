@@ -65,9 +65,8 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   return contact;
 }
 
-// The bodies a joint holds in the kinematic tree (multibody/kinematic_tree.hpp): every body joined
-// to ground through joints, and in a group joined only to each other, all but its root (its first
-// body that touches a plane, else its first body).
+}  // namespace
+
 std::set<std::string> held_bodies(const Scenario& scenario,
                                   const std::vector<ContactSpec>& contacts) {
   std::map<std::string, std::string> parent;
@@ -97,6 +96,8 @@ std::set<std::string> held_bodies(const Scenario& scenario,
   }
   return held;
 }
+
+namespace {
 
 void check_held_bodies(const Reader& reader, const std::vector<Field>& items,
                        const std::vector<ContactSpec>& contacts, const Scenario& scenario) {

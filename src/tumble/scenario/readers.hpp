@@ -2,6 +2,7 @@
 // The readers of the scenario's sections, one file each; scenario.cpp calls them in order.
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,16 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
 // `forces:` (forces_reader.cpp), after the bodies and joints: fills scenario.loads, impulses,
 // springs and torsional_springs.
 void read_forces(const Reader& reader, const Field& field, Scenario& scenario);
+// The bodies a joint holds in the kinematic tree (multibody/kinematic_tree.hpp): every body joined
+// to ground through joints, and in a group joined only to each other, all but its root (its first
+// body that touches a plane, else its first body) (contacts_reader.cpp).
+std::set<std::string> held_bodies(const Scenario& scenario,
+                                  const std::vector<ContactSpec>& contacts);
+// Each slender body (BodySpec::slender) is held (held_bodies), and every joint that holds it lets
+// it turn only about axes it has inertia about: a hinge whose axis gives it n.I_G.n + m |n x d|^2
+// > 0 (d from the joint point to its COM), a slider, or a weld; not a ball joint. Throws
+// ScenarioError at its shape, saying why (body_reader.cpp).
+void check_slender_bodies(const Scenario& scenario);
 // `contacts:` (contacts_reader.cpp), after the bodies and joints.
 std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
                                        const Scenario& scenario);

@@ -269,6 +269,7 @@ Scenario load_scenario_text(const std::string& text, const std::string& path,
   const bool has_system = !scenario.joints.empty() || !scenario.impulses.empty() ||
                           !scenario.springs.empty() || !scenario.torsional_springs.empty() ||
                           !scenario.contacts.empty();
+  if (needs_simulate) scenario_reading::check_slender_bodies(scenario);
   if (needs_simulate || root.has("simulate")) {
     scenario.simulate = scenario_reading::read_simulate(
         reader, root.require("simulate", "the run's settings, at least duration"),

@@ -54,7 +54,15 @@ struct BodySpec {
   // Resolved mass properties in the body frame: for a single shape, com = 0 (the frame sits at
   // the COM); for a composite, the COM of the parts in the body's frame.
   MassProperties mass_properties;
-  bool inertia_overridden = false;         // `inertia:` was given
+  bool inertia_overridden = false;  // `inertia:` was given
+  // Slender: its inertia about the COM is singular (a rod has none about its own axis, a point
+  // none at all, parts on one line none about it). Valid only where its joints allow it no turn
+  // about those axes (a hinge across a rod, or away from a point; a slider; a weld), which
+  // check_slender_bodies checks once the joints are read; `slender_where` and `slender_key` say
+  // where its shape (or parts) is written.
+  bool slender = false;
+  SourceLocation slender_where;
+  std::string slender_key;
   Vec3 position_W = Vec3::Zero();          // origin of the body frame at t = 0, world, m
   Mat3 R_WB = Mat3::Identity();            // orientation at t = 0
   Vec3 velocity_W = Vec3::Zero();          // COM velocity at t = 0, world, m/s
@@ -210,6 +218,8 @@ struct ParameterOverride {
 // for anything the contract rejects, including a missing or unreadable file (line 0).
 // With `needs_simulate` false (`tumble inertia`: the bodies are all it reads), `simulate:` may be
 // left out, and the defaults stand.
+// Slender bodies (BodySpec::slender) need joints that make their motion well-posed; without
+// `needs_simulate` (the bodies alone, for their mass properties) that is not checked.
 Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides,
                        bool needs_simulate = true);
 // The same from scenario text in memory; `path` names it in messages and places files it refers

@@ -79,7 +79,9 @@ void check_initial_state_finite(const Scenario& scenario, const Model& model,
                           const std::string& why) {
       throw ScenarioError(where.line > 0 ? where : body.where, "bodies." + body.name + key, why);
     };
-    if (!rigid.I_G_B_inv.allFinite() || !(rigid.I_G_B_inv.norm() < 1e300)) {
+    // A slender body (a rod, a point) has no inverse at all: its joints make it well-posed
+    // (check_slender_bodies), and nothing inverts its inertia.
+    if (!body.slender && (!rigid.I_G_B_inv.allFinite() || !(rigid.I_G_B_inv.norm() < 1e300))) {
       fail(body.where, "",
            fmt::format("its mass ({:.3g} kg) and size give an inertia that double precision "
                        "cannot invert (its determinant, the cube of its size, overflows or "

@@ -1,0 +1,133 @@
+// Slender bodies (docs/scenario.md, Bodies): a point or a lone rod, whose inertia about the COM
+// is singular, is a valid body where its joints allow it no turn about the axes it has no
+// inertia about; elsewhere it is refused, at its shape, saying why.
+//  - A point mass on a massless link (a point on a hinge), released from the horizontal: the
+//    pendulum's exact solution, sin(theta/2) = k sn(K(k) - w0 t; k) with k = sin(theta0/2) and
+//    w0 = sqrt(g/l) (theta from the bottom; e.g. Lawden, Elliptic Functions and Applications,
+//    1989, ch. 5), over 1,000 periods T = 4 K(k) / w0.
+//  - A uniform rod standing on a hinge at its foot with a torsional spring k (the chapter's mast,
+//    equations.md): M L^2/3 theta'' = -(k - M g L/2) theta, so it swings at
+//    omega_n = sqrt((k - M g L/2) / (M L^2/3)).
+#include <gtest/gtest.h>
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "scenario_run.hpp"
+
+namespace tumble {
+namespace {
+
+using test::Row;
+using test::run_inline_scenario;
+
+constexpr double kG = 9.81;
+
+TEST(SlenderBody, APointOnAMasslessLinkFollowsThePendulumsExactSolutionOver1000Periods) {
+  const double l = 0.8, m = 2.0, theta0 = M_PI / 2;
+  const double k = std::sin(theta0 / 2), w0 = std::sqrt(kG / l);
+  const double K = boost::math::ellint_1(k);
+  const double T = 4 * K / w0;
+  // The largest departure from the exact angle over 1,000 periods, and the period measured from
+  // the first to the thousandth pass through the bottom.
+  struct Result {
+    double worst = 0.0, period = 0.0;
+  };
+  const auto run_at = [&](double rtol) {
+    const auto run =
+        run_inline_scenario(fmt::format(R"(tumble: 1
+gravity: [0, 0, -{}]
+bodies:
+  bob: {{shape: point, mass: {}, position: [{}, 0, 0]}}
+joints:
+  pivot: {{type: hinge, body: bob, at: [0, 0, 0], axis: [0, 1, 0]}}
+simulate: {{duration: {}, integrator: dop853, rtol: {}, atol: {}, output_every: {}}}
+)",
+                                        kG, m, l, 1000 * T + T / 8, rtol, rtol * 1e-2, T / 64),
+                            "point_pendulum");
+    Result result;
+    std::vector<double> t, theta, rate;
+    for (const Row& row : run.rows) {
+      const Vec3& r = row.states[0].r_G;
+      t.push_back(row.t);
+      theta.push_back(std::atan2(r.x(), -r.z()));
+      rate.push_back(-row.states[0].omega_W.y());  // d/dt atan2(x, -z) about +y is -omega_y
+      const double exact = 2 * std::asin(k * boost::math::jacobi_sn(k, K - w0 * row.t));
+      result.worst = std::max(result.worst, std::abs(theta.back() - exact));
+      EXPECT_NEAR(r.norm(), l, 1e-12) << "the link keeps its length, t " << row.t;
+    }
+    const std::vector<double> up = test::upward_zero_crossings(t, theta, rate);
+    EXPECT_GE(up.size(), 1000u);
+    result.period = (up.back() - up.front()) / static_cast<double>(up.size() - 1);
+    return result;
+  };
+  const Result coarse = run_at(1e-10), fine = run_at(1e-12);
+  // The period, averaged over a thousand, is the exact one to a few rtol; the phase, whose error
+  // grows with time as the local errors change the energy (and so the period), stays within
+  // 1e-4 rad over the thousand periods at rtol 1e-10 and shrinks with rtol as an eighth-order
+  // method's must (rtol 100 times smaller: at least 30 times smaller).
+  EXPECT_NEAR(coarse.period, T, 1e-8 * T);
+  EXPECT_NEAR(fine.period, T, 1e-10 * T);
+  EXPECT_LT(coarse.worst, 1e-4);
+  EXPECT_LT(fine.worst, coarse.worst / 30);
+}
+
+TEST(SlenderBody, ARodOnAHingeWithATorsionalSpringSwingsAtTheMastsFrequency) {
+  const double M = 1.5, L = 1.2, a = 1e-4;
+  for (const double k : {15.0, 40.0}) {
+    const double omega_n = std::sqrt((k - M * kG * L / 2) / (M * L * L / 3));
+    const double period = 2 * M_PI / omega_n;
+    const auto run = run_inline_scenario(fmt::format(R"(tumble: 1
+gravity: [0, 0, -{}]
+parameters: {{L: {}, a: {}}}
+bodies:
+  mast: {{shape: rod, length: L, mass: {}, position: [L/2*sin(a), 0, L/2*cos(a)],
+          orientation: {{axis: [0, 1, 0], angle: a - 90 deg}}}}
+joints:
+  foot: {{type: hinge, body: mast, at: [0, 0, 0], axis: [0, 1, 0]}}
+forces:
+  - {{type: torsional_spring, bodies: [ground, mast], stiffness: {}, rest: -a}}
+simulate: {{duration: {}, integrator: dop853, rtol: 1e-12, atol: 1e-15, output_every: {}}}
+)",
+                                                     kG, L, a, M, k, 10 * period, period / 2000),
+                                         "mast");
+    std::vector<double> t, angle, rate;
+    for (const Row& row : run.rows) {
+      t.push_back(row.t);
+      angle.push_back(row.extras.coordinates[0].position + a);  // from upright
+      rate.push_back(row.extras.coordinates[0].rate);
+    }
+    const std::vector<double> up = test::upward_zero_crossings(t, angle, rate);
+    ASSERT_GE(up.size(), 5u);
+    const double measured = (up.back() - up.front()) / static_cast<double>(up.size() - 1);
+    EXPECT_NEAR(measured, period, 1e-8 * period) << "k " << k;
+  }
+}
+
+TEST(SlenderBody, AFreeRodOrOneOnABallJointOrOnAHingeAlongItIsRefusedAtItsShape) {
+  const std::string head =
+      "tumble: 1\nbodies:\n  rod: {shape: rod, length: 1, mass: 2, position: [0.5, 0, 0]}\n";
+  const std::string simulate = "simulate: {duration: 1}\n";
+  test::expect_error(head + simulate, 3, 16, "bodies.rod.shape",
+                     "a rod has no inertia about its own axis: free, nothing would say how it turns");
+  test::expect_error(head + "joints:\n  pin: {type: ball, body: rod, at: [0, 0, 0]}\n" + simulate,
+                     3, 16, "bodies.rod.shape", "on the ball joint 'pin'");
+  test::expect_error(
+      head + "joints:\n  pin: {type: hinge, body: rod, at: [0, 0, 0], axis: [1, 0, 0]}\n" +
+          simulate,
+      3, 16, "bodies.rod.shape", "the hinge 'pin' turns it about an axis it has no inertia");
+  // A point on a hinge through it.
+  test::expect_error(
+      "tumble: 1\nbodies:\n  bob: {shape: point, mass: 1}\njoints:\n  pin: {type: hinge, body: "
+      "bob, at: [0, 0, 0], axis: [0, 1, 0]}\n" +
+          simulate,
+      3, 16, "bodies.bob.shape", "a point has no inertia at all: the hinge 'pin'");
+}
+
+}  // namespace
+}  // namespace tumble

@@ -113,8 +113,9 @@ TEST(SlenderBody, AFreeRodOrOneOnABallJointOrOnAHingeAlongItIsRefusedAtItsShape)
   const std::string head =
       "tumble: 1\nbodies:\n  rod: {shape: rod, length: 1, mass: 2, position: [0.5, 0, 0]}\n";
   const std::string simulate = "simulate: {duration: 1}\n";
-  test::expect_error(head + simulate, 3, 16, "bodies.rod.shape",
-                     "a rod has no inertia about its own axis: free, nothing would say how it turns");
+  test::expect_error(
+      head + simulate, 3, 16, "bodies.rod.shape",
+      "a rod has no inertia about its own axis: free, nothing would say how it turns");
   test::expect_error(head + "joints:\n  pin: {type: ball, body: rod, at: [0, 0, 0]}\n" + simulate,
                      3, 16, "bodies.rod.shape", "on the ball joint 'pin'");
   test::expect_error(

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,30 @@ struct PlotArguments {
   int height = 500;    // pixels
 };
 
+// tumble sweep: runs at every point of a grid (or at random points) of the parameters.
+struct SweepArguments {
+  std::string scenario;
+  std::vector<std::string> sets;    // NAME=VALUE, fixed for every run
+  std::vector<std::string> vary;    // NAME=START:STOP:COUNT, or NAME=LO:HI with --random
+  long random = 0;                  // 0: the grid; else this many random points
+  std::uint64_t seed = 1;           // of the random points
+  std::vector<std::string> record;  // NAME=REDUCTION
+  int threads = 0;                  // 0: every core (shared among mpirun's processes on it)
+  std::string out_dir = ".";
+};
+
+// tumble find: where a yes/no outcome changes along one parameter.
+struct FindArguments {
+  std::string scenario;
+  std::vector<std::string> sets;
+  std::string vary;  // NAME=LO:HI
+  std::string when;  // the condition
+  double tol = 0.0;  // 0: 1e-9 of the larger bound's magnitude
+};
+
 int run_command(const RunArguments& args);
+int sweep_command(const SweepArguments& args);
+int find_command(const FindArguments& args);
 int inertia_command(const InertiaArguments& args);
 int plot_command(const PlotArguments& args);
 

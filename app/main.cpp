@@ -1,5 +1,6 @@
 // tumble: rigid-body dynamics from a scenario file. `tumble run` integrates and writes the
-// trajectory and a summary; `tumble inertia` prints mass properties.
+// trajectory and a summary; `tumble sweep` and `tumble find` run it at many parameter values;
+// `tumble inertia` prints mass properties; `tumble plot` draws a CSV's columns.
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
@@ -77,6 +78,62 @@ int main(int argc, char** argv) {
                    "theorem), in world and body axes, with its principal moments")
       ->expected(3);
 
+  SweepArguments sweep_args;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep",
+      "Run the scenario at every point of a grid of its parameters (or at seeded random points), "
+      "on every core, and under mpirun on every process; write DIR/sweep.csv, one row per run "
+      "in a fixed order (the same bytes whatever the thread or process count): the run's number, "
+      "its parameter values, status (ok, failed, invalid), accepted steps, E and |L| drift, the "
+      "recorded values and, for a run that did not finish, its message (docs/sweeps.md).\nExit "
+      "status: 0 done (runs that failed are rows), 2 bad command line (an unknown parameter, an "
+      "empty range, a malformed record), 3 invalid scenario, 5 output not writable.");
+  sweep->set_version_flag("--version", version);
+  sweep->add_option("scenario", sweep_args.scenario, "Scenario file (YAML)")->required();
+  sweep
+      ->add_option("--vary", sweep_args.vary,
+                   "NAME=START:STOP:COUNT: COUNT values of parameter NAME from START to STOP "
+                   "(numbers or expressions such as pi/4, 30 deg); with --random, NAME=LO:HI; "
+                   "repeatable (a grid: the first varies slowest)")
+      ->required();
+  sweep
+      ->add_option("--random", sweep_args.random,
+                   "Instead of the grid, this many points drawn uniformly between the bounds")
+      ->check(CLI::Range(1L, 100'000'000L));
+  sweep->add_option("--seed", sweep_args.seed, "Seed of the random points")->capture_default_str();
+  sweep->add_option("--record", sweep_args.record,
+                    "NAME=REDUCTION: a column of sweep.csv. REDUCTION is an expression over "
+                    "final(X), max(X), min(X), mean(X), time_of_max(X) (X a column or an "
+                    "expression of columns and parameters), first(EVENT), count(EVENT) (EVENT: "
+                    "CONTACT.KIND, impulse.NAME, lock.NAME, motor.NAME); repeatable");
+  sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");
+  sweep->add_option("--threads", sweep_args.threads, "Threads (default: every core)")
+      ->check(CLI::Range(1, 1024));
+  sweep->add_option("--out", sweep_args.out_dir, "Directory for sweep.csv (created if missing)")
+      ->capture_default_str();
+
+  FindArguments find_args;
+  CLI::App* find = app.add_subcommand(
+      "find",
+      "Find the value of one parameter at which a yes/no outcome of the run changes (a critical "
+      "friction, speed or stiffness), by bisection to --tol, and print the bracket and the runs "
+      "it took (docs/sweeps.md).\nExit status: 0 found, 2 bad command line (an unknown "
+      "parameter, an empty range, a malformed condition, or the same outcome at both ends), 3 "
+      "invalid scenario, 4 a run failed.");
+  find->set_version_flag("--version", version);
+  find->add_option("scenario", find_args.scenario, "Scenario file (YAML)")->required();
+  find->add_option("--vary", find_args.vary,
+                   "NAME=LO:HI: the parameter and the range to search (the outcome must differ "
+                   "at LO and HI)")
+      ->required();
+  find->add_option("--when", find_args.when,
+                   "The condition, an expression of reductions as for sweep --record, true where "
+                   "not 0: e.g. \"max(frame.angle) > pi/4\"")
+      ->required();
+  find->add_option("--tol", find_args.tol,
+                   "Width of the final bracket (default 1e-9 of the larger bound's magnitude)");
+  find->add_option("--set", find_args.sets, "Fix a parameter: NAME=VALUE");
+
   PlotArguments plot_args;
   CLI::App* plot = app.add_subcommand(
       "plot",
@@ -116,5 +173,7 @@ int main(int argc, char** argv) {
   }
   if (run->parsed()) return run_command(run_args);
   if (plot->parsed()) return plot_command(plot_args);
+  if (sweep->parsed()) return sweep_command(sweep_args);
+  if (find->parsed()) return find_command(find_args);
   return inertia_command(inertia_args);
 }

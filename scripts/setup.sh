@@ -6,6 +6,7 @@ packages=(
   g++ cmake ninja-build pkg-config clang-format clang libclang-rt-14-dev
   libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev libmuparser-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libopenmpi-dev openmpi-bin
   chromium gnuplot-nox ffmpeg
 )
 # Node.js and npm build the animation page. A machine may already have them from elsewhere

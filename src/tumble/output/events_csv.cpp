@@ -4,22 +4,9 @@
 #include <limits>
 
 #include "tumble/output/atomic_file.hpp"
+#include "tumble/output/csv_text.hpp"
 
 namespace tumble {
-
-namespace {
-
-// A text cell, quoted (RFC 4180): the summaries' texts hold commas.
-std::string quoted(const std::string& text) {
-  std::string cell = "\"";
-  for (const char c : text) {
-    if (c == '"') cell += '"';
-    cell += c;
-  }
-  return cell + "\"";
-}
-
-}  // namespace
 
 void write_events_csv(const std::filesystem::path& path, std::span<const std::string> contacts,
                       std::span<const std::string> joints,
@@ -42,14 +29,15 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
     for (; next_event < contact_events.size(); ++next_event) {
       const ContactEventRecord& e = contact_events[next_event];
       if (e.t > t || (e.t == t && !including)) break;
-      fmt::format_to(out, "{:.17g},{},{},,", e.t, quoted(contacts[e.contact]), quoted(e.what));
+      fmt::format_to(out, "{:.17g},{},{},,", e.t, csv_quoted(contacts[e.contact]),
+                     csv_quoted(e.what));
       for (std::size_t k = 0; k < 6 * joints.size(); ++k) text.push_back(',');
       text.push_back('\n');
     }
   };
   for (const JumpRecord& jump : jumps) {
     write_contact_events_before(jump.t, false);
-    fmt::format_to(out, "{:.17g},\"jump\",{},{:.17g},{:.17g}", jump.t, quoted(jump.what),
+    fmt::format_to(out, "{:.17g},\"jump\",{},{:.17g},{:.17g}", jump.t, csv_quoted(jump.what),
                    jump.kinetic_energy_before, jump.kinetic_energy_after);
     for (std::size_t j = 0; j < joints.size(); ++j) {
       const JointReaction r =

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <optional>
 #include <string_view>
+#include <unordered_map>
 
 namespace tumble {
 namespace {
@@ -78,17 +79,40 @@ std::string names_hint(const std::vector<std::string>& names) {
          " (a parameter may use only those above it)";
 }
 
+// The language's constants and units, on a parser of its own.
+void define_constants_and_units(mu::Parser& parser) {
+  parser.DefineConst("pi", std::numbers::pi);
+  parser.DefineConst("e", std::numbers::e);
+  for (const Unit& unit : kUnits) parser.DefinePostfixOprt(unit.name, unit.to_si);
+}
+
+// The functions of the expression language (sqrt, sin, ...), which no parameter may be named.
+const mu::funmap_type& language_functions() {
+  static const mu::Parser prototype;
+  return prototype.GetFunDef();
+}
+
 }  // namespace
 
+// Most numbers of a scenario are plain numbers or a parameter's name; both are read without
+// muParser, whose parser costs tens of microseconds to make and each expression microseconds to
+// compile (a sweep reads the scenario once per run). The parser is made at the first expression
+// that needs it.
 struct ExpressionEvaluator::Impl {
-  mu::Parser parser;
+  std::unordered_map<std::string, double> values;
+  std::optional<mu::Parser> parser;
+
+  mu::Parser& expression_parser() {
+    if (!parser) {
+      parser.emplace();
+      define_constants_and_units(*parser);
+      for (const auto& [name, value] : values) parser->DefineConst(name, value);
+    }
+    return *parser;
+  }
 };
 
-ExpressionEvaluator::ExpressionEvaluator() : impl_(std::make_unique<Impl>()) {
-  impl_->parser.DefineConst("pi", std::numbers::pi);
-  impl_->parser.DefineConst("e", std::numbers::e);
-  for (const Unit& unit : kUnits) impl_->parser.DefinePostfixOprt(unit.name, unit.to_si);
-}
+ExpressionEvaluator::ExpressionEvaluator() : impl_(std::make_unique<Impl>()) {}
 
 ExpressionEvaluator::~ExpressionEvaluator() = default;
 
@@ -105,7 +129,7 @@ void ExpressionEvaluator::define(const std::string& name, double value) {
                               "ms); rename the parameter",
                           "");
   }
-  const mu::funmap_type& functions = impl_->parser.GetFunDef();
+  const mu::funmap_type& functions = language_functions();
   if (functions.find(name) != functions.end()) {
     throw ExpressionError(
         "'" + name + "' is a function of the expression language; rename the " + "parameter", "");
@@ -114,10 +138,11 @@ void ExpressionEvaluator::define(const std::string& name, double value) {
     throw ExpressionError("parameter '" + name + "' is defined twice", "");
   }
   try {
-    impl_->parser.DefineConst(name, value);
+    if (impl_->parser) impl_->parser->DefineConst(name, value);
   } catch (const mu::Parser::exception_type& error) {
     throw ExpressionError("parameter '" + name + "': " + error.GetMsg(), "");
   }
+  impl_->values.emplace(name, value);
   names_.push_back(name);
 }
 
@@ -126,9 +151,16 @@ double ExpressionEvaluator::evaluate(const std::string& expression) const {
   if (text.empty()) throw ExpressionError("expected a number or an expression, got nothing", "");
   std::optional<double> value = plain_number(text);
   if (!value) {
+    if (const auto parameter = impl_->values.find(std::string(text));
+        parameter != impl_->values.end()) {
+      value = parameter->second;
+    }
+  }
+  if (!value) {
     try {
-      impl_->parser.SetExpr(std::string(text));
-      value = impl_->parser.Eval();
+      mu::Parser& parser = impl_->expression_parser();
+      parser.SetExpr(std::string(text));
+      value = parser.Eval();
     } catch (const mu::Parser::exception_type& error) {
       const bool unknown = error.GetCode() == mu::ecUNASSIGNABLE_TOKEN;
       std::string what = "expression '" + expression + "': " + error.GetMsg();
@@ -143,6 +175,47 @@ double ExpressionEvaluator::evaluate(const std::string& expression) const {
         "");
   }
   return *value;
+}
+
+struct BoundExpression::Impl {
+  mu::Parser parser;
+};
+
+BoundExpression::BoundExpression(std::string text, std::span<const Variable> variables)
+    : impl_(std::make_unique<Impl>()), text_(std::move(text)) {
+  mu::Parser& parser = impl_->parser;
+  try {
+    // Columns are named owner.field ("ball.vx"): the dot is part of a name.
+    parser.DefineNameChars("0123456789_.abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ");
+    define_constants_and_units(parser);
+    for (const Variable& variable : variables) {
+      // muParser reads the value through the pointer at each evaluation and never writes it.
+      parser.DefineVar(variable.name, const_cast<double*>(variable.value));
+    }
+    parser.SetExpr(text_);
+    // Compiles it (a syntax error throws here) and lists its names, known or not.
+    for (const auto& [name, value] : parser.GetUsedVar()) {
+      const bool known = std::any_of(variables.begin(), variables.end(),
+                                     [&](const Variable& v) { return v.name == name; });
+      if (!known) {
+        throw ExpressionError("expression '" + text_ + "': unknown name '" + name + "'", name);
+      }
+    }
+  } catch (const mu::Parser::exception_type& error) {
+    const bool unknown = error.GetCode() == mu::ecUNASSIGNABLE_TOKEN;
+    throw ExpressionError("expression '" + text_ + "': " + error.GetMsg(),
+                          unknown ? error.GetToken() : "");
+  }
+}
+
+BoundExpression::~BoundExpression() = default;
+
+double BoundExpression::evaluate() const {
+  try {
+    return impl_->parser.Eval();
+  } catch (const mu::Parser::exception_type& error) {
+    throw ExpressionError("expression '" + text_ + "': " + error.GetMsg(), "");
+  }
 }
 
 }  // namespace tumble

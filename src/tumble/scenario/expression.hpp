@@ -3,6 +3,7 @@
 // the usual operators and functions (sqrt, sin, cos, atan2, ...), the constants pi and e, the
 // parameters defined so far, and the postfix unit deg ("30 deg" = 30 pi / 180 rad).
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -46,6 +47,31 @@ class ExpressionEvaluator {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::vector<std::string> names_;
+};
+
+// An expression over variables whose values change between evaluations (a row's columns, a
+// run's parameters), compiled once and evaluated many times, with the constants and units of
+// the scenario's expressions. A variable's name may hold dots: the columns are named "ball.vx".
+class BoundExpression {
+ public:
+  struct Variable {
+    std::string name;
+    const double* value;  // read at each evaluation; must outlive the expression
+  };
+  // Throws ExpressionError for a syntax error or a name that is not among `variables`.
+  BoundExpression(std::string text, std::span<const Variable> variables);
+  ~BoundExpression();
+  BoundExpression(const BoundExpression&) = delete;
+  BoundExpression& operator=(const BoundExpression&) = delete;
+
+  // The value now (which may be infinite or NaN: a row's quotient by zero).
+  double evaluate() const;
+  const std::string& text() const { return text_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::string text_;
 };
 
 }  // namespace tumble

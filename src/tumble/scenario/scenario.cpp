@@ -15,6 +15,7 @@
 
 #include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/readers.hpp"
+#include "tumble/scenario/scenario_document.hpp"
 #include "tumble/scenario/yaml_reader.hpp"
 
 namespace tumble {
@@ -67,7 +68,8 @@ bool closes_on_its_line(std::string_view line, std::size_t column) {
   return false;
 }
 
-// The file's text; a file that cannot be read is a ScenarioError at line 0.
+}  // namespace
+
 std::string read_scenario_file(const std::string& path) {
   std::error_code error;
   const SourceLocation nowhere{path, 0, 0};
@@ -86,6 +88,8 @@ std::string read_scenario_file(const std::string& path) {
   if (!in.good() && !in.eof()) throw ScenarioError(nowhere, "", "cannot be read");
   return contents.str();
 }
+
+namespace {
 
 // A quote left open runs on over the following lines and swallows their keys, which the parser
 // accepts as text; the scenario would then be refused for a missing key far from the mistake.
@@ -231,12 +235,29 @@ std::map<std::string, double> read_parameters(const Reader& reader,
 
 Scenario load_scenario(const std::string& path, const std::vector<ParameterOverride>& overrides,
                        bool needs_simulate) {
-  return load_scenario_text(read_scenario_file(path), path, overrides, needs_simulate);
+  return ScenarioDocument::from_file(path).read(overrides, needs_simulate);
 }
 
 Scenario load_scenario_text(const std::string& text, const std::string& path,
                             const std::vector<ParameterOverride>& overrides, bool needs_simulate) {
-  const YAML::Node document = parse_yaml(text, path);
+  return ScenarioDocument::from_text(text, path).read(overrides, needs_simulate);
+}
+
+ScenarioDocument ScenarioDocument::from_file(const std::string& path) {
+  return from_text(read_scenario_file(path), path);
+}
+
+ScenarioDocument ScenarioDocument::from_text(const std::string& text, std::string path) {
+  ScenarioDocument document;
+  document.root_ = parse_yaml(text, path);
+  document.path_ = std::move(path);
+  return document;
+}
+
+Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
+                                bool needs_simulate) const {
+  const std::string& path = path_;
+  const YAML::Node& document = root_;
   ExpressionEvaluator expressions;
   std::vector<std::string> warnings;
   const Reader reader(path, expressions, &warnings);

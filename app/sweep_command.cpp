@@ -1,0 +1,156 @@
+// tumble sweep: the scenario run at every point of a grid (or at seeded random points) of its
+// parameters, on every core and, under mpirun, on every process; one row of sweep.csv per run.
+#include <fmt/core.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include "commands.hpp"
+#include "exit_status.hpp"
+#include "process_group.hpp"
+#include "sweep_setup.hpp"
+#include "tumble/output/atomic_file.hpp"
+
+namespace tumble::cli {
+namespace {
+
+// A bar on stderr, when it is a terminal and the sweep has gone on for more than 2 s.
+class ProgressBar {
+ public:
+  ProgressBar() : start_(std::chrono::steady_clock::now()), terminal_(isatty(STDERR_FILENO)) {}
+  void show(std::size_t done, std::size_t total) {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (!terminal_ || elapsed < 2.0 || total == 0) return;
+    constexpr int kWidth = 40;
+    const double fraction = static_cast<double>(done) / static_cast<double>(total);
+    const int filled = static_cast<int>(fraction * kWidth);
+    const double left = done > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    fmt::print(stderr, "\r[{:=<{}}{: <{}}] {}/{} runs, {:.0f} s left ", "", filled, "",
+               kWidth - filled, done, total, left);
+    shown_ = true;
+  }
+  ~ProgressBar() {
+    if (shown_) fmt::print(stderr, "\n");
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+  bool terminal_;
+  bool shown_ = false;
+};
+
+}  // namespace
+
+int sweep_command(const SweepArguments& args) {
+  const ProcessGroup processes;
+  const bool lead = processes.rank() == 0;
+  const auto bad_argument = [&](const std::string& why) {
+    if (lead) fmt::print(stderr, "tumble sweep: {}\n", why);
+    return kBadCommandLine;
+  };
+  if (args.out_dir.empty()) return bad_argument("--out: an empty path names no directory");
+  std::vector<VaryRange> ranges;
+  std::vector<Outcome> outcomes;
+  try {
+    for (const std::string& vary : args.vary) ranges.push_back(parse_vary(vary, args.random == 0));
+    for (const std::string& record : args.record) {
+      try {
+        outcomes.push_back(parse_record(record));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("--record " + std::string(e.what()));
+      }
+    }
+  } catch (const std::invalid_argument& e) {
+    return bad_argument(e.what());
+  }
+  SweepSpec spec;
+  if (const int status = prepare_sweep("tumble sweep", "--record", args.scenario, args.sets, ranges,
+                                       outcomes, spec);
+      status != kDone) {
+    return status;
+  }
+  constexpr std::size_t kMaxRuns = 100'000'000;
+  std::vector<std::vector<double>> points;
+  try {
+    points = args.random > 0
+                 ? random_points(ranges, static_cast<std::size_t>(args.random), args.seed)
+                 : grid_points(ranges, kMaxRuns);
+  } catch (const std::invalid_argument& e) {
+    return bad_argument(e.what());
+  }
+
+  // Rank r runs the points r, r + size, r + 2 size, ...: neighbours on a grid cost alike, so
+  // each rank gets a like share of cheap and dear runs.
+  const auto size = static_cast<std::size_t>(processes.size());
+  const auto rank = static_cast<std::size_t>(processes.rank());
+  std::vector<std::vector<double>> mine;
+  for (std::size_t i = rank; i < points.size(); i += size) mine.push_back(points[i]);
+  const int threads = args.threads > 0
+                          ? args.threads
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) /
+                                            std::max(1, processes.local_size()));
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<RunRecord> records;
+  {
+    ProgressBar bar;
+    records = run_points(
+        spec, mine, threads,
+        lead ? SweepProgress([&](std::size_t done, std::size_t total) { bar.show(done, total); })
+             : SweepProgress());
+  }
+  std::string lines;
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    lines += sweep_csv_line(rank + k * size, mine[k], records[k], spec.outcomes.size());
+  }
+  const std::vector<std::string> texts = processes.gather(lines);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!lead) return kDone;
+
+  // Each rank's lines are in its runs' order; run i is rank i mod size's next.
+  std::string csv = sweep_csv_header(spec);
+  std::vector<std::size_t> at(texts.size(), 0);
+  std::size_t not_ok = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t r = i % size;
+    const std::size_t end = texts[r].find('\n', at[r]);
+    const std::string_view line = std::string_view(texts[r]).substr(at[r], end + 1 - at[r]);
+    csv += line;
+    at[r] = end + 1;
+    // The status follows the run's number and its values, which hold no commas.
+    std::size_t cell = 0;
+    for (std::size_t commas = 0; commas <= spec.varied.size(); ++commas) {
+      cell = line.find(',', cell) + 1;
+    }
+    if (line.substr(cell, 3) != "ok,") ++not_ok;
+  }
+  const std::filesystem::path path = std::filesystem::path(args.out_dir) / "sweep.csv";
+  try {
+    std::filesystem::create_directories(path.parent_path());
+    AtomicFile file(path);
+    file.write(csv);
+    file.finish();
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "tumble sweep: {}\n", e.what());
+    return kOutputError;
+  }
+  fmt::print("sweep of {} over {}\n", args.scenario, fmt::join(spec.varied, ", "));
+  fmt::print(
+      "  runs           {} ({}), {}\n", points.size(),
+      args.random > 0 ? fmt::format("random points, seed {}", args.seed) : std::string("a grid"),
+      not_ok == 0 ? std::string("all ok")
+                  : fmt::format("{} failed or invalid (see their status and message)", not_ok));
+  fmt::print("  parallel       {} thread{} x {} process{}\n", threads, threads == 1 ? "" : "s",
+             size, size == 1 ? "" : "es");
+  fmt::print("  wall time      {:.3f} s ({:.1f} runs/s)\n", seconds,
+             static_cast<double>(points.size()) / seconds);
+  fmt::print("  sweep.csv      {}\n", path.string());
+  return kDone;
+}
+
+}  // namespace tumble::cli

@@ -1,0 +1,51 @@
+#pragma once
+// What a sweep records of each run, and what `tumble find` asks of it: an expression over
+// reductions of the run, such as `max(frame.angle) > pi/4` or `first(ball.rolls)`.
+//   final(X), max(X), min(X), mean(X), time_of_max(X): X is an expression of the trajectory's
+//     columns (ball.vx, hinge.angle, E, ...) and the scenario's parameters, over the run's rows;
+//     mean is the average over time (trapezoidal rule between rows);
+//   first(EVENT), count(EVENT): the time of an event's first occurrence (nan if none) and how
+//     many there were. EVENT is CONTACT.KIND for a contact's events (KIND one of event_kinds()),
+//     or impulse.NAME, lock.NAME, motor.NAME for the jumps at an impulse, a lock or a motor's
+//     start.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tumble/contact/contact_status.hpp"
+#include "tumble/dynamics/hybrid_state.hpp"
+
+namespace tumble {
+
+enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count };
+
+struct Reduction {
+  ReductionKind kind = ReductionKind::Final;
+  std::string argument;  // a row expression, or an EVENT name for First and Count
+  bool over_events() const { return kind == ReductionKind::First || kind == ReductionKind::Count; }
+};
+
+// "max(abs(hinge.angle)) > 0.5" becomes the expression "__r0 > 0.5" over the values of its
+// reductions, {Max, "abs(hinge.angle)"}.
+struct Outcome {
+  std::string name;                   // the sweep.csv column; for find, "condition"
+  std::string text;                   // as given
+  std::string expression;             // with each reduction replaced by __r0, __r1, ...
+  std::vector<Reduction> reductions;  // in order of appearance
+};
+
+// Throws std::invalid_argument, naming the text, when it has no reduction, a reduction without
+// its closing parenthesis or with nothing inside it.
+Outcome parse_outcome(std::string name, const std::string& text);
+// "NAME=REDUCTION" (a --record argument); NAME must be an identifier.
+Outcome parse_record(const std::string& argument);
+
+// What each contact event is named by (CONTACT.KIND): its kind, the first word of what the event
+// says ("slides", "rolls", "sticks", "apart", "touchdown", "impact", "lifts", "tips", "stops").
+const std::vector<std::string>& event_kinds();
+// Whether a contact event (by its contact's name) or a jump is the one `event` names.
+bool names_contact_event(const std::string& event, const std::string& contact,
+                         const ContactEventRecord& record);
+bool names_jump(const std::string& event, const JumpRecord& record);
+
+}  // namespace tumble

@@ -1,0 +1,208 @@
+#include "tumble/sweep/run_recorder.hpp"
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace tumble {
+
+// One reduction over the rows: an expression of the columns and parameters, and what has been
+// gathered of it so far.
+struct RunRecorder::RowReduction {
+  ReductionKind kind;
+  BoundExpression value;
+  std::size_t rows = 0;
+  double last = 0.0, best = 0.0, t_best = 0.0;
+  double t_first = 0.0, t_last = 0.0, integral = 0.0;
+
+  RowReduction(ReductionKind k, std::string text, std::span<const BoundExpression::Variable> vars)
+      : kind(k), value(std::move(text), vars) {}
+
+  void observe(double t) {
+    const double v = value.evaluate();
+    if (rows == 0) {
+      t_first = t;
+      best = v;
+      t_best = t;
+    } else {
+      integral += 0.5 * (t - t_last) * (v + last);  // trapezoidal rule between rows
+      if ((kind == ReductionKind::Min && v < best) || (kind != ReductionKind::Min && v > best)) {
+        best = v;
+        t_best = t;
+      }
+    }
+    last = v;
+    t_last = t;
+    ++rows;
+  }
+
+  double result() const {
+    if (rows == 0) return std::numeric_limits<double>::quiet_NaN();
+    switch (kind) {
+      case ReductionKind::Final:
+        return last;
+      case ReductionKind::Max:
+      case ReductionKind::Min:
+        return best;
+      case ReductionKind::TimeOfMax:
+        return t_best;
+      case ReductionKind::Mean:
+        return t_last > t_first ? integral / (t_last - t_first) : last;
+      default:
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+};
+
+namespace {
+
+// Whether the scenario can have the event `event` names; if not, why not.
+std::string event_problem(const std::string& event, const Scenario& scenario) {
+  const auto dot = event.find('.');
+  if (dot == std::string::npos) {
+    return "expected CONTACT.KIND, impulse.NAME, lock.NAME or motor.NAME";
+  }
+  const std::string source = event.substr(0, dot), name = event.substr(dot + 1);
+  if (source == "impulse") {
+    for (const ImpulseSpec& i : scenario.impulses) {
+      if (i.name == name) return "";
+    }
+    return "the scenario has no impulse " + name;
+  }
+  if (source == "lock" || source == "motor") {
+    for (const JointSpec& j : scenario.joints) {
+      if (j.name == name) return "";
+    }
+    return "the scenario has no joint " + name;
+  }
+  for (const ContactSpec& c : scenario.contacts) {
+    if (c.name != source) continue;
+    const auto& kinds = event_kinds();
+    if (std::find(kinds.begin(), kinds.end(), name) != kinds.end()) return "";
+    return fmt::format("a contact's events are {}", fmt::join(kinds, ", "));
+  }
+  return "no contact, impulse, lock or motor is named " + source;
+}
+
+std::vector<std::string> parameter_names(const Scenario& scenario) {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : scenario.parameters) names.push_back(name);
+  return names;
+}
+
+}  // namespace
+
+RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& layout,
+                         const Scenario& scenario)
+    : layout_(layout),
+      column_names_(column_names(layout)),
+      contact_names_(layout.contacts),
+      parameter_names_(parameter_names(scenario)),
+      row_(column_names_.size(), 0.0),
+      parameters_(parameter_names_.size(), 0.0) {
+  std::vector<BoundExpression::Variable> row_variables;
+  for (std::size_t i = 0; i < column_names_.size(); ++i) {
+    row_variables.push_back({column_names_[i], &row_[i]});
+  }
+  std::vector<BoundExpression::Variable> parameter_variables;
+  for (std::size_t i = 0; i < parameter_names_.size(); ++i) {
+    parameter_variables.push_back({parameter_names_[i], &parameters_[i]});
+  }
+  row_variables.insert(row_variables.end(), parameter_variables.begin(), parameter_variables.end());
+  for (const Outcome& outcome : outcomes) {
+    OutcomeSlots slots;
+    slots.reductions = outcome.reductions;
+    slots.values = std::make_unique<std::vector<double>>(outcome.reductions.size(), 0.0);
+    std::vector<BoundExpression::Variable> value_variables = parameter_variables;
+    for (std::size_t r = 0; r < outcome.reductions.size(); ++r) {
+      const Reduction& reduction = outcome.reductions[r];
+      value_variables.push_back({fmt::format("__r{}", r), &(*slots.values)[r]});
+      if (reduction.over_events()) {
+        if (const std::string why = event_problem(reduction.argument, scenario); !why.empty()) {
+          throw std::invalid_argument(
+              fmt::format("{}: event '{}': {}", outcome.text, reduction.argument, why));
+        }
+        slots.row_reduction.push_back(0);
+        continue;
+      }
+      try {
+        row_reductions_.push_back(
+            std::make_unique<RowReduction>(reduction.kind, reduction.argument, row_variables));
+      } catch (const ExpressionError& error) {
+        throw std::invalid_argument(
+            fmt::format("{}: {}{}", outcome.text, error.what(),
+                        error.unknown_name().empty()
+                            ? ""
+                            : "; the columns are the trajectory CSV's (t, BODY.x, BODY.w1, "
+                              "JOINT.angle, CONTACT.slip, E, ...) and the parameters are the "
+                              "scenario's"));
+      }
+      slots.row_reduction.push_back(row_reductions_.size() - 1);
+    }
+    try {
+      slots.expression = std::make_unique<BoundExpression>(outcome.expression, value_variables);
+    } catch (const ExpressionError& error) {
+      throw std::invalid_argument(fmt::format("{}: {}", outcome.text, error.what()));
+    }
+    outcomes_.push_back(std::move(slots));
+  }
+}
+
+RunRecorder::~RunRecorder() = default;
+
+bool RunRecorder::fits(const ColumnLayout& layout, const Scenario& scenario) const {
+  return column_names(layout) == column_names_ && layout.contacts == contact_names_ &&
+         parameter_names(scenario) == parameter_names_;
+}
+
+void RunRecorder::start(const Scenario& scenario) {
+  std::size_t i = 0;
+  for (const auto& [name, value] : scenario.parameters) parameters_[i++] = value;
+  for (const auto& reduction : row_reductions_) {
+    reduction->rows = 0;
+    reduction->integral = 0.0;
+  }
+}
+
+void RunRecorder::observe(const OutputRow& row) {
+  if (row_reductions_.empty()) return;  // events only: the rows are not needed
+  std::size_t i = 0;
+  walk_columns(layout_, &row,
+               [&](std::string_view, std::string_view, double value) { row_[i++] = value; });
+  for (const auto& reduction : row_reductions_) reduction->observe(row.t);
+}
+
+std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> events,
+                                        std::span<const JumpRecord> jumps) const {
+  std::vector<double> results;
+  for (const OutcomeSlots& slots : outcomes_) {
+    for (std::size_t r = 0; r < slots.reductions.size(); ++r) {
+      const Reduction& reduction = slots.reductions[r];
+      double& value = (*slots.values)[r];
+      if (!reduction.over_events()) {
+        value = row_reductions_[slots.row_reduction[r]]->result();
+        continue;
+      }
+      // Contact events and jumps are each in time order; the first is the earlier of the two.
+      double first = std::numeric_limits<double>::quiet_NaN();
+      double count = 0.0;
+      for (const ContactEventRecord& e : events) {
+        if (!names_contact_event(reduction.argument, contact_names_[e.contact], e)) continue;
+        if (count == 0.0 || e.t < first) first = e.t;
+        ++count;
+      }
+      for (const JumpRecord& jump : jumps) {
+        if (!names_jump(reduction.argument, jump)) continue;
+        if (count == 0.0 || jump.t < first) first = jump.t;
+        ++count;
+      }
+      value = reduction.kind == ReductionKind::First ? first : count;
+    }
+    results.push_back(slots.expression->evaluate());
+  }
+  return results;
+}
+
+}  // namespace tumble

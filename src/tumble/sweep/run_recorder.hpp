@@ -1,0 +1,55 @@
+#pragma once
+// The outcomes of one run (outcome.hpp), accumulated row by row as the run goes: no row is kept.
+// A recorder is made once for a scenario's columns and parameters, its expressions compiled
+// then, and reused for each run of a sweep on its thread.
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tumble/output/columns.hpp"
+#include "tumble/scenario/expression.hpp"
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/sweep/outcome.hpp"
+
+namespace tumble {
+
+class RunRecorder {
+ public:
+  // Throws std::invalid_argument, naming the outcome, for an expression that does not compile
+  // (a name that is neither a column nor a parameter) or an event the scenario cannot have.
+  RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& layout,
+              const Scenario& scenario);
+  ~RunRecorder();
+
+  // Whether runs of this scenario have the columns and parameters the recorder was made for.
+  bool fits(const ColumnLayout& layout, const Scenario& scenario) const;
+  // A new run of it: its parameter values, and nothing accumulated.
+  void start(const Scenario& scenario);
+  void observe(const OutputRow& row);
+  // Each outcome's value, after the last row, with the run's events.
+  std::vector<double> finish(std::span<const ContactEventRecord> events,
+                             std::span<const JumpRecord> jumps) const;
+
+ private:
+  struct RowReduction;
+  ColumnLayout layout_;
+  std::vector<std::string> column_names_;
+  std::vector<std::string> contact_names_;
+  std::vector<std::string> parameter_names_;
+  std::vector<double> row_;         // the columns' values at the row being observed
+  std::vector<double> parameters_;  // the run's parameter values, by parameter_names_
+  std::vector<std::unique_ptr<RowReduction>> row_reductions_;
+  // Per outcome: its expression over its reductions' values, and where each value comes from
+  // (an index into row_reductions_, or an event reduction).
+  struct OutcomeSlots {
+    std::unique_ptr<BoundExpression> expression;
+    std::unique_ptr<std::vector<double>> values;  // what the expression reads, __r0, __r1, ...
+    std::vector<Reduction> reductions;
+    std::vector<std::size_t> row_reduction;  // for reductions over rows
+  };
+  std::vector<OutcomeSlots> outcomes_;
+};
+
+}  // namespace tumble

@@ -1,0 +1,152 @@
+#include "tumble/sweep/sweep.hpp"
+
+#include <fmt/format.h>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "tumble/output/csv_text.hpp"
+#include "tumble/simulation/simulation.hpp"
+#include "tumble/sweep/run_recorder.hpp"
+
+namespace tumble {
+
+const char* run_status_name(RunStatus status) {
+  switch (status) {
+    case RunStatus::Ok:
+      return "ok";
+    case RunStatus::Failed:
+      return "failed";
+    case RunStatus::Invalid:
+      return "invalid";
+  }
+  return "?";
+}
+
+SweepRunner::SweepRunner(const SweepSpec& spec)
+    : spec_(&spec), document_(ScenarioDocument::from_text(spec.text, spec.path)) {}
+
+SweepRunner::~SweepRunner() = default;
+
+RunRecord SweepRunner::run(std::span<const double> values) {
+  RunRecord record;
+  std::vector<ParameterOverride> overrides = spec_->fixed;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    // 17 significant digits read back as the same double.
+    overrides.push_back({spec_->varied[i], fmt::format("{:.17g}", values[i])});
+  }
+  try {
+    const Scenario scenario = document_.read(overrides);
+    const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
+    PreparedSimulation simulation = prepare_run(*model);
+    const ColumnLayout layout = column_layout(scenario, *simulation.formulation);
+    if (!recorder_ || !recorder_->fits(layout, scenario)) {
+      recorder_ = std::make_unique<RunRecorder>(spec_->outcomes, layout, scenario);
+    }
+    recorder_->start(scenario);
+    const SimulationResult result =
+        run_simulation(simulation, [&](double t, std::span<const BodyState> states,
+                                       const SystemQuantities& q, const RowExtras& extras) {
+          recorder_->observe({t, states, &q, &extras});
+        });
+    record.steps = result.report.stats.accepted_steps;
+    const ConservationReport& c = result.conservation;
+    const double energy_scale = std::max(std::abs(c.initial_energy), c.max_kinetic_energy);
+    const double momentum_scale = std::max(c.initial_angular_momentum, c.max_angular_momentum);
+    record.energy_drift = energy_scale > 0.0 ? c.max_energy_change / energy_scale : 0.0;
+    record.momentum_drift =
+        momentum_scale > 0.0 ? c.max_angular_momentum_change / momentum_scale : 0.0;
+    if (!result.report.completed) {
+      record.status = RunStatus::Failed;
+      record.message = "integration failed: " + result.report.failure;
+      return record;
+    }
+    record.values = recorder_->finish(result.contact_events, result.jumps);
+  } catch (const ScenarioError& e) {
+    record.status = RunStatus::Invalid;
+    record.message = e.what();
+  } catch (const std::exception& e) {  // an outcome that cannot be recorded at these values
+    record.status = RunStatus::Invalid;
+    record.message = e.what();
+  }
+  return record;
+}
+
+std::vector<RunRecord> run_points(const SweepSpec& spec,
+                                  std::span<const std::vector<double>> points, int threads,
+                                  const SweepProgress& progress) {
+  std::vector<RunRecord> records(points.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0};
+  std::mutex mutex;
+  std::condition_variable finished;
+  std::exception_ptr failure;
+  const auto work = [&] {
+    try {
+      SweepRunner runner(spec);
+      for (std::size_t i = next++; i < points.size(); i = next++) {
+        records[i] = runner.run(points[i]);
+        ++done;
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+      next = points.size();
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    finished.notify_all();
+  };
+  const std::size_t count = std::max<std::size_t>(
+      1, std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), points.size()));
+  std::vector<std::thread> workers;
+  for (std::size_t k = 1; k < count; ++k) workers.emplace_back(work);
+  if (progress) {
+    // This thread reports; the others run.
+    workers.emplace_back(work);
+    std::unique_lock<std::mutex> lock(mutex);
+    while (done < points.size() && !failure) {
+      finished.wait_for(lock, std::chrono::milliseconds(100));
+      lock.unlock();
+      progress(done, points.size());
+      lock.lock();
+    }
+  } else {
+    work();
+  }
+  for (std::thread& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
+  return records;
+}
+
+std::string sweep_csv_header(const SweepSpec& spec) {
+  std::string line = "run";
+  for (const std::string& name : spec.varied) line += "," + name;
+  line += ",status,steps,E_drift,L_drift";
+  for (const Outcome& outcome : spec.outcomes) line += "," + outcome.name;
+  return line + ",message\n";
+}
+
+std::string sweep_csv_line(std::size_t run, std::span<const double> point, const RunRecord& record,
+                           std::size_t outcomes) {
+  fmt::memory_buffer text;
+  auto out = std::back_inserter(text);
+  fmt::format_to(out, "{}", run);
+  for (const double value : point) fmt::format_to(out, ",{:.17g}", value);
+  fmt::format_to(out, ",{},{},{:.17g},{:.17g}", run_status_name(record.status), record.steps,
+                 record.energy_drift, record.momentum_drift);
+  // A run that did not finish has no outcomes: empty cells, then why.
+  for (std::size_t i = 0; i < outcomes; ++i) {
+    if (i < record.values.size()) {
+      fmt::format_to(out, ",{:.17g}", record.values[i]);
+    } else {
+      text.push_back(',');
+    }
+  }
+  fmt::format_to(out, ",{}\n", record.message.empty() ? std::string() : csv_quoted(record.message));
+  return fmt::to_string(text);
+}
+
+}  // namespace tumble

@@ -1,0 +1,81 @@
+#pragma once
+// Many runs of one scenario at other parameter values: the runs of `tumble sweep` and
+// `tumble find`. Each thread reads the scenario from a document it parsed once (reading a parsed
+// document costs microseconds; parsing, a fifth of a millisecond), builds that run's model and
+// records the outcomes as the rows go by. A run's result depends on its parameter values alone,
+// never on the thread or process it ran on, so a sweep's rows are the same bytes however it is
+// shared out.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tumble/scenario/scenario.hpp"
+#include "tumble/scenario/scenario_document.hpp"
+#include "tumble/sweep/outcome.hpp"
+
+namespace tumble {
+
+class RunRecorder;
+
+enum class RunStatus {
+  Ok,       // ran to the end
+  Failed,   // the integration failed (tumble run's exit 4)
+  Invalid,  // the scenario is invalid at these values (tumble run's exit 3)
+};
+const char* run_status_name(RunStatus status);
+
+struct RunRecord {
+  RunStatus status = RunStatus::Ok;
+  std::string message;  // why it failed or is invalid
+  long steps = 0;       // accepted steps
+  // max |E - E0| over the larger of |E0| and the largest KE; max ||L| - |L0|| over the largest
+  // |L| (L about the origin): tumble run's summary's drifts.
+  double energy_drift = 0.0, momentum_drift = 0.0;
+  std::vector<double> values;  // one per outcome; empty unless Ok
+};
+
+// The parameters a sweep sets, and to what, on top of fixed --set overrides.
+struct SweepSpec {
+  std::string text, path;                // the scenario's text and file name
+  std::vector<ParameterOverride> fixed;  // --set
+  std::vector<std::string> varied;       // the parameters each point gives values for
+  std::vector<Outcome> outcomes;         // what each run records
+};
+
+// One thread's runner: its own parsed document and recorder.
+class SweepRunner {
+ public:
+  explicit SweepRunner(const SweepSpec& spec);  // throws ScenarioError if the text does not parse
+  ~SweepRunner();
+  SweepRunner(const SweepRunner&) = delete;
+  SweepRunner& operator=(const SweepRunner&) = delete;
+
+  // A run at `values` (one per SweepSpec::varied). Never throws for what a run meets: an invalid
+  // scenario or a failed integration is the record's status.
+  RunRecord run(std::span<const double> values);
+
+ private:
+  const SweepSpec* spec_;
+  ScenarioDocument document_;
+  std::unique_ptr<RunRecorder> recorder_;
+};
+
+// Called on the calling thread about ten times a second while the runs go on.
+using SweepProgress = std::function<void(std::size_t done, std::size_t total)>;
+
+// Runs every point on `threads` threads (at least 1); the records are in the points' order.
+std::vector<RunRecord> run_points(const SweepSpec& spec,
+                                  std::span<const std::vector<double>> points, int threads,
+                                  const SweepProgress& progress = {});
+
+// sweep.csv: "run,<varied...>,status,steps,E_drift,L_drift,<outcomes...>,message", numbers to
+// 17 significant digits (they read back to the same doubles), the message quoted.
+std::string sweep_csv_header(const SweepSpec& spec);
+// A run's line, with `outcomes` cells for its outcomes (empty where it did not finish).
+std::string sweep_csv_line(std::size_t run, std::span<const double> point, const RunRecord& record,
+                           std::size_t outcomes);
+
+}  // namespace tumble

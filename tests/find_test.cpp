@@ -1,0 +1,95 @@
+// tumble find reproduces the chapter's critical values (equations.md, 6.8): the Cubli's wheel
+// speed, the critical friction of a rolling sphere, cylinder and ring, and the mast's spring,
+// each to 1e-6 of the closed form or better; and it refuses a range whose ends agree.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_files.hpp"
+#include "tumble/scenario/scenario_document.hpp"
+#include "tumble/sweep/find.hpp"
+
+namespace tumble {
+namespace {
+
+SweepSpec find_spec(const std::string& example, std::vector<ParameterOverride> fixed,
+                    const std::string& parameter, const std::string& condition) {
+  SweepSpec spec;
+  spec.path = std::string(TUMBLE_SOURCE_DIR) + "/examples/" + example;
+  spec.text = read_scenario_file(spec.path);
+  spec.fixed = std::move(fixed);
+  spec.varied = {parameter};
+  spec.outcomes = {parse_outcome("condition", condition)};
+  return spec;
+}
+
+double middle(const FindResult& found) {
+  return found.lo + 0.5 * (found.hi - found.lo);
+}
+
+TEST(FindCritical, CubliWheelSpeed) {
+  // w0_crit = sqrt((sqrt(2) - 1) (M + m) g L I_total) / (m R^2), I_total about the corner with
+  // the wheel locked (equations.md, 6), for the example's values.
+  const double M = 0.8, m = 0.3, L = 0.15, R = 0.06, g = 9.81;
+  const double I_total = M * L * L / 3 + (M + m) * L * L / 2 + m * R * R;
+  const double w0_crit = std::sqrt((std::sqrt(2.0) - 1) * (M + m) * g * L * I_total) / (m * R * R);
+  // The brake locks at 1 ns: gravity takes about 7e-9 of the angular momentum before it (the
+  // example's 1 ms takes 0.7%). The frame passes upright where the corner hinge's angle passes
+  // pi/4 (it turns about -y to rise); one that falls back never reaches it.
+  const SweepSpec spec =
+      find_spec("cubli.yaml", {{"t_lock", "1e-9"}}, "w0", "min(corner.angle) < -pi/4");
+  const FindResult found = find_change(spec, 0.9 * w0_crit, 1.1 * w0_crit, 1e-8 * w0_crit);
+  EXPECT_FALSE(found.at_lo);
+  EXPECT_TRUE(found.at_hi);
+  EXPECT_LE(found.hi - found.lo, 1e-8 * w0_crit);
+  EXPECT_NEAR(middle(found), w0_crit, 1e-6 * w0_crit);
+  EXPECT_LT(found.runs, 40);
+}
+
+// mu_crit = tan(theta) I_G / (I_G + M R^2): 2/7, 1/3, 1/2 of tan(theta) (equations.md, 2). Below
+// it the body slides from the start.
+void expect_critical_friction(const char* contact, double fraction) {
+  const double mu_crit = fraction * std::tan(M_PI / 6);
+  const SweepSpec spec = find_spec("sweeps/ramp_critical_friction.yaml", {}, "mu",
+                                   std::string("count(") + contact + ".slides) > 0");
+  const FindResult found = find_change(spec, 0.05, 0.5, 5e-7 * mu_crit);
+  EXPECT_TRUE(found.at_lo) << contact;
+  EXPECT_FALSE(found.at_hi) << contact;
+  EXPECT_NEAR(middle(found), mu_crit, 1e-6 * mu_crit) << contact;
+}
+
+TEST(FindCritical, RollingSphereFriction) {
+  expect_critical_friction("ramp_sphere", 2.0 / 7);
+}
+TEST(FindCritical, RollingCylinderFriction) {
+  expect_critical_friction("ramp_cylinder", 1.0 / 3);
+}
+TEST(FindCritical, RollingRingFriction) {
+  expect_critical_friction("ramp_ring", 1.0 / 2);
+}
+
+TEST(FindCritical, MastSpring) {
+  // Upright is stable only for k > M g L / 2 (equations.md, 3).
+  const double k_crit = 3.0 * 9.81 * 2.0 / 2;
+  const SweepSpec spec =
+      find_spec("sweeps/mast_critical_spring.yaml", {}, "k", "max(abs(base.angle)) > theta_seen");
+  const FindResult found = find_change(spec, 20.0, 40.0, 1e-7 * k_crit);
+  EXPECT_TRUE(found.at_lo);
+  EXPECT_FALSE(found.at_hi);
+  EXPECT_NEAR(middle(found), k_crit, 1e-6 * k_crit);
+}
+
+TEST(FindCritical, RefusesARangeWhoseEndsAgree) {
+  const SweepSpec spec =
+      find_spec("sweeps/mast_critical_spring.yaml", {}, "k", "max(abs(base.angle)) > theta_seen");
+  try {
+    find_change(spec, 31.0, 40.0, 1e-6);
+    FAIL() << "no error";
+  } catch (const FindError& e) {
+    EXPECT_TRUE(e.same_at_both_ends());
+    EXPECT_NE(std::string(e.what()).find("false at both ends"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tumble

@@ -1,0 +1,100 @@
+// tumble sweep and tumble find as a user runs them: sweep.csv the same bytes on 1 and 2 threads,
+// and each bad argument refused with its exit status and its name.
+#include <gtest/gtest.h>
+
+#include "run_tumble.hpp"
+#include "test_files.hpp"
+
+namespace tumble {
+namespace {
+
+using test::quote_for_shell;
+using test::run_tumble;
+
+const std::string kExamples = std::string(TUMBLE_SOURCE_DIR) + "/examples/";
+
+TEST(SweepCommand, SameFileOnOneAndTwoThreads) {
+  const auto dir = test::fresh_test_dir("SweepCommand", "threads");
+  const std::string common = "sweep " + kExamples +
+                             "tumbling_prism.yaml --vary a=3:5:4 --vary c=1.5:2.5:3 --record "
+                             "'flip=time_of_max(-prism.w3)' --record 'top=max(prism.w1)' --out ";
+  const auto one = run_tumble(common + (dir / "one").string() + " --threads 1");
+  ASSERT_EQ(one.status, 0) << one.out;
+  const auto two = run_tumble(common + (dir / "two").string() + " --threads 2");
+  ASSERT_EQ(two.status, 0) << two.out;
+  const std::string csv = test::read_file(dir / "one" / "sweep.csv");
+  EXPECT_EQ(csv, test::read_file(dir / "two" / "sweep.csv"));
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "run,a,c,status,steps,E_drift,L_drift,flip,top,message");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 13);
+  EXPECT_NE(one.out.find("12 (a grid), all ok"), std::string::npos) << one.out;
+}
+
+TEST(SweepCommand, RandomPointsAreSeeded) {
+  const auto dir = test::fresh_test_dir("SweepCommand", "random");
+  const std::string common =
+      "sweep " + kExamples + "tumbling_prism.yaml --vary a=3:5 --random 5 --record 'w=final(E)'";
+  ASSERT_EQ(run_tumble(common + " --seed 7 --out " + (dir / "a").string()).status, 0);
+  ASSERT_EQ(run_tumble(common + " --seed 7 --threads 1 --out " + (dir / "b").string()).status, 0);
+  ASSERT_EQ(run_tumble(common + " --seed 8 --out " + (dir / "c").string()).status, 0);
+  EXPECT_EQ(test::read_file(dir / "a" / "sweep.csv"), test::read_file(dir / "b" / "sweep.csv"));
+  EXPECT_NE(test::read_file(dir / "a" / "sweep.csv"), test::read_file(dir / "c" / "sweep.csv"));
+}
+
+TEST(SweepCommand, BadArgumentsExitTwoAndNameThem) {
+  const std::string prism = kExamples + "tumbling_prism.yaml";
+  const struct {
+    std::string arguments, named;
+  } cases[] = {
+      {"sweep " + prism + " --vary q=1:2:3", "no parameter q"},
+      {"sweep " + prism + " --vary a=2:2:3", "--vary a=2:2:3: empty range"},
+      {"sweep " + prism + " --vary a=2:1", "--vary a=2:1"},
+      {"sweep " + prism + " --vary a=1:2:0", "empty range"},
+      {"sweep " + prism + " --vary a=1:2:3 --vary a=1:2:2", "varied twice"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'x=max(prism.w3'", "is not closed"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'x=prism.w3'", "names no reduction"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'x=max(prism.w9)'", "prism.w9"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'x=first(floor.rolls)'", "floor.rolls"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'max(prism.w3)'", "NAME=REDUCTION"},
+      {"sweep " + prism + " --vary a=1:3:2 --out ''", "--out"},
+      {"find " + prism + " --vary a=1:2:3 --when 'max(prism.w3) > 0'", "NAME=LO:HI"},
+      {"find " + prism + " --vary a=3:5 --when 'prism.w3 > 0'", "--when"},
+      {"find " + prism + " --vary a=3:5 --when 'min(prism.w3) > 2'", "false at both ends"},
+  };
+  for (const auto& c : cases) {
+    const auto result = run_tumble(c.arguments);
+    EXPECT_EQ(result.status, 2) << c.arguments << "\n" << result.out;
+    EXPECT_NE(result.out.find(c.named), std::string::npos) << c.arguments << "\n" << result.out;
+  }
+}
+
+TEST(SweepCommand, ScenarioErrorExitsThree) {
+  const auto dir = test::fresh_test_dir("SweepCommand", "invalid");
+  const auto bad = dir / "bad.yaml";
+  {
+    std::ofstream out(bad);
+    out << "tumble: 1\nparameters: {m: 1}\nbodies:\n  b: {shape: sphere, radius: 1, mass: -m}\n"
+           "simulate: {duration: 1}\n";
+  }
+  for (const std::string command : {"sweep", "find"}) {
+    const std::string vary = command == "sweep" ? " --vary m=1:2:2" : " --vary m=1:2";
+    const std::string when = command == "sweep" ? "" : " --when 'max(b.z) > 0'";
+    const auto result = run_tumble(command + " " + bad.string() + vary + when);
+    EXPECT_EQ(result.status, 3) << result.out;
+    EXPECT_NE(result.out.find("bad.yaml:4:"), std::string::npos) << result.out;
+  }
+}
+
+TEST(FindCommand, PrintsTheBracketAndTheRuns) {
+  const auto result =
+      run_tumble("find " + kExamples + "sweeps/mast_critical_spring.yaml --vary k=20:40 --when " +
+                 quote_for_shell("max(abs(base.angle)) > theta_seen") + " --tol 1e-4");
+  ASSERT_EQ(result.status, 0) << result.out;
+  // M g L / 2 = 29.43 N m/rad (the middle of a bracket 1e-4 wide is within 5e-5 of it);
+  // bisection from a width of 20 to 1e-4 takes 18 halvings and the
+  // two ends.
+  EXPECT_NE(result.out.find("k              29.4299"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("runs           20\n"), std::string::npos) << result.out;
+}
+
+}  // namespace
+}  // namespace tumble

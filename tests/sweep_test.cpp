@@ -1,0 +1,193 @@
+// tumble sweep's pieces against closed forms: each reduction over a free fall's rows, an event's
+// first time and count against the crate's slip stop, the grid's and the random points' order,
+// sweep.csv the same bytes on 1 and 2 threads, and runs that fail or are invalid as rows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "test_files.hpp"
+#include "tumble/scenario/scenario_document.hpp"
+#include "tumble/sweep/parameter_space.hpp"
+#include "tumble/sweep/sweep.hpp"
+
+namespace tumble {
+namespace {
+
+constexpr double kG = 9.81;
+
+SweepSpec spec_for(const std::string& text, std::vector<std::string> varied,
+                   const std::vector<std::string>& records) {
+  SweepSpec spec;
+  spec.text = text;
+  spec.path = "sweep_test.yaml";
+  spec.varied = std::move(varied);
+  for (const std::string& r : records) spec.outcomes.push_back(parse_record(r));
+  return spec;
+}
+
+// A ball dropped from z0 at rest: z = z0 - g t^2 / 2, vz = -g t, rows every h to T.
+const char* const kFall = R"(tumble: 1
+parameters: {z0: 10, T: 1, h: 0.01}
+gravity: [0, 0, -9.81]
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: 2, position: [0, 0, z0]}
+simulate: {duration: T, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: h}
+)";
+
+TEST(SweepReductions, FreeFallAgainstItsClosedForms) {
+  const SweepSpec spec =
+      spec_for(kFall, {"z0"},
+               {"zf=final(ball.z)", "ztop=max(ball.z)", "zlow=min(ball.z)", "zmean=mean(ball.z)",
+                "tfast=time_of_max(-ball.vz)", "drop=max(ball.z) - final(ball.z)",
+                "scaled=final(ball.vz / T)", "moving=min(abs(ball.vz)) < 1e-300"});
+  SweepRunner runner(spec);
+  const double z0 = 7.5;
+  const RunRecord r = runner.run(std::vector<double>{z0});
+  ASSERT_EQ(r.status, RunStatus::Ok) << r.message;
+  ASSERT_EQ(r.values.size(), 8u);
+  // The integrator is exact for a quadratic (dop853 to round-off): 1e-12 of the scale.
+  const double T = 1.0, h = 0.01;
+  EXPECT_NEAR(r.values[0], z0 - kG * T * T / 2, 1e-12 * z0);
+  EXPECT_NEAR(r.values[1], z0, 1e-12 * z0);
+  EXPECT_NEAR(r.values[2], z0 - kG * T * T / 2, 1e-12 * z0);
+  // The trapezoidal mean of a parabola over rows h apart falls short of the exact mean
+  // z0 - g T^2/6 by h^2 g / 12 (the rule's error, f'' h^2 / 12 on average, with f'' = -g).
+  EXPECT_NEAR(r.values[3], z0 - kG * T * T / 6 - h * h * kG / 12, 1e-11 * z0);
+  EXPECT_DOUBLE_EQ(r.values[4], T);  // the speed is greatest at the last row
+  EXPECT_NEAR(r.values[5], kG * T * T / 2, 1e-12 * z0);
+  EXPECT_NEAR(r.values[6], -kG * T / T, 1e-12 * kG);
+  EXPECT_EQ(r.values[7], 1.0);  // at rest at t = 0: |vz| = 0 exactly in the first row
+  // E is conserved to the integration's error.
+  EXPECT_LT(r.energy_drift, 1e-12);
+}
+
+TEST(SweepReductions, EventsFirstTimeAndCountAgainstTheCratesSlipStop) {
+  const std::string text =
+      test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/box_slides_to_rest.yaml");
+  const SweepSpec spec = spec_for(text, {"v0"},
+                                  {"stop=first(floor.stops)", "stops=count(floor.stops)",
+                                   "lifts=count(floor.lifts)", "never=first(floor.impact)"});
+  SweepRunner runner(spec);
+  const double mu = 0.3;
+  for (const double v0 : {1.0, 3.0}) {
+    const RunRecord r = runner.run(std::vector<double>{v0});
+    ASSERT_EQ(r.status, RunStatus::Ok) << r.message;
+    // t_stop = v0 / (mu g), located by the slip-stop event to the integrator's precision.
+    EXPECT_NEAR(r.values[0], v0 / (mu * kG), 1e-9 * v0 / (mu * kG)) << v0;
+    EXPECT_EQ(r.values[1], 1.0);
+    EXPECT_EQ(r.values[2], 0.0);
+    EXPECT_TRUE(std::isnan(r.values[3]));  // no impact: first() of nothing is nan
+  }
+}
+
+TEST(SweepReductions, MalformedOrUnknownIsRefusedWithTheText) {
+  EXPECT_THROW(parse_record("x=final(ball.z"), std::invalid_argument);
+  EXPECT_THROW(parse_record("x=max()"), std::invalid_argument);
+  EXPECT_THROW(parse_record("x=ball.z"), std::invalid_argument);  // no reduction
+  EXPECT_THROW(parse_record("=max(ball.z)"), std::invalid_argument);
+  EXPECT_THROW(parse_record("1x=max(ball.z)"), std::invalid_argument);
+  const Outcome o = parse_outcome("c", "max(abs(a.b)) > 1e-5 && count(f.slides) == 0");
+  EXPECT_EQ(o.expression, "__r0 > 1e-5 && __r1 == 0");
+  ASSERT_EQ(o.reductions.size(), 2u);
+  EXPECT_EQ(o.reductions[0].argument, "abs(a.b)");
+  EXPECT_EQ(o.reductions[1].kind, ReductionKind::Count);
+  // A name that is no column, or an event the scenario cannot have, is refused when the run is
+  // set up: the record's row says why (the command line refuses it before any run).
+  const SweepSpec unknown = spec_for(kFall, {"z0"}, {"x=max(ball.zz)"});
+  SweepRunner runner(unknown);
+  const RunRecord r = runner.run(std::vector<double>{1.0});
+  EXPECT_EQ(r.status, RunStatus::Invalid);
+  EXPECT_NE(r.message.find("ball.zz"), std::string::npos) << r.message;
+}
+
+TEST(SweepPoints, GridOrderEndsAndRandomDraws) {
+  const std::vector<VaryRange> ranges = {parse_vary("a=0:1:3", true),
+                                         parse_vary("b=30 deg:pi/2:2", true)};
+  const auto grid = grid_points(ranges, 1000);
+  ASSERT_EQ(grid.size(), 6u);
+  // The first range varies slowest; the ends are exactly START and STOP.
+  EXPECT_EQ(grid[0], (std::vector<double>{0.0, M_PI / 6}));
+  EXPECT_EQ(grid[1], (std::vector<double>{0.0, M_PI / 2}));
+  EXPECT_EQ(grid[2][0], 0.5);
+  EXPECT_EQ(grid[5], (std::vector<double>{1.0, M_PI / 2}));
+  EXPECT_THROW(grid_points(ranges, 5), std::invalid_argument);
+  EXPECT_EQ(grid_points(std::vector<VaryRange>{parse_vary("a=2:2:1", true)}, 10)[0][0], 2.0);
+
+  const std::vector<VaryRange> bounds = {parse_vary("a=-1:1", false), parse_vary("b=5:6", false)};
+  const auto draws = random_points(bounds, 1000, 42);
+  EXPECT_EQ(draws, random_points(bounds, 1000, 42));
+  EXPECT_NE(draws, random_points(bounds, 1000, 43));
+  double mean = 0.0;
+  for (const auto& p : draws) {
+    EXPECT_GE(p[0], -1.0);
+    EXPECT_LT(p[0], 1.0);
+    EXPECT_GE(p[1], 5.0);
+    EXPECT_LT(p[1], 6.0);
+    mean += p[0] / 1000.0;
+  }
+  // Uniform on [-1, 1): the mean of 1000 draws has standard deviation 1/sqrt(3000) = 0.018.
+  EXPECT_LT(std::abs(mean), 5 * 0.0183);
+
+  for (const char* bad : {"a=1:0", "a=1:1", "a", "a=1", "a=x:1"}) {
+    EXPECT_THROW(parse_vary(bad, false), std::invalid_argument) << bad;
+  }
+  for (const char* bad : {"a=0:1:0", "a=0:1", "a=1:1:2", "a=0:1:2.5", "a=0:1:-3"}) {
+    EXPECT_THROW(parse_vary(bad, true), std::invalid_argument) << bad;
+  }
+}
+
+std::string csv_of(const SweepSpec& spec, const std::vector<std::vector<double>>& points,
+                   int threads) {
+  const std::vector<RunRecord> records = run_points(spec, points, threads);
+  std::string csv = sweep_csv_header(spec);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    csv += sweep_csv_line(i, points[i], records[i], spec.outcomes.size());
+  }
+  return csv;
+}
+
+TEST(SweepThreads, SameBytesOnOneAndTwoThreads) {
+  for (const char* stem : {"tumbling_prism", "backspin_disk"}) {
+    const std::string text =
+        test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/" + stem + ".yaml");
+    const bool prism = std::string(stem) == "tumbling_prism";
+    const SweepSpec spec =
+        spec_for(text, {prism ? "a" : "v0"},
+                 {prism ? "w3=min(prism.w3)" : "roll=first(floor.rolls)", "E=final(E)"});
+    const auto points =
+        grid_points(std::vector<VaryRange>{parse_vary(prism ? "a=3:5:6" : "v0=1:4:6", true)}, 100);
+    const std::string one = csv_of(spec, points, 1);
+    EXPECT_EQ(one, csv_of(spec, points, 2)) << stem;
+    EXPECT_EQ(one, csv_of(spec, points, 5)) << stem;  // more threads than a core
+    EXPECT_EQ(std::count(one.begin(), one.end(), '\n'), 7) << one;
+    EXPECT_EQ(one.find("failed"), std::string::npos) << one;
+  }
+}
+
+TEST(SweepRows, AFailedOrInvalidRunIsARowAndTheSweepGoesOn) {
+  const char* const text = R"(tumble: 1
+parameters: {m: 1, n: 100000}
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: m, position: [0, 0, 1], angular_velocity: [0, 0, 1]}
+gravity: [0, 0, -9.81]
+simulate: {duration: 1, integrator: dopri5, max_steps: n, output_every: 0.5}
+)";
+  const SweepSpec spec = spec_for(text, {"m", "n"}, {"z=final(ball.z)"});
+  const std::vector<std::vector<double>> points = {{1.0, 100000.0}, {-1.0, 100000.0}, {1.0, 1.0}};
+  const std::vector<RunRecord> records = run_points(spec, points, 2);
+  EXPECT_EQ(records[0].status, RunStatus::Ok);
+  EXPECT_NEAR(records[0].values[0], 1.0 - kG / 2, 1e-9);
+  EXPECT_EQ(records[1].status, RunStatus::Invalid);
+  EXPECT_NE(records[1].message.find("sweep_test.yaml:4:"), std::string::npos)
+      << records[1].message;  // located, as tumble run would say it
+  EXPECT_EQ(records[2].status, RunStatus::Failed);
+  EXPECT_NE(records[2].message.find("max_steps"), std::string::npos) << records[2].message;
+  const std::string line = sweep_csv_line(1, points[1], records[1], 1);
+  EXPECT_EQ(line.substr(0, 18), "1,-1,100000,invali");
+  EXPECT_NE(line.find(",,\""), std::string::npos) << line;  // an empty outcome, then why
+}
+
+}  // namespace
+}  // namespace tumble

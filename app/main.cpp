@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
   PlotArguments plot_args;
   CLI::App* plot = app.add_subcommand(
       "plot",
-      "Plot columns of a CSV (a trajectory) against t or another column into a PNG or SVG, with "
+      "Plot columns of a CSV (a trajectory, or a sweep.csv) against t or another column into a PNG "
+      "or SVG, with "
       "gnuplot (docs/plotting.md). The figure appears only when complete.\nExit status: 0 done, "
       "2 bad command line (unreadable CSV, no such column, not .png/.svg), 5 output could not be "
       "produced (gnuplot missing or failed, output not writable).");

@@ -41,6 +41,15 @@ std::string event_kind(const std::string& what) {
 
 }  // namespace
 
+bool is_row_condition(const std::string& argument) {
+  return argument.find_first_of("<>=!") != std::string::npos;
+}
+
+bool Reduction::over_events() const {
+  return (kind == ReductionKind::First || kind == ReductionKind::Count) &&
+         !is_row_condition(argument);
+}
+
 Outcome parse_outcome(std::string name, const std::string& text) {
   Outcome outcome;
   outcome.name = std::move(name);
@@ -76,11 +85,11 @@ Outcome parse_outcome(std::string name, const std::string& text) {
     }
     const std::string argument(trim(std::string_view(text).substr(open + 1, close - open - 1)));
     if (argument.empty()) {
-      throw std::invalid_argument(
-          fmt::format("'{}': {}() needs {}", text, word,
-                      known->kind == ReductionKind::First || known->kind == ReductionKind::Count
-                          ? "an event, e.g. ball.rolls or impulse.kick"
-                          : "a column or an expression of columns, e.g. ball.vx"));
+      throw std::invalid_argument(fmt::format(
+          "'{}': {}() needs {}", text, word,
+          known->kind == ReductionKind::First || known->kind == ReductionKind::Count
+              ? "an event (e.g. ball.rolls, impulse.kick) or a condition (e.g. ball.vx < 0)"
+              : "a column or an expression of columns, e.g. ball.vx"));
     }
     outcome.expression += fmt::format("__r{}", outcome.reductions.size());
     outcome.reductions.push_back({known->kind, argument});

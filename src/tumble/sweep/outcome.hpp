@@ -21,9 +21,13 @@ enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count };
 
 struct Reduction {
   ReductionKind kind = ReductionKind::Final;
-  std::string argument;  // a row expression, or an EVENT name for First and Count
-  bool over_events() const { return kind == ReductionKind::First || kind == ReductionKind::Count; }
+  std::string argument;  // a row expression, or an EVENT name or a CONDITION for First and Count
+  bool over_events() const;
 };
+
+// Whether the argument of first() or count() is a condition of the columns (it compares) rather
+// than an event's name.
+bool is_row_condition(const std::string& argument);
 
 // "max(abs(hinge.angle)) > 0.5" becomes the expression "__r0 > 0.5" over the values of its
 // reductions, {Max, "abs(hinge.angle)"}.

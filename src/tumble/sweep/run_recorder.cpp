@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace tumble {
 
@@ -13,14 +15,73 @@ namespace tumble {
 struct RunRecorder::RowReduction {
   ReductionKind kind;
   BoundExpression value;
+  // For first() and count() of a comparison A < B: A - B, whose zero is where it turns.
+  std::unique_ptr<BoundExpression> margin;
   std::size_t rows = 0;
   double last = 0.0, best = 0.0, t_best = 0.0;
   double t_first = 0.0, t_last = 0.0, integral = 0.0;
+  double last_margin = 0.0, turned_at = 0.0, turns = 0.0;
 
   RowReduction(ReductionKind k, std::string text, std::span<const BoundExpression::Variable> vars)
-      : kind(k), value(std::move(text), vars) {}
+      : kind(k), value(text, vars) {
+    if (const auto sides = compared_sides(text)) {
+      margin = std::make_unique<BoundExpression>("(" + sides->first + ") - (" + sides->second + ")",
+                                                 vars);
+    }
+  }
+
+  bool counts_turns() const { return kind == ReductionKind::First || kind == ReductionKind::Count; }
+
+  // The two sides of a comparison that is the whole condition (<, >, <=, >= outside
+  // parentheses, no && or ||); none for another condition.
+  static std::optional<std::pair<std::string, std::string>> compared_sides(
+      const std::string& text) {
+    int depth = 0;
+    std::optional<std::size_t> at;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      const char c = text[i];
+      if (c == '(') ++depth;
+      if (c == ')') --depth;
+      if (depth != 0) continue;
+      if (c == '&' || c == '|' || c == '=' || c == '!') {
+        if (c == '=' && at && i == *at + 1) continue;  // <= or >=
+        return std::nullopt;
+      }
+      if (c == '<' || c == '>') {
+        if (at) return std::nullopt;
+        at = i;
+      }
+    }
+    if (!at) return std::nullopt;
+    const std::size_t right = *at + (text[*at + 1] == '=' ? 2 : 1);
+    return std::make_pair(text.substr(0, *at), text.substr(right));
+  }
+
+  void observe_turn(double t) {
+    const bool holds = value.evaluate() != 0.0;
+    const double m = margin ? margin->evaluate() : 0.0;
+    const bool held = rows > 0 && last != 0.0;
+    if (holds && !held) {
+      // Where A - B crossed zero between the rows, or this row where that is not known.
+      double at = t;
+      if (rows > 0 && margin && m != last_margin && std::isfinite(m) &&
+          std::isfinite(last_margin)) {
+        at = t_last + (t - t_last) * last_margin / (last_margin - m);
+      }
+      if (turns == 0.0) turned_at = at;
+      ++turns;
+    }
+    last = holds ? 1.0 : 0.0;
+    last_margin = m;
+    t_last = t;
+    ++rows;
+  }
 
   void observe(double t) {
+    if (counts_turns()) {
+      observe_turn(t);
+      return;
+    }
     const double v = value.evaluate();
     if (rows == 0) {
       t_first = t;
@@ -50,6 +111,10 @@ struct RunRecorder::RowReduction {
         return t_best;
       case ReductionKind::Mean:
         return t_last > t_first ? integral / (t_last - t_first) : last;
+      case ReductionKind::First:
+        return turns > 0.0 ? turned_at : std::numeric_limits<double>::quiet_NaN();
+      case ReductionKind::Count:
+        return turns;
       default:
         return std::numeric_limits<double>::quiet_NaN();
     }
@@ -98,7 +163,6 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
                          const Scenario& scenario)
     : layout_(layout),
       column_names_(column_names(layout)),
-      contact_names_(layout.contacts),
       parameter_names_(parameter_names(scenario)),
       row_(column_names_.size(), 0.0),
       parameters_(parameter_names_.size(), 0.0) {
@@ -153,8 +217,18 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
 RunRecorder::~RunRecorder() = default;
 
 bool RunRecorder::fits(const ColumnLayout& layout, const Scenario& scenario) const {
-  return column_names(layout) == column_names_ && layout.contacts == contact_names_ &&
-         parameter_names(scenario) == parameter_names_;
+  // The same owners give the same columns.
+  if (layout.bodies != layout_.bodies || layout.joints != layout_.joints ||
+      layout.joint_types != layout_.joint_types || layout.contacts != layout_.contacts ||
+      layout.elements != layout_.elements ||
+      scenario.parameters.size() != parameter_names_.size()) {
+    return false;
+  }
+  std::size_t i = 0;
+  for (const auto& [name, value] : scenario.parameters) {
+    if (name != parameter_names_[i++]) return false;
+  }
+  return true;
 }
 
 void RunRecorder::start(const Scenario& scenario) {
@@ -163,6 +237,7 @@ void RunRecorder::start(const Scenario& scenario) {
   for (const auto& reduction : row_reductions_) {
     reduction->rows = 0;
     reduction->integral = 0.0;
+    reduction->turns = 0.0;
   }
 }
 
@@ -189,7 +264,7 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
       double first = std::numeric_limits<double>::quiet_NaN();
       double count = 0.0;
       for (const ContactEventRecord& e : events) {
-        if (!names_contact_event(reduction.argument, contact_names_[e.contact], e)) continue;
+        if (!names_contact_event(reduction.argument, layout_.contacts[e.contact], e)) continue;
         if (count == 0.0 || e.t < first) first = e.t;
         ++count;
       }

@@ -36,7 +36,6 @@ class RunRecorder {
   struct RowReduction;
   ColumnLayout layout_;
   std::vector<std::string> column_names_;
-  std::vector<std::string> contact_names_;
   std::vector<std::string> parameter_names_;
   std::vector<double> row_;         // the columns' values at the row being observed
   std::vector<double> parameters_;  // the run's parameter values, by parameter_names_

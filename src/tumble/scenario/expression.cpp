@@ -194,7 +194,8 @@ BoundExpression::BoundExpression(std::string text, std::span<const Variable> var
     }
     parser.SetExpr(text_);
     // Compiles it (a syntax error throws here) and lists its names, known or not.
-    for (const auto& [name, value] : parser.GetUsedVar()) {
+    for (const auto& used : parser.GetUsedVar()) {
+      const std::string& name = used.first;
       const bool known = std::any_of(variables.begin(), variables.end(),
                                      [&](const Variable& v) { return v.name == name; });
       if (!known) {

@@ -192,7 +192,8 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
   const Formulation& formulation = *simulation.formulation;
   const Model& model = formulation.model();
   std::vector<BodyState> states(formulation.body_count());
-  RowExtras extras;
+  RowExtras extras;        // the row's, and after the run the last row's
+  bool rows_here = false;  // whether this run (not the one resumed from) made a row
   SimulationResult result;
   RowBaseline base;
   if (from != nullptr) {
@@ -247,13 +248,13 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     }
     ++result.rows;
     observe(t, states, q, extras);
-    result.last_extras = extras;
+    rows_here = true;
   };
   CheckpointObserver on_driver_checkpoint;
   if (on_checkpoint) {
     on_driver_checkpoint = [&](DriverCheckpoint driver) {
       on_checkpoint({std::move(driver), formulation.hybrid_state(), base, result.conservation,
-                     result.rows, result.last_extras});
+                     result.rows, rows_here ? extras : result.last_extras});
     };
   }
 
@@ -271,6 +272,9 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
   }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The last row's extras (the work each element did over the run), copied once here rather than
+  // at every row (the copy was 3.6% of the tumbling prism's run).
+  if (rows_here) result.last_extras = extras;
   const HybridState& hybrid = simulation.formulation->hybrid_state();
   result.jumps = hybrid.jumps;
   result.contact_events = hybrid.contact.events;

@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
   sweep
       ->add_option("--random", sweep_args.random,
                    "Instead of the grid, this many points drawn uniformly between the bounds")
-      ->check(CLI::Range(1L, 100'000'000L));
+      ->check(CLI::Range(1L, 10'000'000L));
   sweep->add_option("--seed", sweep_args.seed, "Seed of the random points")->capture_default_str();
   sweep->add_option("--record", sweep_args.record,
                     "NAME=REDUCTION: a column of sweep.csv. REDUCTION is an expression over "

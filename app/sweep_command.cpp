@@ -74,7 +74,8 @@ int sweep_command(const SweepArguments& args) {
       status != kDone) {
     return status;
   }
-  constexpr std::size_t kMaxRuns = 100'000'000;
+  // The points are held in memory (about 60 bytes each): ten million is over half a gigabyte.
+  constexpr std::size_t kMaxRuns = 10'000'000;
   std::vector<std::vector<double>> points;
   try {
     points = args.random > 0

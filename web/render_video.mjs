@@ -13,8 +13,9 @@
 // else, with one line on stderr saying why.
 import { spawn } from 'node:child_process';
 import { once } from 'node:events';
-import { existsSync, renameSync, rmSync, statSync } from 'node:fs';
-import { resolve } from 'node:path';
+import { existsSync, mkdtempSync, renameSync, rmSync, statSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 // Resolved from web/node_modules, where web/package-lock.json pins it with the page's packages.
 import { chromium } from 'playwright-core';
@@ -130,7 +131,8 @@ async function render(args, partial, held) {
 
   // The flags of the browser test (tests/browser/animation.test.mjs): software WebGL, and no
   // traffic of Chromium's own.
-  const browser = held.browser = await chromium.launch({
+  // Held while it starts too: a signal then must wait for the launch to close the browser.
+  held.launching = chromium.launch({
     executablePath: args.chromium,
     headless: true,
     args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking',
@@ -138,6 +140,7 @@ async function render(args, partial, held) {
       '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
       '--disable-frame-rate-limit', '--disable-gpu-vsync'],
   });
+  const browser = held.browser = await held.launching;
   const context = await browser.newContext({
     viewport: { width: args.width, height: args.height }, deviceScaleFactor: 1,
   });
@@ -218,6 +221,11 @@ async function main() {
   // Beside OUTPUT, so that the rename stays on one file system and is atomic.
   const partial = `${args.output}.partial-${process.pid}`;
   const held = {};
+  // Playwright's and Chromium's temporary files (the profile, artifacts, Chromium's own scoped
+  // directories) all go in one directory of ours, removed however the render ends: a browser
+  // stopped while it starts may not remove its own.
+  const scratch = mkdtempSync(join(tmpdir(), 'tumble-video-'));
+  process.env.TMPDIR = scratch;
   // Stopped: the browser is closed before exiting (at most 5 s), since Chromium killed with us
   // would leave its temporary profile directory behind; then the partial video goes.
   let abandoning = false;
@@ -226,8 +234,14 @@ async function main() {
     abandoning = true;
     held.encoder?.child.kill('SIGKILL');
     const pause = (ms) => new Promise((done) => setTimeout(done, ms).unref());
-    await Promise.race([held.browser?.close().catch(() => {}), pause(5000)]);
+    // A browser still starting (a signal soon after the launch began) is closed once it runs.
+    const closing = (async () => {
+      const browser = held.browser ?? await held.launching?.catch(() => undefined);
+      await browser?.close().catch(() => {});
+    })();
+    await Promise.race([closing, pause(5000)]);
     rmSync(partial, { force: true });
+    rmSync(scratch, { recursive: true, force: true });
     process.exit(status);
   };
   // `on`, not `once`: Ctrl-C reaches this process twice, from the terminal and from tumble.
@@ -245,6 +259,7 @@ async function main() {
     held.encoder?.child.kill('SIGKILL');
     await held.browser?.close().catch(() => {});
     rmSync(partial, { force: true });
+    rmSync(scratch, { recursive: true, force: true });
   }
 }
 

@@ -152,11 +152,14 @@ test('SIGTERM while the video renders ends tumble by the signal and leaves nothi
   const child = execFile(tumble, ['run', scenario, '--out', out, '--video', join(out, 'x.mp4'),
     '--video-size', '320x240'], { env: { ...process.env, TMPDIR: scratch } });
   const ended = new Promise((done) => child.on('exit', (code, signal) => done({ code, signal })));
-  // Stopped once Chromium runs: its profile directory is in TMPDIR.
-  for (let k = 0; k < 600 && !readdirSync(scratch).some((n) => n.startsWith('playwright')); ++k) {
+  // Stopped once Chromium starts: its profile directory is in the renderer's own directory in
+  // TMPDIR (tumble-video-*).
+  const starting = () => readdirSync(scratch).some((d) => d.startsWith('tumble-video-') &&
+    readdirSync(join(scratch, d)).some((n) => n.startsWith('playwright')));
+  for (let k = 0; k < 600 && !starting(); ++k) {
     await new Promise((done) => setTimeout(done, 50));
   }
-  assert.ok(readdirSync(scratch).some((n) => n.startsWith('playwright')), 'Chromium never started');
+  assert.ok(starting(), 'Chromium never started');
   child.kill('SIGTERM');
   const { code, signal } = await ended;
   assert.equal(signal, 'SIGTERM', `exit status ${code} instead of the signal`);

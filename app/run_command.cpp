@@ -52,23 +52,18 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   fmt::print("  wall time      {:.3f} ms (integration and output)\n", 1e3 * result.wall_seconds);
   const bool forces_act = energy_changes(scenario);
   const ConservationReport& c = result.conservation;
-  // A drift is relative to a scale that is not round-off: E0 may be zero or tiny (a pendulum
-  // released level with its pivot, a chain lying flat), so E's is the larger of |E0| and the
-  // largest KE, and |L|'s the largest |L|.
-  const double energy_scale = std::max(std::abs(c.initial_energy), c.max_kinetic_energy);
-  const double momentum_scale = std::max(c.initial_angular_momentum, c.max_angular_momentum);
+  // A drift is relative to a scale that is not round-off (ConservationReport::energy_scale).
   const std::string energy_drift =
-      energy_scale > 0.0
+      c.energy_scale() > 0.0
           ? fmt::format(
                 "max |E - E0| {:.3e} J, {:.3e} of its scale {:.6g} J (the larger of |E0| "
                 "and the largest KE)",
-                c.max_energy_change, c.max_energy_change / energy_scale, energy_scale)
+                c.max_energy_change, c.scaled_energy_drift(), c.energy_scale())
           : fmt::format("max |E - E0| {:.3e} J (no motion)", c.max_energy_change);
   const std::string momentum_drift =
-      momentum_scale > 0.0
+      c.angular_momentum_scale() > 0.0
           ? fmt::format("max ||L| - |L0|| {:.3e} kg m^2/s, {:.3e} of the largest |L|",
-                        c.max_angular_momentum_change,
-                        c.max_angular_momentum_change / momentum_scale)
+                        c.max_angular_momentum_change, c.scaled_angular_momentum_drift())
           : fmt::format("max |L| {:.3e} kg m^2/s (L = 0 throughout)",
                         c.max_angular_momentum_change);
   // Contacts that only rolled or stuck did no work: their books stay at the level of the

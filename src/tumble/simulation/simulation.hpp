@@ -3,6 +3,8 @@
 // asks for, run by the driver, with each output row handed over as the bodies' states and the
 // system's momenta and energies. The command line, the tests and the benchmarks all go through
 // here, so they run the same thing.
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <span>
@@ -69,6 +71,22 @@ struct ConservationReport {
   // The largest |work| any contact's forces and impulses had done at any row, J: rolling and
   // sticking contacts do none (it is then the integration's error), sliding and impacts do.
   double max_contact_work = 0.0;
+
+  // The scales the summary's drifts are measured against, never round-off: E0 may be zero or
+  // tiny (a pendulum released level with its pivot, a chain lying flat), so E's is the larger of
+  // |E0| and the largest KE (J), and |L|'s the largest |L| (kg m^2/s). 0 where nothing moved.
+  double energy_scale() const { return std::max(std::abs(initial_energy), max_kinetic_energy); }
+  double angular_momentum_scale() const {
+    return std::max(initial_angular_momentum, max_angular_momentum);
+  }
+  // max |E - E0| and max ||L| - |L0|| over those scales (0 where the scale is).
+  double scaled_energy_drift() const {
+    return energy_scale() > 0.0 ? max_energy_change / energy_scale() : 0.0;
+  }
+  double scaled_angular_momentum_drift() const {
+    return angular_momentum_scale() > 0.0 ? max_angular_momentum_change / angular_momentum_scale()
+                                          : 0.0;
+  }
 };
 
 using RowObserver = std::function<void(double t, std::span<const BodyState> states,

@@ -20,6 +20,7 @@ struct RunRecorder::RowReduction {
   std::size_t rows = 0;
   double last = 0.0, best = 0.0, t_best = 0.0;
   double t_first = 0.0, t_last = 0.0, integral = 0.0;
+  bool held = false;  // whether the condition held at the last row
   double last_margin = 0.0, turned_at = 0.0, turns = 0.0;
 
   RowReduction(ReductionKind k, std::string text, std::span<const BoundExpression::Variable> vars)
@@ -60,8 +61,7 @@ struct RunRecorder::RowReduction {
   void observe_turn(double t) {
     const bool holds = value.evaluate() != 0.0;
     const double m = margin ? margin->evaluate() : 0.0;
-    const bool held = rows > 0 && last != 0.0;
-    if (holds && !held) {
+    if (holds && !(rows > 0 && held)) {
       // Where A - B crossed zero between the rows, or this row where that is not known.
       double at = t;
       if (rows > 0 && margin && m != last_margin && std::isfinite(m) &&
@@ -71,7 +71,7 @@ struct RunRecorder::RowReduction {
       if (turns == 0.0) turned_at = at;
       ++turns;
     }
-    last = holds ? 1.0 : 0.0;
+    held = holds;
     last_margin = m;
     t_last = t;
     ++rows;

@@ -53,12 +53,8 @@ RunRecord SweepRunner::run(std::span<const double> values) {
           recorder_->observe({t, states, &q, &extras});
         });
     record.steps = result.report.stats.accepted_steps;
-    const ConservationReport& c = result.conservation;
-    const double energy_scale = std::max(std::abs(c.initial_energy), c.max_kinetic_energy);
-    const double momentum_scale = std::max(c.initial_angular_momentum, c.max_angular_momentum);
-    record.energy_drift = energy_scale > 0.0 ? c.max_energy_change / energy_scale : 0.0;
-    record.momentum_drift =
-        momentum_scale > 0.0 ? c.max_angular_momentum_change / momentum_scale : 0.0;
+    record.energy_drift = result.conservation.scaled_energy_drift();
+    record.momentum_drift = result.conservation.scaled_angular_momentum_drift();
     if (!result.report.completed) {
       record.status = RunStatus::Failed;
       record.message = "integration failed: " + result.report.failure;

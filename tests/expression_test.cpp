@@ -102,3 +102,33 @@ TEST(Expression, NoParametersSaysWhereToDefineThem) {
 
 }  // namespace
 }  // namespace tumble
+
+namespace tumble {
+namespace {
+
+// expression_names lists every identifier outside the numbers (a superset of the parameters an
+// expression reads: a sweep shares a model on it, so it must never miss one).
+TEST(Expression, NamesAnExpressionMayUse) {
+  using Names = std::vector<std::string_view>;
+  EXPECT_EQ(expression_names("2e3*a + sin(b)"), (Names{"a", "sin", "b"}));
+  EXPECT_EQ(expression_names("1e-5"), Names{});
+  EXPECT_EQ(expression_names("-.5E+2"), Names{});
+  EXPECT_EQ(expression_names("2a"), Names{"a"});
+  EXPECT_EQ(expression_names("1e"), Names{"e"});
+  EXPECT_EQ(expression_names("x_1*3.5e+2 deg"), (Names{"x_1", "deg"}));
+  EXPECT_EQ(expression_names("10^(-decades)"), Names{"decades"});
+}
+
+// redefine gives later expressions the new value, through muParser as well as directly.
+TEST(Expression, RedefinedValuesReachLaterExpressions) {
+  ExpressionEvaluator evaluator;
+  evaluator.define("a", 2.0);
+  EXPECT_EQ(evaluator.evaluate("a^3 + 1"), 9.0);
+  evaluator.redefine("a", 3.0);
+  EXPECT_EQ(evaluator.evaluate("a"), 3.0);
+  EXPECT_EQ(evaluator.evaluate("a^3 + 1"), 28.0);
+  EXPECT_THROW(evaluator.redefine("b", 1.0), ExpressionError);
+}
+
+}  // namespace
+}  // namespace tumble

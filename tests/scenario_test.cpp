@@ -3,6 +3,7 @@
 // invalid input, each checking the message text and that FILE:LINE:COL points at the offending
 // key or value.
 #include "tumble/scenario/scenario.hpp"
+#include "tumble/scenario/scenario_document.hpp"
 
 #include <gtest/gtest.h>
 
@@ -847,6 +848,43 @@ TEST(ScenarioError, AMissingMeshFileIsAnError) {
 TEST(ScenarioError, DuplicateKeysAreErrors) {
   expect_error(kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1, mass: 2}\n" + kSimulate,
                {3, 42, "bodies.b.mass", "duplicate key 'mass' (first given on line 3)"});
+}
+
+}  // namespace
+}  // namespace tumble
+
+namespace tumble {
+namespace {
+
+// A read with a ParameterTrace notes each number that uses a followed parameter, or one defined
+// from it (in the file or by --set), with its key path and text; numbers that do not are not
+// noted.
+TEST(Scenario, ATraceNotesWhereTheFollowedParametersReach) {
+  const char* const text = R"(tumble: 1
+parameters: {a: 1, b: 2 * a, c: 3, d: 0}
+bodies:
+  block:
+    shape: box
+    size: [b, 1, c]
+    mass: 2
+    velocity: [a, c, d]
+    angular_velocity: [0, 0, 0]
+simulate: {duration: a + 1}
+)";
+  const ScenarioDocument document = ScenarioDocument::from_text(text, "trace.yaml");
+  ParameterTrace trace{{"a"}, {}};
+  const Scenario scenario = document.read({{"d", "c - a"}}, true, &trace);
+  EXPECT_EQ(trace.followed, (std::vector<std::string>{"a", "b", "d"}));
+  std::vector<std::string> paths, expressions;
+  for (const ParameterTrace::Use& use : trace.uses) {
+    paths.push_back(use.path);
+    expressions.push_back(use.expression);
+  }
+  EXPECT_EQ(paths, (std::vector<std::string>{"parameters.b", "parameters.d", "bodies.block.size[0]",
+                                             "bodies.block.velocity[0]", "bodies.block.velocity[2]",
+                                             "simulate.duration"}));
+  EXPECT_EQ(expressions, (std::vector<std::string>{"2 * a", "c - a", "b", "a", "d", "a + 1"}));
+  EXPECT_EQ(scenario.bodies[0].velocity_W, Vec3(1, 3, 2));
 }
 
 }  // namespace

@@ -220,3 +220,90 @@ TEST(SweepReductions, PrismFirstFlipTimeAgainstTheReferenceAndTheGrowthRate) {
 
 }  // namespace
 }  // namespace tumble
+
+namespace tumble {
+namespace {
+
+// Runs whose varied parameters reach only the bodies' initial velocities share one model and
+// compute only y0 (VelocityOnlyRuns): their rows are the same bytes as runs that each read the
+// document and build their own model, including runs that are invalid at their values, and a
+// parameter that reaches the model (a size, a mass, a duration) is not shared.
+std::string csv_of_runner(const SweepSpec& spec, const std::vector<std::vector<double>>& points,
+                          bool* shared = nullptr) {
+  SweepRunner runner(spec);
+  std::string csv = sweep_csv_header(spec);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    csv += sweep_csv_line(i, points[i], runner.run(points[i]), spec.outcomes.size());
+  }
+  if (shared != nullptr) *shared = runner.shares_model();
+  return csv;
+}
+
+void expect_shared_equals_unshared(SweepSpec spec, const std::vector<std::vector<double>>& points,
+                                   bool shared_expected) {
+  bool shared = false;
+  spec.share_models = true;
+  const std::string with_sharing = csv_of_runner(spec, points, &shared);
+  EXPECT_EQ(shared, shared_expected) << spec.varied.front();
+  spec.share_models = false;
+  const std::string without = csv_of_runner(spec, points);
+  EXPECT_EQ(with_sharing, without);
+  EXPECT_EQ(without.find("failed"), std::string::npos) << without;
+}
+
+TEST(SweepSharedModel, VelocityOnlyRunsAreTheBytesOfRunsThatReadTheirOwn) {
+  const std::string disk =
+      test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/backspin_disk.yaml");
+  const std::vector<std::vector<double>> speeds = {{1.5, 60.0}, {2.0, 30.0}, {2.5, 80.0}};
+  expect_shared_equals_unshared(
+      spec_for(disk, {"v0", "w0"}, {"roll=first(floor.rolls)", "v=final(disk.vx)"}), speeds, true);
+  // The floor's friction reaches the contact, not the state.
+  expect_shared_equals_unshared(spec_for(disk, {"mu"}, {"roll=first(floor.rolls)"}),
+                                {{0.1}, {0.2}, {0.3}}, false);
+
+  const std::string prism =
+      test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/sweeps/prism_flip_time.yaml");
+  SweepSpec tilt = spec_for(prism, {"decades"}, {"flip=first(prism.w3 < 0)", "w=min(prism.w3)"});
+  tilt.fixed = {{"a", "4"}};
+  expect_shared_equals_unshared(tilt, {{2.0}, {3.5}, {5.0}}, true);
+  expect_shared_equals_unshared(spec_for(prism, {"a"}, {"w=min(prism.w3)"}), {{3.9}, {4.1}}, false);
+}
+
+// Parameters defined from a varied one (in the file, or by --set) follow it; an initial state the
+// checks refuse, or an expression that fails at some values, gives the same located message.
+TEST(SweepSharedModel, DerivedParametersAndInvalidRunsAreTheSameBytes) {
+  const char* const text = R"(tumble: 1
+parameters: {w0: 2, spin: 3 * w0, lean: 0, v: 1}
+gravity: [0, 0, 0]
+bodies:
+  top:
+    shape: cylinder
+    radius: 0.2
+    length: 0.1
+    mass: 1
+    velocity: [sqrt(v), 0, 0]
+    angular_velocity: [lean, 0.5 * w0, spin^3]
+simulate: {duration: 0.5, integrator: dop853, rtol: 1e-10, atol: 1e-12, output_every: 0.05}
+)";
+  SweepSpec spec = spec_for(text, {"w0", "v"}, {"w=final(top.w3)", "x=final(top.x)"});
+  spec.fixed = {{"lean", "w0 / 10"}};
+  expect_shared_equals_unshared(spec, {{1.0, 1.0}, {-2.0, 4.0}, {0.5, 0.25}}, true);
+  // sqrt(-1) in the middle run: its read says where; the runs either side share the model.
+  SweepSpec bad = spec;
+  bool shared = false;
+  const std::string with_sharing =
+      csv_of_runner(bad, {{1.0, 1.0}, {1.0, -1.0}, {2.0, 1.0}}, &shared);
+  EXPECT_TRUE(shared);
+  bad.share_models = false;
+  EXPECT_EQ(with_sharing, csv_of_runner(bad, {{1.0, 1.0}, {1.0, -1.0}, {2.0, 1.0}}));
+  EXPECT_NE(with_sharing.find("sweep_test.yaml:10:"), std::string::npos) << with_sharing;
+  // A spin whose kinetic energy overflows is refused by the initial state's checks, at the body.
+  const std::string overflow = csv_of_runner(spec, {{1.0, 1.0}, {1e90, 1.0}});
+  spec.share_models = false;
+  EXPECT_EQ(overflow, csv_of_runner(spec, {{1.0, 1.0}, {1e90, 1.0}}));
+  EXPECT_NE(overflow.find("invalid"), std::string::npos) << overflow;
+  EXPECT_NE(overflow.find("overflows"), std::string::npos) << overflow;
+}
+
+}  // namespace
+}  // namespace tumble

@@ -1,7 +1,7 @@
 #pragma once
-// The trajectory's columns, their names and their values, defined in one place: walk_columns
-// visits a row's values in column order and names each, so the CSV's header and its rows (and any
-// other sink that wants columns by name) cannot disagree.
+// The trajectory's columns, their names and their values, defined in one place: for_each_column
+// names each column in order with the function that gives its value in a row, so the CSV's header
+// and its rows (and any other sink that wants columns by name) cannot disagree.
 //   t, per body B: B.x B.y B.z (COM, world), B.vx B.vy B.vz, B.wx B.wy B.wz (world),
 //   B.R11 ... B.R33 (row-major, body axes -> world), then KE PE E px py pz Lx Ly Lz (about the
 //   world origin), then per joint J: J.Fx J.Fy J.Fz J.Mx J.My J.Mz (what its first body exerts on
@@ -32,86 +32,138 @@ struct ColumnLayout {
   std::vector<std::string> elements;  // Formulation::element_names()
 };
 
-// Calls column(owner, field, value) for each column in order: owner is "" for t and the system's
-// quantities (the column's name is the field), else the body, joint, contact or element whose
-// column it is (the name is owner.field). With no row, the values are 0 (for the names alone).
+// Calls column(owner, field, value_of) for each column in order: owner is "" for t and the
+// system's quantities (the column's name is the field), else the body, joint, contact or element
+// whose column it is (the name is owner.field); value_of(row) is the column's value in a row, a
+// function of the row alone, so a sink that wants a few columns can keep just theirs.
 template <typename Column>
-void walk_columns(const ColumnLayout& layout, const OutputRow* row, Column&& column) {
-  column(std::string_view(), "t", row != nullptr ? row->t : 0.0);
+void for_each_column(const ColumnLayout& layout, Column&& column) {
+  using Row = const OutputRow&;
+  column(std::string_view(), "t", [](Row row) { return row.t; });
   static constexpr std::string_view kAxes[3] = {"x", "y", "z"};
   static constexpr std::string_view kVelocity[3] = {"vx", "vy", "vz"};
   static constexpr std::string_view kOmega[3] = {"wx", "wy", "wz"};
   static constexpr std::string_view kR[3][3] = {
       {"R11", "R12", "R13"}, {"R21", "R22", "R23"}, {"R31", "R32", "R33"}};
   for (std::size_t b = 0; b < layout.bodies.size(); ++b) {
-    const BodyState* s = row != nullptr ? &row->states[b] : nullptr;
     const std::string_view body = layout.bodies[b];
-    for (int k = 0; k < 3; ++k) column(body, kAxes[k], s ? s->r_G(k) : 0.0);
-    for (int k = 0; k < 3; ++k) column(body, kVelocity[k], s ? s->v_G(k) : 0.0);
-    for (int k = 0; k < 3; ++k) column(body, kOmega[k], s ? s->omega_W(k) : 0.0);
+    for (int k = 0; k < 3; ++k) {
+      column(body, kAxes[k], [b, k](Row row) { return row.states[b].r_G(k); });
+    }
+    for (int k = 0; k < 3; ++k) {
+      column(body, kVelocity[k], [b, k](Row row) { return row.states[b].v_G(k); });
+    }
+    for (int k = 0; k < 3; ++k) {
+      column(body, kOmega[k], [b, k](Row row) { return row.states[b].omega_W(k); });
+    }
     for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) column(body, kR[r][c], s ? s->R_WB(r, c) : 0.0);
+      for (int c = 0; c < 3; ++c) {
+        column(body, kR[r][c], [b, r, c](Row row) { return row.states[b].R_WB(r, c); });
+      }
     }
   }
-  const SystemQuantities* q = row != nullptr ? row->quantities : nullptr;
-  column(std::string_view(), "KE", q ? q->kinetic_energy : 0.0);
-  column(std::string_view(), "PE", q ? q->potential_energy : 0.0);
-  column(std::string_view(), "E", q ? q->total_energy : 0.0);
+  column(std::string_view(), "KE", [](Row row) { return row.quantities->kinetic_energy; });
+  column(std::string_view(), "PE", [](Row row) { return row.quantities->potential_energy; });
+  column(std::string_view(), "E", [](Row row) { return row.quantities->total_energy; });
   static constexpr std::string_view kMomentum[3] = {"px", "py", "pz"};
   static constexpr std::string_view kL[3] = {"Lx", "Ly", "Lz"};
-  for (int k = 0; k < 3; ++k)
-    column(std::string_view(), kMomentum[k], q ? q->linear_momentum(k) : 0.0);
   for (int k = 0; k < 3; ++k) {
-    column(std::string_view(), kL[k], q ? q->angular_momentum_about_origin(k) : 0.0);
+    column(std::string_view(), kMomentum[k],
+           [k](Row row) { return row.quantities->linear_momentum(k); });
   }
-  const RowExtras* e = row != nullptr ? row->extras : nullptr;
+  for (int k = 0; k < 3; ++k) {
+    column(std::string_view(), kL[k],
+           [k](Row row) { return row.quantities->angular_momentum_about_origin(k); });
+  }
+  // A row without extras (RowObserver's) has zeros in their columns.
   static constexpr std::string_view kForce[3] = {"Fx", "Fy", "Fz"};
   static constexpr std::string_view kMoment[3] = {"Mx", "My", "Mz"};
   for (std::size_t j = 0; j < layout.joints.size(); ++j) {
-    const JointReaction* r = e != nullptr ? &e->joints[j] : nullptr;
-    for (int k = 0; k < 3; ++k) column(layout.joints[j], kForce[k], r ? r->F_W(k) : 0.0);
-    for (int k = 0; k < 3; ++k) column(layout.joints[j], kMoment[k], r ? r->M_J_W(k) : 0.0);
+    for (int k = 0; k < 3; ++k) {
+      column(layout.joints[j], kForce[k],
+             [j, k](Row row) { return row.extras ? row.extras->joints[j].F_W(k) : 0.0; });
+    }
+    for (int k = 0; k < 3; ++k) {
+      column(layout.joints[j], kMoment[k],
+             [j, k](Row row) { return row.extras ? row.extras->joints[j].M_J_W(k) : 0.0; });
+    }
   }
   for (std::size_t c = 0; c < layout.contacts.size(); ++c) {
-    const ContactOutput* o = e != nullptr ? &e->contacts[c] : nullptr;
     const std::string_view contact = layout.contacts[c];
-    column(contact, "N", o ? o->normal_force : 0.0);
-    for (int k = 0; k < 3; ++k) column(contact, kForce[k], o ? o->friction_W(k) : 0.0);
-    column(contact, "slip", o ? o->slip_speed : 0.0);
-    column(contact, "mode", o ? static_cast<double>(o->mode) : 0.0);
+    column(contact, "N",
+           [c](Row row) { return row.extras ? row.extras->contacts[c].normal_force : 0.0; });
+    for (int k = 0; k < 3; ++k) {
+      column(contact, kForce[k],
+             [c, k](Row row) { return row.extras ? row.extras->contacts[c].friction_W(k) : 0.0; });
+    }
+    column(contact, "slip",
+           [c](Row row) { return row.extras ? row.extras->contacts[c].slip_speed : 0.0; });
+    column(contact, "mode", [c](Row row) {
+      return row.extras ? static_cast<double>(row.extras->contacts[c].mode) : 0.0;
+    });
   }
   for (std::size_t i = 0; i < layout.elements.size(); ++i) {
-    const ElementWork* w = e != nullptr ? &e->elements[i] : nullptr;
-    column(layout.elements[i], "P", w ? w->power : 0.0);
-    column(layout.elements[i], "W", w ? w->work : 0.0);
+    column(layout.elements[i], "P",
+           [i](Row row) { return row.extras ? row.extras->elements[i].power : 0.0; });
+    column(layout.elements[i], "W",
+           [i](Row row) { return row.extras ? row.extras->elements[i].work : 0.0; });
   }
   static constexpr std::string_view kOmegaBody[3] = {"w1", "w2", "w3"};
   for (std::size_t b = 0; b < layout.bodies.size(); ++b) {
-    const BodyState* s = row != nullptr ? &row->states[b] : nullptr;
-    const Vec3 omega_B = s ? Vec3(s->R_WB.transpose() * s->omega_W) : Vec3::Zero();
-    for (int k = 0; k < 3; ++k) column(layout.bodies[b], kOmegaBody[k], omega_B(k));
+    for (int k = 0; k < 3; ++k) {
+      // omega_B = R_WB^T omega_W: its k-th component is body axis k (R_WB's column k) dotted
+      // with omega_W.
+      column(layout.bodies[b], kOmegaBody[k], [b, k](Row row) {
+        const BodyState& s = row.states[b];
+        return s.R_WB.col(k).dot(s.omega_W);
+      });
+    }
   }
   static constexpr std::string_view kRotation[3] = {"rx", "ry", "rz"};
   for (std::size_t j = 0; j < layout.joints.size(); ++j) {
-    const JointCoordinates* c =
-        e != nullptr && j < e->coordinates.size() ? &e->coordinates[j] : nullptr;
+    const auto coordinates = [j](Row row) -> const JointCoordinates* {
+      return row.extras != nullptr && j < row.extras->coordinates.size()
+                 ? &row.extras->coordinates[j]
+                 : nullptr;
+    };
+    const auto position = [coordinates](Row row) {
+      const JointCoordinates* c = coordinates(row);
+      return c ? c->position : 0.0;
+    };
+    const auto rate = [coordinates](Row row) {
+      const JointCoordinates* c = coordinates(row);
+      return c ? c->rate : 0.0;
+    };
     const std::string_view joint = layout.joints[j];
     switch (layout.joint_types[j]) {
       case JointType::Hinge:
-        column(joint, "angle", c ? c->position : 0.0);
-        column(joint, "rate", c ? c->rate : 0.0);
+        column(joint, "angle", position);
+        column(joint, "rate", rate);
         break;
       case JointType::Prismatic:
-        column(joint, "travel", c ? c->position : 0.0);
-        column(joint, "speed", c ? c->rate : 0.0);
+        column(joint, "travel", position);
+        column(joint, "speed", rate);
         break;
       case JointType::Ball:
-        for (int k = 0; k < 3; ++k) column(joint, kRotation[k], c ? c->rotation(k) : 0.0);
+        for (int k = 0; k < 3; ++k) {
+          column(joint, kRotation[k], [coordinates, k](Row row) {
+            const JointCoordinates* c = coordinates(row);
+            return c ? c->rotation(k) : 0.0;
+          });
+        }
         break;
       default:
         break;
     }
   }
+}
+
+// Calls column(owner, field, value) with each column's value in `row`, in order.
+template <typename Column>
+void walk_columns(const ColumnLayout& layout, const OutputRow& row, Column&& column) {
+  for_each_column(layout, [&](std::string_view owner, std::string_view field, auto&& value_of) {
+    column(owner, field, static_cast<double>(value_of(row)));
+  });
 }
 
 // The columns' names in order.

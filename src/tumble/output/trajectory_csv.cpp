@@ -17,7 +17,7 @@ void TrajectoryCsvWriter::write_row(const OutputRow& row) {
   line_.clear();
   auto out = std::back_inserter(line_);
   bool first = true;
-  walk_columns(layout_, &row, [&](std::string_view, std::string_view, double value) {
+  walk_columns(layout_, row, [&](std::string_view, std::string_view, double value) {
     if (first) {
       fmt::format_to(out, "{:.17g}", value);
       first = false;

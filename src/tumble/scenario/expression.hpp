@@ -6,6 +6,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -35,6 +36,9 @@ class ExpressionEvaluator {
   // that is not an identifier, or that is taken (pi, e, deg, a function such as sqrt, or a name
   // already defined).
   void define(const std::string& name, double value);
+  // Gives a defined name another value, for the expressions evaluated after (a sweep's next run).
+  // Throws ExpressionError for a name that is not defined.
+  void redefine(const std::string& name, double value);
 
   // The value of the expression; a plain number ("1e-8") is read exactly as strtod would. Throws
   // ExpressionError for a syntax error, an unknown name, or a result that is not finite.
@@ -48,6 +52,11 @@ class ExpressionEvaluator {
   std::unique_ptr<Impl> impl_;
   std::vector<std::string> names_;
 };
+
+// The names an expression may use: each identifier outside its numbers ("2e3*a + sin(b)" gives
+// a, sin, b). A superset of the parameters it reads, never missing one, so a name not listed is
+// a name the expression's value cannot depend on.
+std::vector<std::string_view> expression_names(std::string_view expression);
 
 // An expression over variables whose values change between evaluations (a row's columns, a
 // run's parameters), compiled once and evaluated many times, with the constants and units of
@@ -67,11 +76,15 @@ class BoundExpression {
   // The value now (which may be infinite or NaN: a row's quotient by zero).
   double evaluate() const;
   const std::string& text() const { return text_; }
+  // The variables it reads.
+  const std::vector<std::string>& used_names() const { return used_names_; }
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::string text_;
+  std::vector<std::string> used_names_;
+  const double* direct_ = nullptr;  // the variable that is the whole expression, if one is
 };
 
 }  // namespace tumble

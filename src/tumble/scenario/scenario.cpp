@@ -212,15 +212,20 @@ std::map<std::string, double> read_parameters(const Reader& reader,
     const auto o = std::find_if(overrides.rbegin(), overrides.rend(),
                                 [&](const ParameterOverride& p) { return p.name == f.key(); });
     double value = 0.0;
+    ParameterTrace* trace = reader.trace();
+    const std::size_t uses_before = trace != nullptr ? trace->uses.size() : 0;
     if (o != overrides.rend()) {
       try {
         value = expressions.evaluate(o->value);
       } catch (const ExpressionError& error) {
         throw std::invalid_argument("--set " + o->name + "=" + o->value + ": " + error.what());
       }
+      if (trace != nullptr) trace->note(f.path, o->value);
     } else {
       value = reader.number(f);
     }
+    // A parameter defined from a followed one is followed too.
+    if (trace != nullptr && trace->uses.size() > uses_before) trace->followed.push_back(f.key());
     try {
       expressions.define(f.key(), value);
     } catch (const ExpressionError& error) {
@@ -255,12 +260,12 @@ ScenarioDocument ScenarioDocument::from_text(const std::string& text, std::strin
 }
 
 Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
-                                bool needs_simulate) const {
+                                bool needs_simulate, ParameterTrace* trace) const {
   const std::string& path = path_;
   const YAML::Node& document = root_;
   ExpressionEvaluator expressions;
   std::vector<std::string> warnings;
-  const Reader reader(path, expressions, &warnings);
+  const Reader reader(path, expressions, &warnings, trace);
   if (!document || document.IsNull()) {
     reader.fail(YAML::Mark(), "", "the file is empty; a scenario begins with `tumble: 1`");
   }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "tumble/scenario/parameter_trace.hpp"
 #include "tumble/scenario/scenario.hpp"
 
 namespace tumble {
@@ -24,8 +25,10 @@ class ScenarioDocument {
 
   // The scenario with these parameter values: what load_scenario gives. One thread at a time
   // reads a document (yaml-cpp does not promise that reading its nodes from two threads is
-  // safe): threads that read in parallel parse a document each.
-  Scenario read(const std::vector<ParameterOverride>& overrides, bool needs_simulate = true) const;
+  // safe): threads that read in parallel parse a document each. With a trace, each number that
+  // uses a parameter it follows is noted there.
+  Scenario read(const std::vector<ParameterOverride>& overrides, bool needs_simulate = true,
+                ParameterTrace* trace = nullptr) const;
   const std::string& path() const { return path_; }
 
  private:

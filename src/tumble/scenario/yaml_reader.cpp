@@ -147,11 +147,14 @@ double Reader::number(const Field& field) const {
   if (!field.node || !field.node.IsScalar()) {
     fail_at_value(field, "expected a number or an expression, got " + describe(field.node));
   }
+  double value = 0.0;
   try {
-    return expressions_->evaluate(field.node.Scalar());
+    value = expressions_->evaluate(field.node.Scalar());
   } catch (const ExpressionError& error) {
     fail_at_value(field, error.what());
   }
+  if (trace_ != nullptr) trace_->note(field.path, field.node.Scalar());
+  return value;
 }
 
 std::vector<double> Reader::numbers(const Field& field, std::size_t count,

@@ -13,6 +13,7 @@
 
 #include "tumble/math/types.hpp"
 #include "tumble/scenario/expression.hpp"
+#include "tumble/scenario/parameter_trace.hpp"
 #include "tumble/scenario/scenario.hpp"
 
 namespace tumble::scenario_reading {
@@ -41,12 +42,13 @@ std::optional<std::string> closest_match(std::string_view word,
 class Reader {
  public:
   // Warnings (what is accepted but likely not meant) go to `warnings`, if given, as
-  // "FILE:LINE:COL: KEY: why".
+  // "FILE:LINE:COL: KEY: why". Each number that uses a parameter `trace` follows is noted there.
   Reader(std::string file, const ExpressionEvaluator& expressions,
-         std::vector<std::string>* warnings = nullptr)
-      : file_(std::move(file)), expressions_(&expressions), warnings_(warnings) {}
+         std::vector<std::string>* warnings = nullptr, ParameterTrace* trace = nullptr)
+      : file_(std::move(file)), expressions_(&expressions), warnings_(warnings), trace_(trace) {}
 
   const std::string& file() const { return file_; }
+  ParameterTrace* trace() const { return trace_; }
   SourceLocation location(const YAML::Mark& mark) const;
 
   [[noreturn]] void fail(const YAML::Mark& mark, const std::string& key,
@@ -78,6 +80,7 @@ class Reader {
   std::string file_;
   const ExpressionEvaluator* expressions_;
   std::vector<std::string>* warnings_;
+  ParameterTrace* trace_;
 };
 
 // A mapping of the file. Construction fails unless the value is a mapping with distinct scalar

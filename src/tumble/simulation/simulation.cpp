@@ -147,16 +147,21 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
   m->options.max_rows = sim.max_rows;
   m->t0 = 0.0;
   m->t_end = sim.duration;
-  m->y0.resize(m->formulation->dimension());
+  m->y0 = initial_state_vector(scenario, *m->formulation);
+  return m;
+}
+
+VecX initial_state_vector(const Scenario& scenario, const Formulation& formulation) {
+  VecX y0(formulation.dimension());
   const std::vector<BodyState> given = initial_states(scenario);
-  check_initial_state_finite(scenario, m->formulation->model(), given);
-  m->formulation->pack(given, m->y0);
-  check_initial_velocities(scenario, *m->formulation, given, m->y0);
-  if (const auto problem = m->formulation->start_problem(m->y0)) {
+  check_initial_state_finite(scenario, formulation.model(), given);
+  formulation.pack(given, y0);
+  check_initial_velocities(scenario, formulation, given, y0);
+  if (const auto problem = formulation.start_problem(y0)) {
     const ContactSpec& contact = scenario.contacts[problem->contact];
     throw ScenarioError(contact.where, fmt::format("contacts[{}]", problem->contact), problem->why);
   }
-  return m;
+  return y0;
 }
 
 PreparedSimulation prepare_run(const SimulationModel& model) {

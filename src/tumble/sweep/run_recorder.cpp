@@ -78,23 +78,34 @@ struct RunRecorder::RowReduction {
   }
 
   void observe(double t) {
-    if (counts_turns()) {
-      observe_turn(t);
-      return;
-    }
-    const double v = value.evaluate();
-    if (rows == 0) {
-      t_first = t;
-      best = v;
-      t_best = t;
-    } else {
-      integral += 0.5 * (t - t_last) * (v + last);  // trapezoidal rule between rows
-      if ((kind == ReductionKind::Min && v < best) || (kind != ReductionKind::Min && v > best)) {
-        best = v;
-        t_best = t;
+    switch (kind) {
+      case ReductionKind::First:
+      case ReductionKind::Count:
+        observe_turn(t);
+        return;
+      case ReductionKind::Final:
+        last = value.evaluate();
+        break;
+      case ReductionKind::Mean: {
+        const double v = value.evaluate();
+        if (rows == 0) {
+          t_first = t;
+        } else {
+          integral += 0.5 * (t - t_last) * (v + last);  // trapezoidal rule between rows
+        }
+        last = v;
+        break;
+      }
+      default: {  // max, min, time_of_max
+        const double v = value.evaluate();
+        const bool better = kind == ReductionKind::Min ? v < best : v > best;
+        if (rows == 0 || better) {
+          best = v;
+          t_best = t;
+        }
+        break;
       }
     }
-    last = v;
     t_last = t;
     ++rows;
   }
@@ -212,6 +223,23 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
     }
     outcomes_.push_back(std::move(slots));
   }
+  // Only the columns the reductions read are taken from each row.
+  std::vector<std::string> read;
+  for (const auto& reduction : row_reductions_) {
+    read.insert(read.end(), reduction->value.used_names().begin(),
+                reduction->value.used_names().end());
+    if (reduction->margin) {
+      read.insert(read.end(), reduction->margin->used_names().begin(),
+                  reduction->margin->used_names().end());
+    }
+  }
+  std::size_t i = 0;
+  for_each_column(layout_, [&](std::string_view, std::string_view, auto&& value_of) {
+    if (std::find(read.begin(), read.end(), column_names_[i]) != read.end()) {
+      read_columns_.push_back({i, value_of});
+    }
+    ++i;
+  });
 }
 
 RunRecorder::~RunRecorder() = default;
@@ -243,9 +271,7 @@ void RunRecorder::start(const Scenario& scenario) {
 
 void RunRecorder::observe(const OutputRow& row) {
   if (row_reductions_.empty()) return;  // events only: the rows are not needed
-  std::size_t i = 0;
-  walk_columns(layout_, &row,
-               [&](std::string_view, std::string_view, double value) { row_[i++] = value; });
+  for (const ReadColumn& column : read_columns_) row_[column.index] = column.value_of(row);
   for (const auto& reduction : row_reductions_) reduction->observe(row.t);
 }
 

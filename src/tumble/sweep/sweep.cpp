@@ -6,11 +6,13 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "tumble/output/csv_text.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "tumble/sweep/run_recorder.hpp"
+#include "tumble/sweep/velocity_only_runs.hpp"
 
 namespace tumble {
 
@@ -26,41 +28,62 @@ const char* run_status_name(RunStatus status) {
   return "?";
 }
 
-SweepRunner::SweepRunner(const SweepSpec& spec)
-    : spec_(&spec), document_(ScenarioDocument::from_text(spec.text, spec.path)) {}
+SweepRunner::SweepRunner(const SweepSpec& spec, SweepModelShare* share)
+    : spec_(&spec),
+      own_share_(share != nullptr ? nullptr : std::make_unique<SweepModelShare>()),
+      share_(share != nullptr ? share : own_share_.get()),
+      document_(ScenarioDocument::from_text(spec.text, spec.path)) {}
+
+void SweepRunner::adopt_shared_model() {
+  const std::lock_guard<std::mutex> lock(share_->mutex);
+  if (const auto& shared = share_->velocity_only) {
+    velocity_only_ =
+        VelocityOnlyRuns::make(spec_->varied, shared->trace, shared->scenario, shared->model);
+  }
+}
 
 SweepRunner::~SweepRunner() = default;
 
 RunRecord SweepRunner::run(std::span<const double> values) {
   RunRecord record;
-  std::vector<ParameterOverride> overrides = spec_->fixed;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    // 17 significant digits read back as the same double.
-    overrides.push_back({spec_->varied[i], fmt::format("{:.17g}", values[i])});
-  }
   try {
-    const Scenario scenario = document_.read(overrides);
+    if (spec_->share_models && !velocity_only_) adopt_shared_model();
+    if (velocity_only_) {
+      const Scenario* scenario = nullptr;
+      try {
+        scenario = &velocity_only_->scenario_at(values);
+      } catch (const ExpressionError&) {
+        // Read the document instead, for the message that says where.
+      }
+      if (scenario != nullptr) {
+        run_model(*scenario, velocity_only_->model(), true, record);
+        return record;
+      }
+    }
+    std::vector<ParameterOverride> overrides = spec_->fixed;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      // 17 significant digits read back as the same double.
+      overrides.push_back({spec_->varied[i], fmt::format("{:.17g}", values[i])});
+    }
+    // Until a run has been read and built, follow the varied parameters to learn whether the
+    // runs can share its model.
+    std::optional<ParameterTrace> trace;
+    if (spec_->share_models) {
+      const std::lock_guard<std::mutex> lock(share_->mutex);
+      if (!share_->decided) trace = ParameterTrace{spec_->varied, {}};
+    }
+    const Scenario scenario = document_.read(overrides, true, trace ? &*trace : nullptr);
     const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
-    PreparedSimulation simulation = prepare_run(*model);
-    const ColumnLayout layout = column_layout(scenario, *simulation.formulation);
-    if (!recorder_ || !recorder_->fits(layout, scenario)) {
-      recorder_ = std::make_unique<RunRecorder>(spec_->outcomes, layout, scenario);
+    run_model(scenario, *model, false, record);
+    if (trace) {
+      const std::lock_guard<std::mutex> lock(share_->mutex);
+      if (!share_->decided) {
+        share_->decided = true;
+        if (VelocityOnlyRuns::make(spec_->varied, *trace, scenario, model)) {
+          share_->velocity_only = SweepModelShare::Model{std::move(*trace), scenario, model};
+        }
+      }
     }
-    recorder_->start(scenario);
-    const SimulationResult result =
-        run_simulation(simulation, [&](double t, std::span<const BodyState> states,
-                                       const SystemQuantities& q, const RowExtras& extras) {
-          recorder_->observe({t, states, &q, &extras});
-        });
-    record.steps = result.report.stats.accepted_steps;
-    record.energy_drift = result.conservation.scaled_energy_drift();
-    record.momentum_drift = result.conservation.scaled_angular_momentum_drift();
-    if (!result.report.completed) {
-      record.status = RunStatus::Failed;
-      record.message = "integration failed: " + result.report.failure;
-      return record;
-    }
-    record.values = recorder_->finish(result.contact_events, result.jumps);
   } catch (const ScenarioError& e) {
     record.status = RunStatus::Invalid;
     record.message = e.what();
@@ -69,6 +92,34 @@ RunRecord SweepRunner::run(std::span<const double> values) {
     record.message = e.what();
   }
   return record;
+}
+
+void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& model,
+                            bool scenarios_initial_state, RunRecord& record) {
+  PreparedSimulation simulation = prepare_run(model);
+  if (scenarios_initial_state) {
+    // On the run's own formulation: the model's is shared by the threads.
+    simulation.y0 = initial_state_vector(scenario, *simulation.formulation);
+  }
+  const ColumnLayout layout = column_layout(scenario, *simulation.formulation);
+  if (!recorder_ || !recorder_->fits(layout, scenario)) {
+    recorder_ = std::make_unique<RunRecorder>(spec_->outcomes, layout, scenario);
+  }
+  recorder_->start(scenario);
+  const SimulationResult result =
+      run_simulation(simulation, [&](double t, std::span<const BodyState> states,
+                                     const SystemQuantities& q, const RowExtras& extras) {
+        recorder_->observe({t, states, &q, &extras});
+      });
+  record.steps = result.report.stats.accepted_steps;
+  record.energy_drift = result.conservation.scaled_energy_drift();
+  record.momentum_drift = result.conservation.scaled_angular_momentum_drift();
+  if (!result.report.completed) {
+    record.status = RunStatus::Failed;
+    record.message = "integration failed: " + result.report.failure;
+    return;
+  }
+  record.values = recorder_->finish(result.contact_events, result.jumps);
 }
 
 std::vector<RunRecord> run_points(const SweepSpec& spec,
@@ -80,9 +131,10 @@ std::vector<RunRecord> run_points(const SweepSpec& spec,
   std::mutex mutex;
   std::condition_variable finished;
   std::exception_ptr failure;
+  SweepModelShare share;
   const auto work = [&] {
     try {
-      SweepRunner runner(spec);
+      SweepRunner runner(spec, &share);
       for (std::size_t i = next++; i < points.size(); i = next++) {
         records[i] = runner.run(points[i]);
         ++done;

@@ -2,23 +2,28 @@
 // Many runs of one scenario at other parameter values: the runs of `tumble sweep` and
 // `tumble find`. Each thread reads the scenario from a document it parsed once (reading a parsed
 // document costs microseconds; parsing, a fifth of a millisecond), builds that run's model and
-// records the outcomes as the rows go by. A run's result depends on its parameter values alone,
-// never on the thread or process it ran on, so a sweep's rows are the same bytes however it is
-// shared out.
+// records the outcomes as the rows go by. Where the varied parameters reach only the bodies'
+// initial velocities, the threads run one model and each run computes only its initial state. A
+// run's result depends on its parameter values alone, never on the thread or process it ran on,
+// so a sweep's rows are the same bytes however it is shared out.
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/scenario/scenario_document.hpp"
+#include "tumble/simulation/simulation.hpp"
 #include "tumble/sweep/outcome.hpp"
 
 namespace tumble {
 
 class RunRecorder;
+class VelocityOnlyRuns;
 
 enum class RunStatus {
   Ok,       // ran to the end
@@ -43,12 +48,33 @@ struct SweepSpec {
   std::vector<ParameterOverride> fixed;  // --set
   std::vector<std::string> varied;       // the parameters each point gives values for
   std::vector<Outcome> outcomes;         // what each run records
+  // Runs whose varied parameters reach only the bodies' initial velocities share one model
+  // (VelocityOnlyRuns); false reads and builds each run's own, for tests that compare the two.
+  bool share_models = true;
 };
 
-// One thread's runner: its own parsed document and recorder.
+// What the runners of one sweep, on every thread, learn together: whether the varied parameters
+// reach only the bodies' initial velocities (decided by the first run that is read and built)
+// and, if they do, that run's scenario, trace and model, which every runner then runs.
+struct SweepModelShare {
+  std::mutex mutex;
+  bool decided = false;
+  struct Model {
+    ParameterTrace trace;
+    Scenario scenario;
+    std::shared_ptr<const SimulationModel> model;
+  };
+  std::optional<Model> velocity_only;  // once decided, where the runs can share it
+};
+
+// One thread's runner: its own parsed document and recorder and, where the varied parameters
+// reach only the initial velocities, the sweep's one model.
 class SweepRunner {
  public:
-  explicit SweepRunner(const SweepSpec& spec);  // throws ScenarioError if the text does not parse
+  // Throws ScenarioError if the text does not parse. Runners given the same share (which must
+  // outlive them) decide once whether they can share a model; without one, a runner decides
+  // for itself.
+  explicit SweepRunner(const SweepSpec& spec, SweepModelShare* share = nullptr);
   ~SweepRunner();
   SweepRunner(const SweepRunner&) = delete;
   SweepRunner& operator=(const SweepRunner&) = delete;
@@ -56,11 +82,25 @@ class SweepRunner {
   // A run at `values` (one per SweepSpec::varied). Never throws for what a run meets: an invalid
   // scenario or a failed integration is the record's status.
   RunRecord run(std::span<const double> values);
+  // Whether its runs now share one model (after a run that showed they can).
+  bool shares_model() const { return velocity_only_ != nullptr; }
 
  private:
+  // Runs the model, from its y0 or (for a model shared by runs that differ in it) from the
+  // scenario's initial state, recording the outcomes. Throws ScenarioError for an initial state
+  // the checks refuse, and what the recorder throws.
+  void run_model(const Scenario& scenario, const SimulationModel& model,
+                 bool scenarios_initial_state, RunRecord& record);
+
+  // Takes the share's model, if it has one, when this runner has none yet.
+  void adopt_shared_model();
+
   const SweepSpec* spec_;
+  std::unique_ptr<SweepModelShare> own_share_;  // when not given one
+  SweepModelShare* share_;
   ScenarioDocument document_;
   std::unique_ptr<RunRecorder> recorder_;
+  std::unique_ptr<VelocityOnlyRuns> velocity_only_;  // once a run has shown that they can
 };
 
 // Called on the calling thread about ten times a second while the runs go on.

@@ -1,0 +1,76 @@
+#include "tumble/sweep/velocity_only_runs.hpp"
+
+#include <optional>
+#include <string_view>
+
+namespace tumble {
+namespace {
+
+// The body, the velocity and the axis of a path "bodies.NAME.velocity[k]" or
+// "bodies.NAME.angular_velocity[k]"; none for another path.
+std::optional<std::tuple<std::size_t, bool, int>> velocity_component(
+    std::string_view path, const std::vector<BodySpec>& bodies) {
+  constexpr std::string_view kBodies = "bodies.";
+  if (!path.starts_with(kBodies)) return std::nullopt;
+  path.remove_prefix(kBodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const std::string& name = bodies[b].name;
+    if (!path.starts_with(name) || path.size() <= name.size() || path[name.size()] != '.') {
+      continue;
+    }
+    const std::string_view key = path.substr(name.size() + 1);
+    for (const bool angular : {false, true}) {
+      for (int axis = 0; axis < 3; ++axis) {
+        const std::string wanted =
+            std::string(angular ? "angular_velocity[" : "velocity[") + char('0' + axis) + "]";
+        if (key == wanted) return std::make_tuple(b, angular, axis);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::unique_ptr<VelocityOnlyRuns> VelocityOnlyRuns::make(
+    const std::vector<std::string>& varied, const ParameterTrace& trace, const Scenario& scenario,
+    std::shared_ptr<const SimulationModel> model) {
+  std::unique_ptr<VelocityOnlyRuns> runs(new VelocityOnlyRuns());
+  constexpr std::string_view kParameters = "parameters.";
+  for (const ParameterTrace::Use& use : trace.uses) {
+    if (std::string_view(use.path).starts_with(kParameters)) {
+      runs->parameters_.push_back({use.path.substr(kParameters.size()), use.expression});
+    } else if (const auto component = velocity_component(use.path, scenario.bodies)) {
+      const auto [body, angular, axis] = *component;
+      runs->velocities_.push_back({body, angular, axis, use.expression});
+    } else {
+      return nullptr;  // it reaches the model
+    }
+  }
+  for (const auto& [name, value] : scenario.parameters) runs->expressions_.define(name, value);
+  runs->varied_ = varied;
+  runs->scenario_ = scenario;
+  runs->model_ = std::move(model);
+  return runs;
+}
+
+const Scenario& VelocityOnlyRuns::scenario_at(std::span<const double> values) {
+  // A full read evaluates the varied values' 17-digit text, which reads back as these doubles.
+  for (std::size_t i = 0; i < varied_.size(); ++i) {
+    expressions_.redefine(varied_[i], values[i]);
+    scenario_.parameters[varied_[i]] = values[i];
+  }
+  for (const ParameterStep& step : parameters_) {
+    const double value = expressions_.evaluate(step.expression);
+    expressions_.redefine(step.name, value);
+    scenario_.parameters[step.name] = value;
+  }
+  for (const VelocityStep& step : velocities_) {
+    BodySpec& body = scenario_.bodies[step.body];
+    Vec3& velocity = step.angular ? body.angular_velocity_W : body.velocity_W;
+    velocity(step.axis) = expressions_.evaluate(step.expression);
+  }
+  return scenario_;
+}
+
+}  // namespace tumble

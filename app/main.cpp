@@ -101,13 +101,14 @@ int main(int argc, char** argv) {
                    "Instead of the grid, this many points drawn uniformly between the bounds")
       ->check(CLI::Range(1L, 10'000'000L));
   sweep->add_option("--seed", sweep_args.seed, "Seed of the random points")->capture_default_str();
-  sweep->add_option("--record", sweep_args.record,
-                    "NAME=REDUCTION: a column of sweep.csv. REDUCTION is an expression over "
-                    "final(X), max(X), min(X), mean(X), time_of_max(X) (X a column or an "
-                    "expression of columns and parameters), first(EVENT), count(EVENT) (EVENT: "
-                    "CONTACT.KIND, impulse.NAME, lock.NAME, motor.NAME), first(CONDITION), "
-                    "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0); "
-                    "repeatable");
+  sweep->add_option(
+      "--record", sweep_args.record,
+      "NAME=REDUCTION: a column of sweep.csv. REDUCTION is an expression over "
+      "final(X), max(X), min(X), mean(X), time_of_max(X) (X a column or an "
+      "expression of columns and parameters), first(EVENT), count(EVENT) (EVENT: "
+      "CONTACT.KIND, event.NAME, impulse.NAME, lock.NAME, motor.NAME), first(CONDITION), "
+      "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0); "
+      "repeatable");
   sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");
   sweep->add_option("--threads", sweep_args.threads, "Threads (default: every core)")
       ->check(CLI::Range(1, 1024));

@@ -84,11 +84,13 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
              external_moments_act(scenario) ? " (external moments act: |L| is not conserved)" : "");
   fmt::print("  |R^T R - I|    max {:.3e}\n", result.conservation.max_orthonormality_error);
   print_system_summary(scenario, simulation, result);
+  print_scenario_events(scenario, result);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,
              result.report.t_reached);
   if (events) {
-    fmt::print("  events         {} ({} contact events, {} jumps)\n", events->string(),
-               result.contact_events.size(), result.jumps.size());
+    fmt::print("  events         {} ({} contact events, {} jumps, {} of the scenario's events)\n",
+               events->string(), result.contact_events.size(), result.jumps.size(),
+               result.user_events.size());
   }
   if (animation) fmt::print("  animation      {}\n", animation->string());
   if (video) fmt::print("  video          {}\n", *video);
@@ -208,7 +210,8 @@ int run_command(const RunArguments& args) {
   const SimulationResult result = run_simulation(*simulation, rows);
   // The events CSV: when the run had events or jumps, or the scenario asks for it.
   std::optional<std::filesystem::path> events;
-  if (scenario.output.events_given || !result.contact_events.empty() || !result.jumps.empty()) {
+  if (scenario.output.events_given || !result.contact_events.empty() || !result.jumps.empty() ||
+      !result.user_events.empty()) {
     events = out_dir / scenario.output.events;
   }
   try {
@@ -218,7 +221,8 @@ int run_command(const RunArguments& args) {
       for (const ContactSpec& c : scenario.contacts) contact_names.push_back(c.name);
       for (const JointSpec& j : scenario.joints) joint_names.push_back(j.name);
       std::filesystem::create_directories(events->parent_path());
-      write_events_csv(*events, contact_names, joint_names, result.contact_events, result.jumps);
+      write_events_csv(*events, contact_names, joint_names, result.contact_events, result.jumps,
+                       result.user_events);
     }
     if (animation && recorded->rows() > 0) {
       std::filesystem::create_directories(animation->parent_path());

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+
 namespace tumble::cli {
 
 bool only_contacts_may_do_work(const Scenario& scenario) {
@@ -88,6 +90,29 @@ void print_system_summary(const Scenario& scenario, const PreparedSimulation& si
           "                 reaction impulse at {}: [{:.6g}, {:.6g}, {:.6g}] N s, "
           "[{:.6g}, {:.6g}, {:.6g}] N m s\n",
           scenario.joints[j].name, F.x(), F.y(), F.z(), M.x(), M.y(), M.z());
+    }
+  }
+}
+
+void print_scenario_events(const Scenario& scenario, const SimulationResult& result) {
+  // The scenario's events: each occurrence (a condition that turns often is summarised).
+  constexpr std::size_t kUserEventsShown = 24;
+  const std::vector<UserEventRecord>& occurred = result.user_events;
+  for (std::size_t i = 0; i < occurred.size() && i < kUserEventsShown; ++i) {
+    fmt::print("  t = {:<14.12g} event {}{}\n", occurred[i].t, occurred[i].name,
+               occurred[i].stopped ? ": the run stops here" : "");
+  }
+  if (occurred.size() > kUserEventsShown) {
+    fmt::print("  ...            {} more events (the events CSV has them all)\n",
+               occurred.size() - kUserEventsShown);
+  }
+  for (const UserEventSpec& event : scenario.events) {
+    const bool happened =
+        std::any_of(occurred.begin(), occurred.end(),
+                    [&](const UserEventRecord& r) { return r.name == event.name; });
+    if (!happened) {
+      fmt::print("  event {}: did not happen by t = {:.12g} s ({})\n", event.name,
+                 result.report.t_reached, event.when);
     }
   }
 }

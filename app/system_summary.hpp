@@ -22,5 +22,7 @@ bool external_moments_act(const Scenario& scenario);
 
 void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                           const SimulationResult& result);
+// Each occurrence of the scenario's `events:`, and those that never happened.
+void print_scenario_events(const Scenario& scenario, const SimulationResult& result);
 
 }  // namespace tumble::cli

@@ -104,6 +104,10 @@ TEST_P(Checkpoint, ResumedRowsAreTheUninterruptedRunsBytes) {
   EXPECT_EQ(resumed.report.events.size(), whole_result.report.events.size());
   EXPECT_EQ(resumed.contact_events.size(), whole_result.contact_events.size());
   EXPECT_EQ(resumed.jumps.size(), whole_result.jumps.size());
+  ASSERT_EQ(resumed.user_events.size(), whole_result.user_events.size());
+  for (std::size_t i = 0; i < resumed.user_events.size(); ++i) {
+    EXPECT_EQ(resumed.user_events[i].t, whole_result.user_events[i].t);  // the prism's flip
+  }
   EXPECT_EQ(resumed.rows, whole_result.rows);
   EXPECT_EQ(resumed.conservation.max_energy_change, whole_result.conservation.max_energy_change);
   EXPECT_EQ(resumed.conservation.max_work_energy_residual,

@@ -13,6 +13,7 @@
 #include "tumble/integrators/integrator.hpp"
 #include "tumble/math/rotation.hpp"
 #include "tumble/simulation/make_formulation.hpp"
+#include "tumble/simulation/simulation.hpp"
 
 namespace tumble {
 namespace {
@@ -94,16 +95,14 @@ Model jointed_system() {
 // Allocations during 50 steps of `method` on `system` from `states`, each with a dense output and
 // the event functions (their refresh too), after start() and one step: nothing may be sized
 // lazily later.
-long allocations_in_steps(Formulation& system, const std::string& method,
-                          std::span<const BodyState> states) {
+long allocations_in_steps(OdeSystem& system, const std::string& method, const VecX& y0) {
   StepControl control;
   control.rtol = 1e-9;
   control.atol = 1e-12;
   control.fixed_step = 0.01;
   auto integrator = make_integrator(method, control);
-  VecX y0(system.dimension()), y_dense(system.dimension());
+  VecX y_dense(system.dimension());
   VecX g(static_cast<Eigen::Index>(system.events().size()));
-  system.pack(states, y0);
   system.begin(0.0, y0);
   integrator->start(system, 0.0, y0, 1.0);
   integrator->step(1.0);
@@ -118,6 +117,35 @@ long allocations_in_steps(Formulation& system, const std::string& method,
     system.refresh_event_functions(integrator->t(), integrator->y());
   }
   return allocations.count();
+}
+
+long allocations_in_steps(Formulation& system, const std::string& method,
+                          std::span<const BodyState> states) {
+  VecX y0(system.dimension());
+  system.pack(states, y0);
+  return allocations_in_steps(static_cast<OdeSystem&>(system), method, y0);
+}
+
+// A scenario's own events, evaluated on the row at each step's end: the crate sliding on the
+// floor with a condition on its position and one on its energy (which needs the row's extras).
+TEST(NoAllocation, StepsWithTheScenariosEvents) {
+  const Scenario scenario = load_scenario_text(R"(tumble: 1
+parameters: {d: 1}
+bodies:
+  crate: {shape: box, size: [0.4, 0.4, 0.4], mass: 5, position: [0, 0, 0.2], velocity: [3, 0, 0]}
+contacts:
+  - {name: floor, type: plane, body: crate, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: 0.3}
+events:
+  - {name: slid_d, when: crate.x > d}
+  - {name: slow, when: E < 10}
+simulate: {duration: 1}
+)",
+                                               "events.yaml", {});
+  for (const std::string method : {"dopri5", "dop853", "rk4"}) {
+    PreparedSimulation run = prepare_simulation(scenario);
+    ASSERT_TRUE(run.user_events);
+    EXPECT_EQ(allocations_in_steps(*run.user_events, method, run.y0), 0) << method;
+  }
 }
 
 TEST(NoAllocation, StepsOfAJointedSystem) {

@@ -20,6 +20,14 @@ struct JumpRecord {
   std::vector<JointReaction> reaction_impulses;  // N s and N m s, one per Model::joints entry
 };
 
+// An occurrence of one of the scenario's `events:` (simulation/user_events.hpp), for the summary
+// and events.csv. (The driver's own list has them; they are not part of the hybrid state.)
+struct UserEventRecord {
+  double t = 0.0;
+  std::string name;
+  bool stopped = false;  // the run ended here
+};
+
 struct HybridState {
   double schedule_time = 0.0;  // the last schedule edge reached: decides which loads act
   ContactState contact;        // each contact's status, and its events (contact/contact_status.hpp)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace tumble {
 
@@ -59,6 +60,9 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
   VecX y_row(n), y_event(n);
   VecX& g_before = position.g_before;
   VecX g_after(g_before.size()), g_probe(g_before.size());
+  // Which events this step has handled: two located at the same instant (two conditions on the
+  // same quantity) are both reported.
+  std::vector<char> handled_here(static_cast<std::size_t>(g_before.size()), 0);
   OutputClock clock(position.t0, t_end, options.output_every, position.next_row);
   bool checkpoint_due = static_cast<bool>(on_checkpoint);
 
@@ -142,14 +146,17 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       // Handle the crossings of this step in time order, until one changes the state.
       std::size_t handled = 0;
       double t_last_event = integrator.t_previous();
+      std::fill(handled_here.begin(), handled_here.end(), 0);
       while (handled < event_count) {
         double t_first = std::numeric_limits<double>::infinity();
         std::size_t k_first = event_count;
         for (std::size_t k = 0; k < event_count; ++k) {
           const auto ki = static_cast<Eigen::Index>(k);
-          if (!crosses(g_before(ki), g_after(ki), event_specs[k].direction)) continue;
+          if (handled_here[k] || !crosses(g_before(ki), g_after(ki), event_specs[k].direction)) {
+            continue;
+          }
           const double t_k = locate(k);
-          if (t_k > t_last_event && t_k < t_first) {
+          if (t_k >= t_last_event && (t_k > t_last_event || handled > 0) && t_k < t_first) {
             t_first = t_k;
             k_first = k;
           }
@@ -164,6 +171,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
         const EventAction action = system.on_event(k_first, t_first, y_event);
         report.events.push_back({t_first, k_first, action});
         t_last_event = t_first;
+        handled_here[k_first] = 1;
         ++handled;
         if (action == EventAction::Record) continue;
         if (action == EventAction::Stop) {

@@ -11,7 +11,8 @@ namespace tumble {
 void write_events_csv(const std::filesystem::path& path, std::span<const std::string> contacts,
                       std::span<const std::string> joints,
                       std::span<const ContactEventRecord> contact_events,
-                      std::span<const JumpRecord> jumps) {
+                      std::span<const JumpRecord> jumps,
+                      std::span<const UserEventRecord> user_events) {
   AtomicFile file(path);
   fmt::memory_buffer text;
   auto out = std::back_inserter(text);
@@ -35,8 +36,30 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
       text.push_back('\n');
     }
   };
+  // The scenario's events come after the jumps and contact events of their instant.
+  std::size_t next_user_event = 0;
+  const auto write_user_events_before = [&](double t) {
+    for (; next_user_event < user_events.size(); ++next_user_event) {
+      const UserEventRecord& e = user_events[next_user_event];
+      if (e.t >= t) break;
+      fmt::format_to(out, "{:.17g},\"event\",{},,", e.t,
+                     csv_quoted(e.stopped ? e.name + " (stops the run)" : e.name));
+      for (std::size_t k = 0; k < 6 * joints.size(); ++k) text.push_back(',');
+      text.push_back('\n');
+    }
+  };
+  const auto write_contact_events_until = [&](double t, bool including) {
+    // Each contact event with its instant's user events before it (those strictly earlier).
+    while (next_event < contact_events.size()) {
+      const ContactEventRecord& e = contact_events[next_event];
+      if (e.t > t || (e.t == t && !including)) break;
+      write_user_events_before(e.t);
+      write_contact_events_before(e.t, true);
+    }
+  };
   for (const JumpRecord& jump : jumps) {
-    write_contact_events_before(jump.t, false);
+    write_contact_events_until(jump.t, false);
+    write_user_events_before(jump.t);
     fmt::format_to(out, "{:.17g},\"jump\",{},{:.17g},{:.17g}", jump.t, csv_quoted(jump.what),
                    jump.kinetic_energy_before, jump.kinetic_energy_after);
     for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -47,7 +70,8 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
     }
     text.push_back('\n');
   }
-  write_contact_events_before(std::numeric_limits<double>::infinity(), true);
+  write_contact_events_until(std::numeric_limits<double>::infinity(), true);
+  write_user_events_before(std::numeric_limits<double>::infinity());
   file.write(std::string_view(text.data(), text.size()));
   file.finish();
 }

@@ -1,8 +1,11 @@
 #pragma once
-// The run's events CSV: every contact event (mode change, impact) and every jump at a breakpoint
-// (impulse, lock, motor start) in time order, at full precision (17 significant digits, as the
-// trajectory), with each jump's kinetic energy before and after and each joint's reaction impulse.
-//   t, source (the contact's name, or "jump"; texts are quoted), what (as the summary says it),
+// The run's events CSV: every contact event (mode change, impact), every jump at a breakpoint
+// (impulse, lock, motor start) and every occurrence of the scenario's `events:`, in time order (at
+// one instant: jumps, then contact events, then the scenario's events), at full precision (17
+// significant digits, as the trajectory), with each jump's kinetic energy before and after and
+// each joint's reaction impulse.
+//   t, source (the contact's name, "jump", or "event"; texts are quoted), what (as the summary
+//   says it; an event's name, with " (stops the run)" where it did),
 //   KE_before,
 //   KE_after (J; jumps only), then per joint J: J.Fx J.Fy J.Fz (N s) J.Mx J.My J.Mz (N m s, about
 //   the joint point): the impulse its first body exerts on its second (jumps only; empty cells
@@ -20,6 +23,7 @@ namespace tumble {
 void write_events_csv(const std::filesystem::path& path, std::span<const std::string> contacts,
                       std::span<const std::string> joints,
                       std::span<const ContactEventRecord> contact_events,
-                      std::span<const JumpRecord> jumps);
+                      std::span<const JumpRecord> jumps,
+                      std::span<const UserEventRecord> user_events = {});
 
 }  // namespace tumble

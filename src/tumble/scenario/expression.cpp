@@ -220,6 +220,28 @@ std::vector<std::string_view> expression_names(std::string_view expression) {
   return names;
 }
 
+std::optional<Comparison> split_comparison(const std::string& text) {
+  int depth = 0;
+  std::optional<std::size_t> at;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if (depth != 0) continue;
+    if (c == '&' || c == '|' || c == '=' || c == '!') {
+      if (c == '=' && at && i == *at + 1) continue;  // <= or >=
+      return std::nullopt;
+    }
+    if (c == '<' || c == '>') {
+      if (at) return std::nullopt;
+      at = i;
+    }
+  }
+  if (!at) return std::nullopt;
+  const std::size_t right = *at + (text[*at + 1] == '=' ? 2 : 1);
+  return Comparison{text.substr(0, *at), text.substr(right), text[*at] == '>'};
+}
+
 struct BoundExpression::Impl {
   mu::Parser parser;
 };
@@ -246,6 +268,10 @@ BoundExpression::BoundExpression(std::string text, std::span<const Variable> var
       }
       used_names_.push_back(name);
     }
+    // Listing the names leaves muParser to compile the expression again at its next evaluation,
+    // with allocations: done here, so that evaluating never allocates (an event's function is
+    // evaluated inside a run's steps).
+    parser.Eval();
     // A lone variable ("ball.vx", a sweep's usual record) is read without muParser's evaluation:
     // the same double, a sixth of the cost.
     for (const Variable& variable : variables) {

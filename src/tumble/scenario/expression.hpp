@@ -3,6 +3,7 @@
 // the usual operators and functions (sqrt, sin, cos, atan2, ...), the constants pi and e, the
 // parameters defined so far, and the postfix unit deg ("30 deg" = 30 pi / 180 rad).
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -57,6 +58,16 @@ class ExpressionEvaluator {
 // a, sin, b). A superset of the parameters it reads, never missing one, so a name not listed is
 // a name the expression's value cannot depend on.
 std::vector<std::string_view> expression_names(std::string_view expression);
+
+// A condition that is one comparison "A < B" (or >, <=, >=) outside parentheses, without && or
+// ||: where it turns is where A - B crosses zero.
+struct Comparison {
+  std::string left, right;
+  bool greater = false;  // > or >=: it becomes true as A - B rises through zero
+  std::string margin() const { return "(" + left + ") - (" + right + ")"; }
+};
+// The comparison `text` is, if it is one.
+std::optional<Comparison> split_comparison(const std::string& text);
 
 // An expression over variables whose values change between evaluations (a row's columns, a
 // run's parameters), compiled once and evaluated many times, with the constants and units of

@@ -66,6 +66,10 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
 // names there are (and the likely one, for a typo).
 std::string read_body_or_ground(const Reader& reader, const Field& field,
                                 const std::vector<BodySpec>& bodies, bool ground_allowed);
+// `events:` (events_reader.cpp): their names, conditions, directions and whether each stops the
+// run. The conditions' names are checked against the columns when the model is built.
+std::vector<UserEventSpec> read_events(const Reader& reader, const Field& field,
+                                       const Scenario& scenario);
 // `simulate:` and `output:` (simulate_reader.cpp).
 // has_forces: any load, force element or joint; has_system: joints, springs or impulses.
 SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces,

@@ -33,9 +33,9 @@ using scenario_reading::Field;
 using scenario_reading::MapReader;
 using scenario_reading::Reader;
 
-const std::vector<std::string> kTopLevelKeys = {"tumble",   "name",   "parameters", "gravity",
-                                                "bodies",   "joints", "forces",     "contacts",
-                                                "simulate", "output"};
+const std::vector<std::string> kTopLevelKeys = {"tumble", "name",     "parameters", "gravity",
+                                                "bodies", "joints",   "forces",     "contacts",
+                                                "events", "simulate", "output"};
 
 // The line of `text` that starts at line index `line` (0-based), without its end.
 std::string_view line_of(std::string_view text, int line) {
@@ -291,6 +291,9 @@ Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
   if (const auto f = root.find("forces")) scenario_reading::read_forces(reader, *f, scenario);
   if (const auto f = root.find("contacts")) {
     scenario.contacts = scenario_reading::read_contacts(reader, *f, scenario);
+  }
+  if (const auto f = root.find("events")) {
+    scenario.events = scenario_reading::read_events(reader, *f, scenario);
   }
   const bool has_system = !scenario.joints.empty() || !scenario.impulses.empty() ||
                           !scenario.springs.empty() || !scenario.torsional_springs.empty() ||

@@ -189,6 +189,20 @@ struct OutputSpec {
   SourceLocation trajectory_where;  // where output.trajectory is given (line 0: the default)
 };
 
+// An `events:` entry: a moment the run locates, as it does contacts' mode changes (to the
+// integrator's precision), and reports, and may end at.
+struct UserEventSpec {
+  enum class Direction { Up, Down, Both };
+  std::string name;
+  // An expression of the trajectory's columns and the parameters whose zero is the event
+  // ("box.x - d"), or a condition "A > B" (or <, >=, <=) whose becoming true is.
+  std::string when;
+  Direction direction = Direction::Both;  // which crossings of the expression's zero count
+  bool stop = false;                      // the run ends at the event's first occurrence
+  SourceLocation where;                   // the entry
+  SourceLocation when_where;              // its `when:` value
+};
+
 struct Scenario {
   std::string file;  // as given on the command line
   std::string name;
@@ -201,6 +215,7 @@ struct Scenario {
   std::vector<TorsionalSpringSpec> torsional_springs;  // ... of type torsional_spring
   std::vector<ImpulseSpec> impulses;                   // ... of type impulse
   std::vector<ContactSpec> contacts;                   // `contacts:`
+  std::vector<UserEventSpec> events;                   // `events:`
   SimulateSpec simulate;
   OutputSpec output;
   // What the reader accepted but that is likely not what was meant (an angle of more than a turn

@@ -148,6 +148,13 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
   m->t0 = 0.0;
   m->t_end = sim.duration;
   m->y0 = initial_state_vector(scenario, *m->formulation);
+  if (!scenario.events.empty()) {
+    m->user_events = std::make_shared<UserEventDefinitions>(UserEventDefinitions{
+        scenario.events, column_layout(scenario, *m->formulation), scenario.parameters});
+    // Compiles them, refusing a name that is neither a column nor a parameter, before any run.
+    const std::unique_ptr<Formulation> run = m->formulation->new_run();
+    const UserEventSystem check(*run, m->user_events);
+  }
   return m;
 }
 
@@ -167,6 +174,9 @@ VecX initial_state_vector(const Scenario& scenario, const Formulation& formulati
 PreparedSimulation prepare_run(const SimulationModel& model) {
   PreparedSimulation p;
   p.formulation = model.formulation->new_run();
+  if (model.user_events) {
+    p.user_events = std::make_unique<UserEventSystem>(*p.formulation, model.user_events);
+  }
   p.integrator = make_run_integrator(model);
   p.control = model.control;
   p.options = model.options;
@@ -211,10 +221,8 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
   const auto on_row = [&](double t, const VecX& y) {
     formulation.unpack_all(y, states);
     formulation.calc_row_extras(t, y, extras);
-    SystemQuantities q = calc_system_quantities(model.bodies, states, model.gravity_W);
-    const double gravity_potential = q.potential_energy;
-    q.potential_energy += extras.elastic_energy;
-    q.total_energy += extras.elastic_energy;
+    double gravity_potential = 0.0;
+    const SystemQuantities q = row_quantities(model, states, extras, &gravity_potential);
     const double L = q.angular_momentum_about_origin.norm();
     if (result.rows == 0) {
       base.E0 = q.total_energy;
@@ -263,17 +271,18 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     };
   }
 
+  OdeSystem& system = simulation.user_events ? static_cast<OdeSystem&>(*simulation.user_events)
+                                             : static_cast<OdeSystem&>(*simulation.formulation);
   const auto start = std::chrono::steady_clock::now();
   if (from == nullptr) {
-    result.report =
-        integrate(*simulation.integrator, *simulation.formulation, simulation.t0, simulation.y0,
-                  simulation.t_end, simulation.options, on_row, on_driver_checkpoint);
+    result.report = integrate(*simulation.integrator, system, simulation.t0, simulation.y0,
+                              simulation.t_end, simulation.options, on_row, on_driver_checkpoint);
   } else {
     simulation.formulation->set_hybrid_state(from->hybrid);
-    simulation.integrator = from->driver.integrator->clone_onto(*simulation.formulation);
+    simulation.integrator = from->driver.integrator->clone_onto(system);
     result.report =
-        resume_integration(*simulation.integrator, *simulation.formulation, from->driver.position,
-                           simulation.t_end, simulation.options, on_row, on_driver_checkpoint);
+        resume_integration(*simulation.integrator, system, from->driver.position, simulation.t_end,
+                           simulation.options, on_row, on_driver_checkpoint);
   }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -283,6 +292,9 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
   const HybridState& hybrid = simulation.formulation->hybrid_state();
   result.jumps = hybrid.jumps;
   result.contact_events = hybrid.contact.events;
+  if (simulation.user_events) {
+    result.user_events = simulation.user_events->occurrences(result.report.events);
+  }
   return result;
 }
 
@@ -302,6 +314,15 @@ SimulationResult run_simulation(PreparedSimulation& simulation, RowSink& sink,
         sink.write_row({t, states, &q, &extras});
       },
       on_checkpoint);
+}
+
+SystemQuantities row_quantities(const Model& model, std::span<const BodyState> states,
+                                const RowExtras& extras, double* gravity_potential) {
+  SystemQuantities q = calc_system_quantities(model.bodies, states, model.gravity_W);
+  if (gravity_potential != nullptr) *gravity_potential = q.potential_energy;
+  q.potential_energy += extras.elastic_energy;
+  q.total_energy += extras.elastic_energy;
+  return q;
 }
 
 ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation) {

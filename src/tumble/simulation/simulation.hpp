@@ -17,11 +17,14 @@
 #include "tumble/output/columns.hpp"
 #include "tumble/output/output_row.hpp"
 #include "tumble/scenario/scenario.hpp"
+#include "tumble/simulation/user_events.hpp"
 
 namespace tumble {
 
 struct PreparedSimulation {
   std::unique_ptr<Formulation> formulation;
+  // The scenario's events on the formulation, when it has any: what the driver then runs.
+  std::unique_ptr<UserEventSystem> user_events;
   std::unique_ptr<Integrator> integrator;
   StepControl control;
   DriverOptions options;
@@ -42,6 +45,7 @@ struct SimulationModel {
   VecX y0;  // the scenario's initial state
   double t0 = 0.0;
   double t_end = 0.0;
+  std::shared_ptr<const UserEventDefinitions> user_events;  // null when it has none
 };
 
 // Throws ScenarioError, under the key of the part that is wrong, for a combination the engine
@@ -111,6 +115,7 @@ struct SimulationResult {
   // contacts' mode changes and impacts, in time order.
   std::vector<JumpRecord> jumps;
   std::vector<ContactEventRecord> contact_events;
+  std::vector<UserEventRecord> user_events;  // the scenario's `events:` where they happened
 };
 
 // The first row's energy and momenta, which the conservation report measures against.
@@ -143,6 +148,11 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserve
 // The same, each row to a sink (the trajectory CSV, the animation's recording, several at once).
 SimulationResult run_simulation(PreparedSimulation& simulation, RowSink& sink,
                                 const CheckpointCallback& on_checkpoint = {});
+// A row's system quantities: the bodies' energies and momenta (about the world origin), with the
+// springs' energy (extras.elastic_energy) in PE and E, as the trajectory has them; the potential
+// energy of gravity alone in *gravity_potential, if given.
+SystemQuantities row_quantities(const Model& model, std::span<const BodyState> states,
+                                const RowExtras& extras, double* gravity_potential = nullptr);
 // The columns a run of this scenario writes: its bodies', joints', contacts' and the
 // formulation's elements'.
 ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation);

@@ -25,38 +25,12 @@ struct RunRecorder::RowReduction {
 
   RowReduction(ReductionKind k, std::string text, std::span<const BoundExpression::Variable> vars)
       : kind(k), value(text, vars) {
-    if (const auto sides = compared_sides(text)) {
-      margin = std::make_unique<BoundExpression>("(" + sides->first + ") - (" + sides->second + ")",
-                                                 vars);
+    if (const auto comparison = split_comparison(text)) {
+      margin = std::make_unique<BoundExpression>(comparison->margin(), vars);
     }
   }
 
   bool counts_turns() const { return kind == ReductionKind::First || kind == ReductionKind::Count; }
-
-  // The two sides of a comparison that is the whole condition (<, >, <=, >= outside
-  // parentheses, no && or ||); none for another condition.
-  static std::optional<std::pair<std::string, std::string>> compared_sides(
-      const std::string& text) {
-    int depth = 0;
-    std::optional<std::size_t> at;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      const char c = text[i];
-      if (c == '(') ++depth;
-      if (c == ')') --depth;
-      if (depth != 0) continue;
-      if (c == '&' || c == '|' || c == '=' || c == '!') {
-        if (c == '=' && at && i == *at + 1) continue;  // <= or >=
-        return std::nullopt;
-      }
-      if (c == '<' || c == '>') {
-        if (at) return std::nullopt;
-        at = i;
-      }
-    }
-    if (!at) return std::nullopt;
-    const std::size_t right = *at + (text[*at + 1] == '=' ? 2 : 1);
-    return std::make_pair(text.substr(0, *at), text.substr(right));
-  }
 
   void observe_turn(double t) {
     const bool holds = value.evaluate() != 0.0;
@@ -138,9 +112,15 @@ namespace {
 std::string event_problem(const std::string& event, const Scenario& scenario) {
   const auto dot = event.find('.');
   if (dot == std::string::npos) {
-    return "expected CONTACT.KIND, impulse.NAME, lock.NAME or motor.NAME";
+    return "expected CONTACT.KIND, event.NAME, impulse.NAME, lock.NAME or motor.NAME";
   }
   const std::string source = event.substr(0, dot), name = event.substr(dot + 1);
+  if (source == "event") {
+    for (const UserEventSpec& e : scenario.events) {
+      if (e.name == name) return "";
+    }
+    return "the scenario's events: has no event " + name;
+  }
   if (source == "impulse") {
     for (const ImpulseSpec& i : scenario.impulses) {
       if (i.name == name) return "";
@@ -159,38 +139,22 @@ std::string event_problem(const std::string& event, const Scenario& scenario) {
     if (std::find(kinds.begin(), kinds.end(), name) != kinds.end()) return "";
     return fmt::format("a contact's events are {}", fmt::join(kinds, ", "));
   }
-  return "no contact, impulse, lock or motor is named " + source;
-}
-
-std::vector<std::string> parameter_names(const Scenario& scenario) {
-  std::vector<std::string> names;
-  for (const auto& [name, value] : scenario.parameters) names.push_back(name);
-  return names;
+  return "no contact, event, impulse, lock or motor is named " + source;
 }
 
 }  // namespace
 
 RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& layout,
                          const Scenario& scenario)
-    : layout_(layout),
-      column_names_(column_names(layout)),
-      parameter_names_(parameter_names(scenario)),
-      row_(column_names_.size(), 0.0),
-      parameters_(parameter_names_.size(), 0.0) {
-  std::vector<BoundExpression::Variable> row_variables;
-  for (std::size_t i = 0; i < column_names_.size(); ++i) {
-    row_variables.push_back({column_names_[i], &row_[i]});
-  }
-  std::vector<BoundExpression::Variable> parameter_variables;
-  for (std::size_t i = 0; i < parameter_names_.size(); ++i) {
-    parameter_variables.push_back({parameter_names_[i], &parameters_[i]});
-  }
-  row_variables.insert(row_variables.end(), parameter_variables.begin(), parameter_variables.end());
+    : layout_(layout), row_(layout, scenario.parameters) {
+  const std::span<const BoundExpression::Variable> row_variables = row_.variables();
+  const std::span<const BoundExpression::Variable> parameter_variables = row_.parameter_variables();
   for (const Outcome& outcome : outcomes) {
     OutcomeSlots slots;
     slots.reductions = outcome.reductions;
     slots.values = std::make_unique<std::vector<double>>(outcome.reductions.size(), 0.0);
-    std::vector<BoundExpression::Variable> value_variables = parameter_variables;
+    std::vector<BoundExpression::Variable> value_variables(parameter_variables.begin(),
+                                                           parameter_variables.end());
     for (std::size_t r = 0; r < outcome.reductions.size(); ++r) {
       const Reduction& reduction = outcome.reductions[r];
       value_variables.push_back({fmt::format("__r{}", r), &(*slots.values)[r]});
@@ -224,22 +188,12 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
     outcomes_.push_back(std::move(slots));
   }
   // Only the columns the reductions read are taken from each row.
-  std::vector<std::string> read;
+  std::vector<const BoundExpression*> read;
   for (const auto& reduction : row_reductions_) {
-    read.insert(read.end(), reduction->value.used_names().begin(),
-                reduction->value.used_names().end());
-    if (reduction->margin) {
-      read.insert(read.end(), reduction->margin->used_names().begin(),
-                  reduction->margin->used_names().end());
-    }
+    read.push_back(&reduction->value);
+    if (reduction->margin) read.push_back(reduction->margin.get());
   }
-  std::size_t i = 0;
-  for_each_column(layout_, [&](std::string_view, std::string_view, auto&& value_of) {
-    if (std::find(read.begin(), read.end(), column_names_[i]) != read.end()) {
-      read_columns_.push_back({i, value_of});
-    }
-    ++i;
-  });
+  row_.read_by(read);
 }
 
 RunRecorder::~RunRecorder() = default;
@@ -249,19 +203,18 @@ bool RunRecorder::fits(const ColumnLayout& layout, const Scenario& scenario) con
   if (layout.bodies != layout_.bodies || layout.joints != layout_.joints ||
       layout.joint_types != layout_.joint_types || layout.contacts != layout_.contacts ||
       layout.elements != layout_.elements ||
-      scenario.parameters.size() != parameter_names_.size()) {
+      scenario.parameters.size() != row_.parameter_names().size()) {
     return false;
   }
   std::size_t i = 0;
   for (const auto& [name, value] : scenario.parameters) {
-    if (name != parameter_names_[i++]) return false;
+    if (name != row_.parameter_names()[i++]) return false;
   }
   return true;
 }
 
 void RunRecorder::start(const Scenario& scenario) {
-  std::size_t i = 0;
-  for (const auto& [name, value] : scenario.parameters) parameters_[i++] = value;
+  row_.set_parameters(scenario.parameters);
   for (const auto& reduction : row_reductions_) {
     reduction->rows = 0;
     reduction->integral = 0.0;
@@ -271,12 +224,13 @@ void RunRecorder::start(const Scenario& scenario) {
 
 void RunRecorder::observe(const OutputRow& row) {
   if (row_reductions_.empty()) return;  // events only: the rows are not needed
-  for (const ReadColumn& column : read_columns_) row_[column.index] = column.value_of(row);
+  row_.take(row);
   for (const auto& reduction : row_reductions_) reduction->observe(row.t);
 }
 
 std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> events,
-                                        std::span<const JumpRecord> jumps) const {
+                                        std::span<const JumpRecord> jumps,
+                                        std::span<const UserEventRecord> user_events) const {
   std::vector<double> results;
   for (const OutcomeSlots& slots : outcomes_) {
     for (std::size_t r = 0; r < slots.reductions.size(); ++r) {
@@ -286,7 +240,8 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
         value = row_reductions_[slots.row_reduction[r]]->result();
         continue;
       }
-      // Contact events and jumps are each in time order; the first is the earlier of the two.
+      // Contact events, jumps and the scenario's events are each in time order; the first is the
+      // earliest of them.
       double first = std::numeric_limits<double>::quiet_NaN();
       double count = 0.0;
       for (const ContactEventRecord& e : events) {
@@ -297,6 +252,11 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
       for (const JumpRecord& jump : jumps) {
         if (!names_jump(reduction.argument, jump)) continue;
         if (count == 0.0 || jump.t < first) first = jump.t;
+        ++count;
+      }
+      for (const UserEventRecord& e : user_events) {
+        if (reduction.argument != "event." + e.name) continue;
+        if (count == 0.0 || e.t < first) first = e.t;
         ++count;
       }
       value = reduction.kind == ReductionKind::First ? first : count;

@@ -2,7 +2,6 @@
 // The outcomes of one run (outcome.hpp), accumulated row by row as the run goes: no row is kept.
 // A recorder is made once for a scenario's columns and parameters, its expressions compiled
 // then, and reused for each run of a sweep on its thread.
-#include <functional>
 #include <map>
 #include <memory>
 #include <span>
@@ -10,6 +9,7 @@
 #include <vector>
 
 #include "tumble/output/columns.hpp"
+#include "tumble/output/row_variables.hpp"
 #include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/sweep/outcome.hpp"
@@ -31,20 +31,13 @@ class RunRecorder {
   void observe(const OutputRow& row);
   // Each outcome's value, after the last row, with the run's events.
   std::vector<double> finish(std::span<const ContactEventRecord> events,
-                             std::span<const JumpRecord> jumps) const;
+                             std::span<const JumpRecord> jumps,
+                             std::span<const UserEventRecord> user_events) const;
 
  private:
   struct RowReduction;
   ColumnLayout layout_;
-  std::vector<std::string> column_names_;
-  std::vector<std::string> parameter_names_;
-  std::vector<double> row_;  // the columns' values at the row being observed (those read)
-  struct ReadColumn {
-    std::size_t index;                                 // in row_
-    std::function<double(const OutputRow&)> value_of;  // for_each_column's
-  };
-  std::vector<ReadColumn> read_columns_;  // the columns the reductions read
-  std::vector<double> parameters_;        // the run's parameter values, by parameter_names_
+  RowVariables row_;  // the columns the reductions read, and the run's parameters
   std::vector<std::unique_ptr<RowReduction>> row_reductions_;
   // Per outcome: its expression over its reductions' values, and where each value comes from
   // (an index into row_reductions_, or an event reduction).

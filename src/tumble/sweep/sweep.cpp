@@ -119,7 +119,7 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     record.message = "integration failed: " + result.report.failure;
     return;
   }
-  record.values = recorder_->finish(result.contact_events, result.jumps);
+  record.values = recorder_->finish(result.contact_events, result.jumps, result.user_events);
 }
 
 std::vector<RunRecord> run_points(const SweepSpec& spec,

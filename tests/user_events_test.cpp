@@ -1,0 +1,134 @@
+// A scenario's own events (`events:`), each located by the driver as it locates the contacts'
+// mode changes, against closed forms: a crate sliding with Coulomb friction stopped where it has
+// slid d, at t = (v0 - sqrt(v0^2 - 2 mu g d)) / (mu g); the half-speed instant v0 / (2 mu g);
+// the chapter's prism's first flip (the body-frame spin about k changing sign) at the 40-digit
+// reference's time. Also: the direction of an expression's crossing, the errors' locations, and
+// a run resumed from a checkpoint finding the same events.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scenario_run.hpp"
+#include "test_files.hpp"
+#include "tumble/sweep/outcome.hpp"
+#include "tumble/sweep/sweep.hpp"
+
+namespace tumble {
+namespace {
+
+constexpr double kMu = 0.3, kV0 = 3.0, kG = 9.81;
+
+std::string crate(const std::string& d, const std::string& events) {
+  return R"(tumble: 1
+parameters: {mu: 0.3, v0: 3, d: )" +
+         d + R"(, g: 9.81}
+gravity: [0, 0, -g]
+bodies:
+  crate: {shape: box, size: [0.4, 0.4, 0.4], mass: 5, position: [0, 0, 0.2], velocity: [v0, 0, 0]}
+contacts:
+  - {name: floor, type: plane, body: crate, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: mu}
+events:
+)" + events +
+         R"(
+simulate: {duration: 2, integrator: dop853, rtol: 1e-10, atol: 1e-12, output_every: 0.01}
+)";
+}
+
+// While it slides, x = v0 t - mu g t^2 / 2 and vx = v0 - mu g t: the dense output of a quadratic
+// is exact, so the event is located to the root finder's precision (a few ulps of t), far inside
+// the 1e-12 asked here.
+TEST(UserEvents, ACrateStoppedWhereItHasSlidD) {
+  const double d = 1.0;
+  const test::ScenarioRun run = test::run_inline_scenario(
+      crate("1", "  - {name: slid_d, when: crate.x > d, stop: true}"), "slid_d");
+  const double a = kMu * kG;
+  const double t_d = (kV0 - std::sqrt(kV0 * kV0 - 2.0 * a * d)) / a;
+  ASSERT_EQ(run.result.user_events.size(), 1u);
+  EXPECT_EQ(run.result.user_events[0].name, "slid_d");
+  EXPECT_TRUE(run.result.user_events[0].stopped);
+  EXPECT_NEAR(run.result.user_events[0].t, t_d, 1e-12 * t_d);
+  // The run ends there, with a row at the event.
+  EXPECT_NEAR(run.result.report.t_reached, t_d, 1e-12 * t_d);
+  ASSERT_FALSE(run.rows.empty());
+  EXPECT_EQ(run.rows.back().t, run.result.user_events[0].t);
+  EXPECT_NEAR(run.rows.back().states[0].r_G.x(), d, 1e-12);
+}
+
+// An expression's zero with a direction: vx - v0/2 falls through zero at v0 / (2 mu g) and never
+// rises; `both` counts the fall; a condition that never holds (d beyond the stopping distance
+// v0^2 / (2 mu g) = 1.53 m) never happens, and the run goes to its end.
+TEST(UserEvents, AnExpressionsCrossingsCountInTheirDirection) {
+  const test::ScenarioRun run = test::run_inline_scenario(
+      crate("2", R"(  - {name: half, when: crate.vx - v0/2, direction: down}
+  - {name: half_up, when: crate.vx - v0/2, direction: up}
+  - {name: half_any, when: crate.vx - v0/2}
+  - {name: slid_d, when: crate.x > d, stop: true})"),
+      "half");
+  const double t_half = kV0 / (2.0 * kMu * kG);
+  ASSERT_EQ(run.result.user_events.size(), 2u);
+  EXPECT_EQ(run.result.user_events[0].name, "half");
+  EXPECT_NEAR(run.result.user_events[0].t, t_half, 1e-12 * t_half);
+  EXPECT_EQ(run.result.user_events[1].name, "half_any");
+  EXPECT_EQ(run.result.user_events[1].t, run.result.user_events[0].t);
+  EXPECT_FALSE(run.result.user_events[0].stopped);
+  EXPECT_EQ(run.result.report.t_reached, 2.0);
+}
+
+// The chapter's prism (examples/sweeps/prism_flip_time.yaml at its tilt of 0.01 rad/s, dop853 at
+// rtol 1e-12): the event `prism.w3 < 0` at the reference's 9.664094834075236 s. The event is
+// located on the integrator's continuous extension, whose error at rtol 1e-12, grown by
+// exp(lambda t) ~ 300 along the unstable spin over the 9.7 s, bounds the time to about 1e-9 s.
+TEST(UserEvents, ThePrismsFlipAtTheReferencesTime) {
+  std::string text =
+      test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/sweeps/prism_flip_time.yaml");
+  text.replace(text.find("simulate:"), 0, "events:\n  - {name: flip, when: prism.w3 < 0}\n");
+  const test::ScenarioRun run = test::run_inline_scenario(text, "flip");
+  ASSERT_EQ(run.result.user_events.size(), 2u);  // and again a period later, at 48.3 s
+  EXPECT_EQ(run.result.user_events[0].name, "flip");
+  EXPECT_NEAR(run.result.user_events[0].t, 9.664094834075236, 1e-9);
+}
+
+TEST(UserEvents, AnUnknownNameOrAMisplacedDirectionIsLocated) {
+  test::expect_error(crate("1", "  - {name: e1, when: crate.speed > 1}"), 9, 22, "events[0].when",
+                     "unknown name 'crate.speed'");
+  test::expect_error(crate("1", "  - {name: e1, when: crate.x > d, direction: up}"), 9, 46,
+                     "events[0].direction", "a comparison says its own direction");
+  test::expect_error(crate("1", "  - {name: e1, when: crate.x > d && t > 1}"), 9, 22,
+                     "events[0].when", "not && or ||");
+  test::expect_error(crate("1", "  - {name: floor, when: crate.x > d}"), 9, 12, "events[0].name",
+                     "names a contact");
+}
+
+}  // namespace
+}  // namespace tumble
+
+namespace tumble {
+namespace {
+
+// A sweep records a scenario's event: first(event.slid_d) against the closed form over the
+// friction (each run's event located to the integrator's precision, not the rows').
+TEST(UserEvents, ASweepRecordsTheFirstOccurrence) {
+  SweepSpec spec;
+  spec.text = crate("1", "  - {name: slid_d, when: crate.x > d}");
+  spec.path = "events_sweep.yaml";
+  spec.varied = {"mu"};
+  spec.outcomes = {parse_record("td=first(event.slid_d)"), parse_record("n=count(event.slid_d)")};
+  const std::vector<std::vector<double>> points = {{0.1}, {0.2}, {0.3}, {0.4}};
+  const std::vector<RunRecord> records = run_points(spec, points, 2);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_EQ(records[i].status, RunStatus::Ok) << records[i].message;
+    const double a = points[i][0] * kG;
+    const double t_d = (kV0 - std::sqrt(kV0 * kV0 - 2.0 * a)) / a;
+    EXPECT_NEAR(records[i].values[0], t_d, 1e-12 * t_d) << points[i][0];
+    EXPECT_EQ(records[i].values[1], 1.0);
+  }
+  SweepSpec unknown = spec;
+  unknown.outcomes = {parse_record("td=first(event.slid)")};
+  const std::vector<RunRecord> refused = run_points(unknown, points, 1);
+  EXPECT_EQ(refused[0].status, RunStatus::Invalid);
+  EXPECT_NE(refused[0].message.find("has no event slid"), std::string::npos) << refused[0].message;
+}
+
+}  // namespace
+}  // namespace tumble

@@ -1,5 +1,7 @@
 #include "tumble/multibody/articulated_formulation.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -28,6 +30,23 @@ void invert_joint_inertia(const Matrix& D, Matrix& D_inv) {
     default:
       throw std::logic_error("a joint has 0, 1, 3 or 6 freedoms");
   }
+}
+
+// The pseudo-inverse of a ball joint's S^T I^A S that may be singular: a point mass held at a
+// pivot has no inertia about the line from the pivot through it (D d = 0). Turning about that
+// line moves no mass and no force or moment can act about it, so its acceleration is taken as
+// zero (the pseudo-inverse's minimum-norm solution) and the other two are solved as usual.
+// Eigenvalues below 1e-12 of the largest are that line's.
+template <typename Matrix>
+void pseudo_invert_ball_joint_inertia(const Matrix& D, Matrix& D_inv) {
+  const Eigen::SelfAdjointEigenSolver<Mat3> eigen{Mat3(D)};
+  const Vec3& lambda = eigen.eigenvalues();
+  const double floor = 1e-12 * lambda.cwiseAbs().maxCoeff();
+  Vec3 inverse = Vec3::Zero();
+  for (int i = 0; i < 3; ++i) {
+    if (lambda(i) > floor) inverse(i) = 1.0 / lambda(i);
+  }
+  D_inv = eigen.eigenvectors() * inverse.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
 // The work-ledger's unit for its absolute tolerance, J: how much the system's energy changes
@@ -225,7 +244,11 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
     } else {
       w.U.noalias() = w.IA * joint.S;
       const SpeedMatrix D = joint.S.transpose() * w.U;
-      invert_joint_inertia(D, w.D_inv);
+      if (m_.holds_point_on_ball[k]) {
+        pseudo_invert_ball_joint_inertia(D, w.D_inv);
+      } else {
+        invert_joint_inertia(D, w.D_inv);
+      }
       w.u = w.tau;
       w.u.noalias() -= joint.S.transpose() * w.pA;
       Ia = w.IA;

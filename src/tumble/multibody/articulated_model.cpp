@@ -44,9 +44,12 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
   dimension = ledger + static_cast<Eigen::Index>(element_names().size());
 
   has_children.assign(tree.size(), false);
+  holds_point_on_ball.assign(tree.size(), false);
   tree_root.assign(tree.size(), 0);
   for (std::size_t k = 0; k < tree.size(); ++k) {  // parents come before their children
     const TreeJoint& joint = tree[k];
+    holds_point_on_ball[k] =
+        joint.type == JointType::Ball && model.bodies[joint.child].I_G_B.isZero(0.0);
     if (joint.parent == kGround) {
       tree_root[k] = k;
     } else {

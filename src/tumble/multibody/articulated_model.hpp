@@ -26,6 +26,10 @@ struct ArticulatedModel {
   std::vector<TreeJoint> tree;            // parents before their children
   std::vector<std::size_t> slot_of_body;  // tree index of each body's inbound joint
   std::vector<bool> has_children;         // per tree joint: another body hangs from its child
+  // Per tree joint: a ball joint holding a point mass (no inertia about its COM), whose turn
+  // about the line from the pivot through it moves no mass: nothing says how fast it spins about
+  // that line, and its joint inertia is singular there (solved by its pseudo-inverse).
+  std::vector<bool> holds_point_on_ball;
   std::vector<std::size_t> tree_root;     // per tree joint: its ancestor hung from ground
   std::vector<int> slot_of_joint;         // tree index of each model joint
   std::vector<Eigen::Index> quaternion_offsets;

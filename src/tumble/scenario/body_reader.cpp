@@ -241,6 +241,18 @@ void check_slender_bodies(const Scenario& scenario) {
     const Vec3 r_G_W = body.position_W + body.R_WB * mp.com;
     for (const JointSpec& joint : scenario.joints) {
       if (joint.body_a != body.name && joint.body_b != body.name) continue;
+      if (joint.type == JointType::Ball && point) {
+        // A point away from its pivot: turning about the line through both moves no mass, so
+        // its motion is the point's (the spherical pendulum), whatever that turn does.
+        const double reach = (r_G_W - joint.at_W).norm();
+        if (!(reach > 1e-9 * std::max(1.0, joint.at_W.norm()))) {
+          fail(
+              fmt::format("it sits on the ball joint '{}': nothing holds it away from the "
+                          "pivot, so it cannot swing; put the pivot away from it",
+                          joint.name));
+        }
+        continue;
+      }
       if (joint.type == JointType::Ball || joint.type == JointType::Free) {
         fail(
             fmt::format("on the ball joint '{}' it could turn about the line from the pivot "

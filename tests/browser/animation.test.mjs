@@ -36,6 +36,8 @@ before(async () => {
   pages.projectile = join(work, 'spinning_projectile.html');
   animate(join(root, 'examples', 'ramp_race.yaml'), work);
   pages.ramp = join(work, 'ramp_race.html');
+  animate(join(root, 'examples', 'cubli.yaml'), work);
+  pages.cubli = join(work, 'cubli.html');
 
   // 20,000 rows: the prism with a row every millisecond.
   const prism = readFileSync(join(root, 'examples', 'tumbling_prism.yaml'), 'utf8');
@@ -182,6 +184,27 @@ function greyShare() {
   }
   return grey / (w * h);
 }
+
+test('joints are drawn, and each body has its colour in the plots as in the legend', async () => {
+  const { page, context, seen } = await open(pages.cubli);
+  // The Cubli: its frame on a hinge to the ground's corner, its wheel on a hinge in the frame.
+  assert.equal(await page.evaluate(() => window.tumble.joints), 2);
+  const colors = await page.evaluate(() => window.tumble.bodyColors);
+  const legend = await page.$$eval('#legend li', (items) => items.map((li) => li.textContent));
+  assert.equal(colors.length, legend.length);
+  const strokes = await page.evaluate(() => window.tumble.seriesStrokes());
+  assert.equal(strokes.length, 3 * legend.length);
+  strokes.forEach(({ label, stroke }, i) => {
+    const b = Math.floor(i / 3);
+    assert.equal(stroke, colors[b], `series ${label}`);
+    assert.ok(label.startsWith(`${legend[b]} `), `series ${label} names its body ${legend[b]}`);
+  });
+  await page.evaluate(() => window.tumble.seek(0.5));
+  await page.screenshot({ path: join(artifacts, 'cubli.png'), fullPage: true });
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});
 
 test('the ramp the bodies race down is drawn, once', async () => {
   const { page, context, seen } = await open(pages.ramp);

@@ -2,6 +2,8 @@
 // <script type="application/json" id="tumble-data"> (written by src/tumble/output/animation_html.cpp):
 //   name, rows, bodies [{name, extent, parts: [{name, shape, dims..., position, quaternion}]}],
 //   planes    [{name, point, normal}]: the contacts' fixed planes (ground, ramps)
+//   joints    [{name, type, body, point, axis}]: each joint where it holds its second body (the
+//             point from that body's COM and the hinge's or slider's axis, in its axes)
 //   time      base64 Float64 [rows]
 //   system    base64 Float64 [rows][4]: KE, PE, E, |L| (about the world origin)
 //   body_rows base64 Float32 [rows][bodies][16]: r_G (3), q_WB (x y z w), omega_W (3), omega_B (3),
@@ -106,13 +108,19 @@ const bodies = data.bodies.map((spec, b) => {
     color, roughness: 0.6, metalness: 0.05, side: THREE.DoubleSide,
     transparent: false, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
   });
+  // Edges a shade darker than the body, so a composite reads as one body of its colour; thin
+  // parts (a rod, a ring, a point) are all edge and get none.
+  const edgeMaterial = new THREE.LineBasicMaterial({
+    color: new THREE.Color(color).multiplyScalar(0.55),
+  });
   for (const part of spec.parts) {
     const geometry = partGeometry(part, notes, spec.name);
     const mesh = new THREE.Mesh(geometry, material);
-    const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry, 25),
-      new THREE.LineBasicMaterial({ color: '#1d2430' }));
     const holder = new THREE.Group();
-    holder.add(mesh, edges);
+    holder.add(mesh);
+    if (!['rod', 'ring', 'point'].includes(part.shape)) {
+      holder.add(new THREE.LineSegments(new THREE.EdgesGeometry(geometry, 25), edgeMaterial));
+    }
     holder.position.fromArray(part.position);
     holder.quaternion.fromArray(part.quaternion);
     group.add(holder);
@@ -151,6 +159,34 @@ const bodies = data.bodies.map((spec, b) => {
     omegaScale: maxW > 0 ? 1.6 * spec.extent / maxW : 0,
     momentumScale: maxL > 0 ? 1.6 * spec.extent / maxL : 0,
   };
+});
+
+// Joints ride with the body they hold (the joint point is fixed in its frame): a dark pivot, a
+// hinge's axle or a slider's rail along the axis, and the link to the COM when the point lies
+// outside the body (a point mass on a massless link).
+const jointMaterial = new THREE.MeshStandardMaterial({ color: '#3a3f4a', roughness: 0.5 });
+const linkMaterial = new THREE.LineBasicMaterial({ color: '#3a3f4a' });
+const joints = (data.joints ?? []).map((spec) => {
+  const body = bodies[spec.body];
+  const point = new THREE.Vector3().fromArray(spec.point);
+  const axis = new THREE.Vector3().fromArray(spec.axis).normalize();
+  const r = 0.06 * Math.max(body.spec.extent, 0.3 * point.length());
+  const holder = new THREE.Group();
+  holder.position.copy(point);
+  holder.add(new THREE.Mesh(new THREE.SphereGeometry(r, 16, 8), jointMaterial));
+  if (spec.type === 'hinge' || spec.type === 'prismatic') {
+    const length = spec.type === 'hinge' ? 5 * r : 12 * r;
+    const rod = new THREE.Mesh(
+      new THREE.CylinderGeometry(0.35 * r, 0.35 * r, length, 16), jointMaterial);
+    rod.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), axis);  // three's along y
+    holder.add(rod);
+  }
+  body.group.add(holder);
+  if (point.length() > 0.9 * body.spec.extent) {
+    const link = new THREE.BufferGeometry().setFromPoints([point, new THREE.Vector3()]);
+    body.group.add(new THREE.Line(link, linkMaterial));
+  }
+  return holder;
 });
 
 // The ground grid lies under everything the bodies reach, at z = 0 unless they go lower.
@@ -224,6 +260,9 @@ resize();
 const plotsBox = document.getElementById('plots');
 const axisNames = ['x', 'y', 'z'];
 const seriesColors = ['#d33', '#2a2', '#24d'];
+// One body: x, y, z in red, green, blue. Several: each body in its colour (the legend's above
+// the view), x solid, y dashed, z dotted, and each series' label names its body.
+const axisDashes = [undefined, [7, 4], [2, 3]];
 function bodySeries(offset, symbol) {
   const series = [{}], columns = [time];
   bodies.forEach((body, b) => {
@@ -231,10 +270,12 @@ function bodySeries(offset, symbol) {
       const column = new Float64Array(rows);
       for (let i = 0; i < rows; ++i) column[i] = at(i, b, offset + k);
       columns.push(column);
-      series.push({
-        label: nBodies === 1 ? `${symbol}${axisNames[k]}` : `${body.spec.name} ${symbol}${axisNames[k]}`,
-        stroke: seriesColors[k], width: 1.5, dash: b === 0 ? undefined : [4 * b, 3],
-      });
+      series.push(nBodies === 1
+        ? { label: `${symbol}${axisNames[k]}`, stroke: seriesColors[k], width: 1.5 }
+        : {
+          label: `${body.spec.name} ${symbol}${axisNames[k]}`,
+          stroke: body.color, width: 1.5, dash: axisDashes[k],
+        });
     }
   });
   return { series, columns };
@@ -428,6 +469,10 @@ function enterVideoMode() {
 window.tumble = {
   rows,
   planes: planes.length,
+  joints: joints.length,
+  // The body-axes omega plot's series: label and colour, and the legend's colours, for the test.
+  seriesStrokes: () => plotSpecs[0].series.slice(1).map((x) => ({ label: x.label, stroke: x.stroke })),
+  bodyColors: bodies.map((body) => body.color),
   start: t0,
   end: tEnd,
   get time() { return simTime; },

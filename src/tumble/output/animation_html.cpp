@@ -206,6 +206,13 @@ std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& ro
     json += fmt::format(R"({}{{"name":{},"point":{},"normal":{}}})", k == 0 ? "" : ",",
                         json_string(plane.name), vec(plane.point_W), vec(plane.normal_W));
   }
+  json += R"(],"joints":[)";
+  for (std::size_t k = 0; k < scene.joints.size(); ++k) {
+    const AnimationJoint& joint = scene.joints[k];
+    json += fmt::format(R"({}{{"name":{},"type":{},"body":{},"point":{},"axis":{}}})",
+                        k == 0 ? "" : ",", json_string(joint.name), json_string(joint.type),
+                        joint.body, vec(joint.point_GJ_B), vec(joint.axis_B));
+  }
   json += "],";
 
   std::vector<double> time(n);
@@ -306,6 +313,23 @@ AnimationScene make_animation_scene(const Scenario& scenario) {
     }
     body.extent = extent;
     scene.bodies.push_back(std::move(body));
+  }
+  for (const JointSpec& spec : scenario.joints) {
+    const auto held = std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
+                                   [&](const BodySpec& b) { return b.name == spec.body_b; });
+    if (held == scenario.bodies.end()) continue;
+    AnimationJoint joint;
+    joint.name = spec.name;
+    joint.type = spec.type == JointType::Ball        ? "ball"
+                 : spec.type == JointType::Hinge     ? "hinge"
+                 : spec.type == JointType::Prismatic ? "prismatic"
+                                                     : "fixed";
+    joint.body = static_cast<std::size_t>(held - scenario.bodies.begin());
+    // At t = 0, from the body's COM in its axes (the rows carry the COM and the orientation).
+    const Vec3 r_G_W = held->position_W + held->R_WB * held->mass_properties.com;
+    joint.point_GJ_B = held->R_WB.transpose() * (spec.at_W - r_G_W);
+    joint.axis_B = held->R_WB.transpose() * spec.axis_W;
+    scene.joints.push_back(std::move(joint));
   }
   // One plane per distinct plane: bodies racing down one ramp each have a contact with it.
   for (const ContactSpec& contact : scenario.contacts) {

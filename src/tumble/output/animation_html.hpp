@@ -52,14 +52,26 @@ struct AnimationPlane {
   Vec3 normal_W = Vec3::UnitZ();
 };
 
+// A joint, drawn where it holds its second body: a pivot's point, a hinge's or a slider's axis,
+// and the link from the point to that body's COM when the point lies outside the body (a point
+// mass on a massless link).
+struct AnimationJoint {
+  std::string name;
+  std::string type;                // "ball", "hinge", "prismatic", "fixed"
+  std::size_t body = 0;            // the body it rides with: its second
+  Vec3 point_GJ_B = Vec3::Zero();  // the joint point from that body's COM, its axes, m
+  Vec3 axis_B = Vec3::UnitZ();     // a hinge's or slider's axis, its axes
+};
+
 struct AnimationScene {
   std::string name;  // the scenario's: the page's title
   std::vector<AnimationBody> bodies;
   std::vector<AnimationPlane> planes;  // one per distinct plane of the contacts
+  std::vector<AnimationJoint> joints;
 };
 
-// The scene of a scenario: every body's parts (a single shape is one part), meshes loaded, and
-// the contacts' planes (each once: several bodies may touch one ramp).
+// The scene of a scenario: every body's parts (a single shape is one part), meshes loaded, the
+// contacts' planes (each once: several bodies may touch one ramp), and the joints.
 AnimationScene make_animation_scene(const Scenario& scenario);
 
 // The output rows, kept in memory for the page.

@@ -95,7 +95,9 @@ TEST(UserEvents, AnUnknownNameOrAMisplacedDirectionIsLocated) {
   test::expect_error(crate("1", "  - {name: e1, when: crate.x > d, direction: up}"), 9, 46,
                      "events[0].direction", "a comparison says its own direction");
   test::expect_error(crate("1", "  - {name: e1, when: crate.x > d && t > 1}"), 9, 22,
-                     "events[0].when", "not && or ||");
+                     "events[0].when", "one expression (box.x - d), not &&");
+  test::expect_error(crate("1", "  - {name: e1, when: crate.x == d}"), 9, 22, "events[0].when",
+                     "not ==");
   test::expect_error(crate("1", "  - {name: floor, when: crate.x > d}"), 9, 12, "events[0].name",
                      "names a contact");
 }
@@ -108,12 +110,20 @@ namespace {
 
 // A sweep records a scenario's event: first(event.slid_d) against the closed form over the
 // friction (each run's event located to the integrator's precision, not the rows').
-TEST(UserEvents, ASweepRecordsTheFirstOccurrence) {
+// The crate with `events`, swept over one parameter, recording `records`.
+SweepSpec crate_sweep(const std::string& events, const std::string& varied,
+                      const std::vector<std::string>& records) {
   SweepSpec spec;
-  spec.text = crate("1", "  - {name: slid_d, when: crate.x > d}");
+  spec.text = crate("1", events);
   spec.path = "events_sweep.yaml";
-  spec.varied = {"mu"};
-  spec.outcomes = {parse_record("td=first(event.slid_d)"), parse_record("n=count(event.slid_d)")};
+  spec.varied = {varied};
+  for (const std::string& record : records) spec.outcomes.push_back(parse_record(record));
+  return spec;
+}
+
+TEST(UserEvents, ASweepRecordsTheFirstOccurrence) {
+  const SweepSpec spec = crate_sweep("  - {name: slid_d, when: crate.x > d}", "mu",
+                                     {"td=first(event.slid_d)", "n=count(event.slid_d)"});
   const std::vector<std::vector<double>> points = {{0.1}, {0.2}, {0.3}, {0.4}};
   const std::vector<RunRecord> records = run_points(spec, points, 2);
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -128,6 +138,22 @@ TEST(UserEvents, ASweepRecordsTheFirstOccurrence) {
   const std::vector<RunRecord> refused = run_points(unknown, points, 1);
   EXPECT_EQ(refused[0].status, RunStatus::Invalid);
   EXPECT_NE(refused[0].message.find("has no event slid"), std::string::npos) << refused[0].message;
+}
+
+// An event's condition reads the parameters when a run compiles it: a sweep over a parameter it
+// names (here v0, which also sets the initial velocity) reads each run's own scenario rather than
+// share one model, and each run's half-speed instant is v0 / (2 mu g) at its own v0.
+TEST(UserEvents, ASweepOverAParameterAnEventNamesDoesNotShareTheModel) {
+  const SweepSpec spec = crate_sweep("  - {name: half, when: crate.vx - v0/2, direction: down}",
+                                     "v0", {"th=first(event.half)"});
+  SweepRunner runner(spec);
+  for (const double v0 : {2.0, 3.0, 4.0}) {
+    const RunRecord record = runner.run(std::vector<double>{v0});
+    ASSERT_EQ(record.status, RunStatus::Ok) << record.message;
+    const double t_half = v0 / (2.0 * kMu * kG);
+    EXPECT_NEAR(record.values[0], t_half, 1e-12 * t_half) << v0;
+  }
+  EXPECT_FALSE(runner.shares_model());
 }
 
 }  // namespace

@@ -51,10 +51,14 @@ std::vector<UserEventSpec> read_events(const Reader& reader, const Field& field,
                     "whose zero is the event (box.x - d), or a comparison (box.x > d)");
     event.when = reader.text(when);
     event.when_where = reader.location(when.value_mark());
-    if (event.when.find("&&") != std::string::npos || event.when.find("||") != std::string::npos) {
-      reader.fail_at_value(when,
-                           "an event is where one quantity crosses another: one comparison "
-                           "(box.x > d) or one expression (box.x - d), not && or ||");
+    // Its parameters are read when the run compiles it: a trace must see them here.
+    if (ParameterTrace* trace = reader.trace()) trace->note(when.path, event.when);
+    for (const char* op : {"&&", "||", "==", "!="}) {
+      if (event.when.find(op) == std::string::npos) continue;
+      reader.fail_at_value(when, std::string("an event is where one quantity crosses another: "
+                                             "one comparison (box.x > d) or one expression "
+                                             "(box.x - d), not ") +
+                                     op);
     }
     if (const auto f = map.find("direction")) {
       const std::string direction = reader.text(*f);

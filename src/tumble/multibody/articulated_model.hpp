@@ -30,8 +30,8 @@ struct ArticulatedModel {
   // about the line from the pivot through it moves no mass: nothing says how fast it spins about
   // that line, and its joint inertia is singular there (solved by its pseudo-inverse).
   std::vector<bool> holds_point_on_ball;
-  std::vector<std::size_t> tree_root;     // per tree joint: its ancestor hung from ground
-  std::vector<int> slot_of_joint;         // tree index of each model joint
+  std::vector<std::size_t> tree_root;  // per tree joint: its ancestor hung from ground
+  std::vector<int> slot_of_joint;      // tree index of each model joint
   std::vector<Eigen::Index> quaternion_offsets;
   // Where the speeds and the work ledger start in y, and y's size.
   Eigen::Index speeds = 0, ledger = 0, dimension = 0;

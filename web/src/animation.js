@@ -1,6 +1,6 @@
 // The animation page of `tumble run --animate`. The trajectory arrives in
 // <script type="application/json" id="tumble-data"> (written by src/tumble/output/animation_html.cpp):
-//   name, rows, bodies [{name, extent, parts: [{name, shape, dims..., position, quaternion}]}],
+//   name, rows, planar (seen from +z, y up), bodies [{name, extent, parts: [{name, shape, dims..., position, quaternion}]}],
 //   planes    [{name, point, normal}]: the contacts' fixed planes (ground, ramps)
 //   joints    [{name, type, body, point, axis}]: each joint where it holds its second body (the
 //             point from that body's COM and the hinge's or slider's axis, in its axes)
@@ -43,7 +43,8 @@ box.appendChild(renderer.domElement);
 const scene = new THREE.Scene();
 scene.background = new THREE.Color('#ffffff');
 const camera = new THREE.PerspectiveCamera(45, 1, 0.01, 1e5);
-camera.up.set(0, 0, 1);
+// World z is up; a planar scenario's y (set before the orbit controls, which read it).
+if (data.planar) camera.up.set(0, 1, 0); else camera.up.set(0, 0, 1);
 const controls = new OrbitControls(camera, renderer.domElement);
 scene.add(new THREE.HemisphereLight('#ffffff', '#8890a0', 2.0));
 const sun = new THREE.DirectionalLight('#ffffff', 1.6);
@@ -230,7 +231,12 @@ const planes = (data.planes ?? []).map((spec) => {
   return group;
 });
 controls.target.copy(centre);
-camera.position.copy(centre).add(new THREE.Vector3(1.2, -1.6, 0.9).multiplyScalar(span));
+if (data.planar) {
+  // A planar scenario is seen as the chapter draws it: from +z, y up.
+  camera.position.copy(centre).add(new THREE.Vector3(0, 0, 2.2).multiplyScalar(span));
+} else {
+  camera.position.copy(centre).add(new THREE.Vector3(1.2, -1.6, 0.9).multiplyScalar(span));
+}
 controls.update();
 
 const legend = document.getElementById('legend');

@@ -36,6 +36,10 @@ struct RowExtras {
   std::vector<ContactOutput> contacts;        // one per Model::contacts entry
   std::vector<ElementWork> elements;          // one per element_names() entry
   double elastic_energy = 0.0;                // J, stored in springs: part of PE
+  // A planar scenario's bodies' angles about z (rad, counted on from the row before, so they run
+  // on past a turn) and rates (rad/s), at the row's time `planar_t`; empty otherwise.
+  std::vector<double> planar_angles, planar_rates;
+  double planar_t = 0.0;
 };
 
 }  // namespace tumble

@@ -187,8 +187,9 @@ void append_part(std::string& json, const AnimationPart& part) {
 std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& rows) {
   const std::size_t n = rows.rows();
   const std::size_t nb = rows.body_count();
-  std::string json = fmt::format(R"({{"format":"tumble-animation-1","name":{},"rows":{},)",
-                                 json_string(scene.name), n);
+  std::string json =
+      fmt::format(R"({{"format":"tumble-animation-1","name":{},"rows":{},"planar":{},)",
+                  json_string(scene.name), n, scene.planar ? "true" : "false");
   json += R"("bodies":[)";
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const AnimationBody& body = scene.bodies[b];
@@ -281,6 +282,7 @@ std::string json_string(std::string_view text) {
 AnimationScene make_animation_scene(const Scenario& scenario) {
   AnimationScene scene;
   scene.name = scenario.name;
+  scene.planar = scenario.planar;
   for (const BodySpec& spec : scenario.bodies) {
     AnimationBody body;
     body.name = spec.name;

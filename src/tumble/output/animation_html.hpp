@@ -68,6 +68,7 @@ struct AnimationScene {
   std::vector<AnimationBody> bodies;
   std::vector<AnimationPlane> planes;  // one per distinct plane of the contacts
   std::vector<AnimationJoint> joints;
+  bool planar = false;  // seen from +z, y up, as the chapter draws it
 };
 
 // The scene of a scenario: every body's parts (a single shape is one part), meshes loaded, the

@@ -12,7 +12,9 @@
 //   axes: the chapter's omega_1, omega_2, omega_3 of Euler's equations), then per joint J its own
 //   coordinates: a hinge's J.angle J.rate (rad, rad/s), a slider's J.travel J.speed (m, m/s), a
 //   ball joint's J.rx J.ry J.rz (the rotation vector of its second body relative to its first,
-//   rad, the first's axes); a fixed joint none.
+//   rad, the first's axes); a fixed joint none; then, in a planar scenario, per body B: B.angle
+//   B.rate (its angle about z, rad, run on past a turn, and its rate, rad/s).
+#include <cmath>
 #include <span>
 #include <string>
 #include <string_view>
@@ -30,6 +32,7 @@ struct ColumnLayout {
   std::vector<JointType> joint_types;  // as many as joints: which coordinates each has
   std::vector<std::string> contacts;
   std::vector<std::string> elements;  // Formulation::element_names()
+  bool planar = false;                // each body's angle and rate about z close the row
 };
 
 // Calls column(owner, field, value_of) for each column in order: owner is "" for t and the
@@ -155,6 +158,15 @@ void for_each_column(const ColumnLayout& layout, Column&& column) {
       default:
         break;
     }
+  }
+  if (!layout.planar) return;
+  for (std::size_t b = 0; b < layout.bodies.size(); ++b) {
+    column(layout.bodies[b], "angle", [b](Row row) {
+      return row.extras != nullptr && b < row.extras->planar_angles.size()
+                 ? row.extras->planar_angles[b]
+                 : std::atan2(row.states[b].R_WB(1, 0), row.states[b].R_WB(0, 0));
+    });
+    column(layout.bodies[b], "rate", [b](Row row) { return row.states[b].omega_W.z(); });
   }
 }
 

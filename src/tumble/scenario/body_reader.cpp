@@ -7,13 +7,35 @@
 #include <Eigen/Eigenvalues>
 
 #include "tumble/inertia/mesh.hpp"
+#include "tumble/math/rotation.hpp"
 #include "tumble/scenario/readers.hpp"
 
 namespace tumble::scenario_reading {
 namespace {
 
-const std::vector<std::string> kMotionKeys = {"position", "orientation", "velocity",
+const std::vector<std::string> kMotionKeys = {"position", "orientation", "angle", "velocity",
                                               "angular_velocity"};
+
+// A body's or a part's turn from the world's (or the body's) axes: `orientation:` in 3D, `angle:`
+// about z in a planar scenario (each refused in the other, where it would be a mistake).
+Mat3 read_turn(const Reader& reader, const MapReader& map) {
+  const std::optional<Field> orientation = map.find("orientation");
+  const std::optional<Field> angle = map.find("angle");
+  if (reader.planar()) {
+    if (orientation) {
+      reader.fail_at_key(*orientation,
+                         "a planar scenario turns its bodies about z: give "
+                         "`angle:` (rad, or with deg), not `orientation:`");
+    }
+    return angle ? rotation_from_axis_angle(Vec3::UnitZ(), reader.angle(*angle)) : Mat3::Identity();
+  }
+  if (angle) {
+    reader.fail_at_key(*angle,
+                       "`angle:` is a planar scenario's (planar: true); in 3D give "
+                       "`orientation: {axis: [x, y, z], angle: ...}`");
+  }
+  return orientation ? read_orientation(reader, *orientation) : Mat3::Identity();
+}
 
 std::vector<std::string> with(std::vector<std::string> keys, const std::vector<std::string>& more) {
   keys.insert(keys.end(), more.begin(), more.end());
@@ -48,8 +70,8 @@ MassProperties shape_properties(const Reader& reader, const MapReader& map, cons
 PartSpec read_part(const Reader& reader, const Field& field, const std::filesystem::path& directory,
                    std::size_t index) {
   const MapReader map(reader, field, "a part {shape: ..., mass: ..., position: [x, y, z]}");
-  const std::vector<std::string> keys = {"name",    "shape",    "mass",       "density",
-                                         "inertia", "position", "orientation"};
+  const std::vector<std::string> keys = {"name",    "shape",    "mass",        "density",
+                                         "inertia", "position", "orientation", "angle"};
   PartSpec part;
   part.name = "parts[" + std::to_string(index) + "]";
   if (const auto name = map.find("name")) part.name = reader.text(*name);
@@ -60,8 +82,8 @@ PartSpec read_part(const Reader& reader, const Field& field, const std::filesyst
     own.inertia_about_com = read_inertia(reader, *inertia);
   Vec3 position = Vec3::Zero();
   Mat3 R_BP = Mat3::Identity();
-  if (const auto f = map.find("position")) position = reader.vec3(*f);
-  if (const auto f = map.find("orientation")) R_BP = read_orientation(reader, *f);
+  if (const auto f = map.find("position")) position = reader.point_or_vector(*f);
+  R_BP = read_turn(reader, map);
   part.mass_properties = express_in_parent(own, R_BP, position);
   part.position_B = position;
   part.R_BP = R_BP;
@@ -179,14 +201,14 @@ BodySpec read_body(const Reader& reader, const Field& field,
   } else {
     read_single_shape(reader, map, directory, body);
   }
-  if (const auto f = map.find("position")) body.position_W = reader.vec3(*f);
-  if (const auto f = map.find("orientation")) body.R_WB = read_orientation(reader, *f);
+  if (const auto f = map.find("position")) body.position_W = reader.point_or_vector(*f);
+  body.R_WB = read_turn(reader, map);
   if (const auto f = map.find("velocity")) {
-    body.velocity_W = reader.vec3(*f);
+    body.velocity_W = reader.point_or_vector(*f);
     body.velocity_where = reader.location(f->value_mark());
   }
   if (const auto f = map.find("angular_velocity")) {
-    body.angular_velocity_W = reader.vec3(*f);
+    body.angular_velocity_W = reader.spin_vector(*f);
     body.angular_velocity_where = reader.location(f->value_mark());
   }
   return body;

@@ -43,9 +43,10 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   const Field plane = map.require("plane", "{point: [x, y, z], normal: [x, y, z]}");
   const MapReader plane_map(reader, plane, "a plane {point: [x, y, z], normal: [x, y, z]}");
   plane_map.allow_only({"point", "normal"}, "a plane");
-  contact.plane_point_W = reader.vec3(plane_map.require("point", "a point of the plane, m"));
+  contact.plane_point_W =
+      reader.point_or_vector(plane_map.require("point", "a point of the plane, m"));
   const Field normal = plane_map.require("normal", "out of the plane, towards the body");
-  const Vec3 n = reader.vec3(normal);
+  const Vec3 n = reader.point_or_vector(normal);
   if (!(n.norm() > 0.0)) reader.fail_at_value(normal, "the normal must not be zero");
   contact.plane_normal_W = n.normalized();
 

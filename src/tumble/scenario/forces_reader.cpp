@@ -69,10 +69,10 @@ LoadSpec read_load(const Reader& reader, const MapReader& map, const std::string
   load.kind = type == "force" ? LoadSpec::Kind::Force : LoadSpec::Kind::Torque;
   load.body =
       read_body_or_ground(reader, map.require("body", "the body it acts on"), bodies, false);
-  load.value =
-      reader.vec3(map.require("value", type == "force" ? "N, [x, y, z]" : "N m, [x, y, z]"));
+  const Field value = map.require("value", type == "force" ? "N, [x, y, z]" : "N m, [x, y, z]");
+  load.value = type == "force" ? reader.point_or_vector(value) : reader.spin_vector(value);
   if (const auto f = map.find("at")) {
-    load.at_W = reader.vec3(*f);
+    load.at_W = reader.point_or_vector(*f);
     load.has_point = true;
   }
   load.body_frame = read_frame(reader, map);
@@ -85,9 +85,9 @@ ImpulseSpec read_impulse(const Reader& reader, const MapReader& map,
   ImpulseSpec impulse;
   impulse.body =
       read_body_or_ground(reader, map.require("body", "the body it strikes"), bodies, false);
-  impulse.value = reader.vec3(map.require("value", "N s, [x, y, z]"));
+  impulse.value = reader.point_or_vector(map.require("value", "N s, [x, y, z]"));
   if (const auto f = map.find("at")) {
-    impulse.at_W = reader.vec3(*f);
+    impulse.at_W = reader.point_or_vector(*f);
     impulse.has_point = true;
   }
   impulse.body_frame = read_frame(reader, map);
@@ -110,8 +110,8 @@ SpringSpec read_spring(const Reader& reader, const MapReader& map,
     reader.fail_at_value(at,
                          fmt::format("give two points, one on each body; got {}", points.size()));
   }
-  spring.at_a_W = reader.vec3(points[0]);
-  spring.at_b_W = reader.vec3(points[1]);
+  spring.at_a_W = reader.point_or_vector(points[0]);
+  spring.at_b_W = reader.point_or_vector(points[1]);
   spring.stiffness = read_non_negative(reader, map, "stiffness", "N/m", true);
   spring.damping = read_non_negative(reader, map, "damping", "N s/m", false);
   if (map.has("rest_length")) {

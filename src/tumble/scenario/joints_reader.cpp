@@ -48,6 +48,9 @@ MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
   return motor;
 }
 
+// A hinge's or a slider's motor and lock, after its axis.
+JointSpec read_drive(const Reader& reader, const MapReader& map, JointSpec& joint);
+
 JointSpec read_joint(const Reader& reader, const Field& field,
                      const std::vector<BodySpec>& bodies) {
   const MapReader map(reader, field,
@@ -104,16 +107,34 @@ JointSpec read_joint(const Reader& reader, const Field& field,
                          "give the bodies it joins: bodies: [a, b] or body: b (held by "
                          "ground)");
   }
-  joint.at_W = reader.vec3(map.require("at", "the joint's point, world coordinates at t = 0"));
+  joint.at_W =
+      reader.point_or_vector(map.require("at", "the joint's point, world coordinates at t = 0"));
+  if (reader.planar() && joint.type == JointType::Ball) {
+    reader.fail_at_value(field,
+                         "a planar scenario's joints are hinges (about z), sliders and "
+                         "welds; a ball joint would let the bodies leave the plane");
+  }
 
   if (!has_axis(joint.type)) return joint;
+  if (reader.planar() && joint.type == JointType::Hinge) {
+    // Its axis is the plane's normal.
+    if (const auto f = map.find("axis")) {
+      reader.fail_at_key(*f, "a planar scenario's hinges turn about z; leave `axis:` out");
+    }
+    joint.axis_W = Vec3::UnitZ();
+    return read_drive(reader, map, joint);
+  }
   const Field axis_field =
       map.require("axis", joint.type == JointType::Hinge
                               ? "the hinge's direction [x, y, z], world at t = 0"
                               : "the direction the slider moves along [x, y, z], world at t = 0");
-  const Vec3 axis = reader.vec3(axis_field);
+  const Vec3 axis = reader.point_or_vector(axis_field);
   if (!(axis.norm() > 0.0)) reader.fail_at_value(axis_field, "the axis must not be zero");
   joint.axis_W = axis.normalized();
+  return read_drive(reader, map, joint);
+}
+
+JointSpec read_drive(const Reader& reader, const MapReader& map, JointSpec& joint) {
   if (const auto f = map.find("motor")) joint.motor = read_motor(reader, *f, joint.type);
   if (const auto f = map.find("lock")) {
     const MapReader lock(reader, *f, "a lock {at: t}");

@@ -33,9 +33,9 @@ using scenario_reading::Field;
 using scenario_reading::MapReader;
 using scenario_reading::Reader;
 
-const std::vector<std::string> kTopLevelKeys = {"tumble", "name",     "parameters", "gravity",
-                                                "bodies", "joints",   "forces",     "contacts",
-                                                "events", "simulate", "output"};
+const std::vector<std::string> kTopLevelKeys = {"tumble",   "name",   "planar",   "parameters",
+                                                "gravity",  "bodies", "joints",   "forces",
+                                                "contacts", "events", "simulate", "output"};
 
 // The line of `text` that starts at line index `line` (0-based), without its end.
 std::string_view line_of(std::string_view text, int line) {
@@ -265,7 +265,7 @@ Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
   const YAML::Node& document = root_;
   ExpressionEvaluator expressions;
   std::vector<std::string> warnings;
-  const Reader reader(path, expressions, &warnings, trace);
+  Reader reader(path, expressions, &warnings, trace);
   if (!document || document.IsNull()) {
     reader.fail(YAML::Mark(), "", "the file is empty; a scenario begins with `tumble: 1`");
   }
@@ -280,7 +280,18 @@ Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
   const std::string stem = std::filesystem::path(path).stem().string();
   scenario.name = stem;
   if (const auto f = root.find("name")) scenario.name = reader.text(*f);
-  if (const auto f = root.find("gravity")) scenario.gravity_W = reader.vec3(*f);
+  if (const auto f = root.find("planar")) {
+    const std::string planar = reader.text(*f);
+    if (planar != "true" && planar != "false") {
+      reader.fail_at_value(
+          *f, "expected true (everything moves in the x-y plane) or false, got '" + planar + "'");
+    }
+    scenario.planar = planar == "true";
+    reader.set_planar(scenario.planar);
+  }
+  // A planar scenario's y is up.
+  if (scenario.planar) scenario.gravity_W = Vec3(0.0, -9.81, 0.0);
+  if (const auto f = root.find("gravity")) scenario.gravity_W = reader.point_or_vector(*f);
 
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
   scenario.bodies = scenario_reading::read_bodies(

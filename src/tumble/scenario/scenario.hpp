@@ -206,6 +206,10 @@ struct UserEventSpec {
 struct Scenario {
   std::string file;  // as given on the command line
   std::string name;
+  // `planar: true`: everything moves in the world's x-y plane (z out of it). The reader has
+  // turned its 2D statement (points [x, y], angles and rates about z) into this 3D one; the
+  // trajectory gets each body's angle and rate.
+  bool planar = false;
   std::map<std::string, double> parameters;            // after --set
   Vec3 gravity_W = Vec3(0.0, 0.0, -9.81);              // m/s^2
   std::vector<BodySpec> bodies;                        // file order

@@ -173,6 +173,24 @@ Vec3 Reader::vec3(const Field& field) const {
   return Vec3(v[0], v[1], v[2]);
 }
 
+Vec3 Reader::point_or_vector(const Field& field) const {
+  if (!planar_) return vec3(field);
+  const std::vector<double> v =
+      numbers(field, 2, "[x, y] (the scenario is planar: points and vectors lie in its x-y plane)");
+  return Vec3(v[0], v[1], 0.0);
+}
+
+Vec3 Reader::spin_vector(const Field& field) const {
+  if (!planar_) return vec3(field);
+  if (!field.node || !field.node.IsScalar()) {
+    fail_at_value(field,
+                  "expected one number (the scenario is planar: turning is about z, "
+                  "counter-clockwise seen from +z), got " +
+                      describe(field.node));
+  }
+  return Vec3(0.0, 0.0, number(field));
+}
+
 Mat3 Reader::mat3(const Field& field) const {
   constexpr std::string_view form = "[[r11, r12, r13], [r21, r22, r23], [r31, r32, r33]]";
   if (!field.node || !field.node.IsSequence() || field.node.size() != 3) {

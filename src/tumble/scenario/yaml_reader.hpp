@@ -69,6 +69,15 @@ class Reader {
   // A list of exactly `count` numbers; `form` names the expected form in messages ("[x, y, z]").
   std::vector<double> numbers(const Field& field, std::size_t count, std::string_view form) const;
   Vec3 vec3(const Field& field) const;
+  // A planar scenario (`planar: true`) moves in the world's x-y plane, z out of it.
+  void set_planar(bool planar) { planar_ = planar; }
+  bool planar() const { return planar_; }
+  // A point or a direction of the world or a body: [x, y, z]; in a planar scenario [x, y], in
+  // the plane (z = 0).
+  Vec3 point_or_vector(const Field& field) const;
+  // An angular velocity or a torque: [x, y, z]; in a planar scenario one number, about z (counter-
+  // clockwise seen from +z).
+  Vec3 spin_vector(const Field& field) const;
   // [[r11, r12, r13], [r21, r22, r23], [r31, r32, r33]]
   Mat3 mat3(const Field& field) const;
   // A scalar, as written.
@@ -81,6 +90,7 @@ class Reader {
   const ExpressionEvaluator* expressions_;
   std::vector<std::string>* warnings_;
   ParameterTrace* trace_;
+  bool planar_ = false;
 };
 
 // A mapping of the file. Construction fails unless the value is a mapping with distinct scalar

@@ -31,6 +31,7 @@ struct PreparedSimulation {
   VecX y0;
   double t0 = 0.0;
   double t_end = 0.0;
+  bool planar = false;  // the rows carry each body's angle about z (RowExtras::planar_angles)
 };
 
 // One problem, built once from a scenario and then run any number of times, on any number of
@@ -46,6 +47,7 @@ struct SimulationModel {
   double t0 = 0.0;
   double t_end = 0.0;
   std::shared_ptr<const UserEventDefinitions> user_events;  // null when it has none
+  bool planar = false;                                      // Scenario::planar
 };
 
 // Throws ScenarioError, under the key of the part that is wrong, for a combination the engine

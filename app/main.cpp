@@ -19,10 +19,12 @@ int main(int argc, char** argv) {
   RunArguments run_args;
   CLI::App* run = app.add_subcommand(
       "run",
-      "Integrate a scenario; write its trajectory CSV, its events CSV when it has contact events "
-      "or jumps (with --animate an HTML page that animates it, with --video an .mp4 or .gif of "
-      "that page's 3D view) and print a summary (steps, "
-      "evaluations, wall time, drift of E and |L|, largest |R^T R - I|).\nExit status: 0 done, "
+      "Integrate a scenario; write its trajectory CSV, its events CSV when it has contact events, "
+      "jumps or events of its own (`events:`, located to the integrator's precision; "
+      "`stop: true` ends the run there) (with --animate an HTML page that animates it, with "
+      "--video an .mp4 or .gif of that page's 3D view) and print a summary (steps, "
+      "evaluations, wall time, drift of E and |L|, largest |R^T R - I|, the events).\nExit "
+      "status: 0 done, "
       "2 bad command line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed "
       "(the rows so far stay a valid CSV), 5 output not writable (or the video could not be "
       "made: node, Chromium or ffmpeg missing or failing; no partial video is left).");

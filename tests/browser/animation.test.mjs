@@ -38,6 +38,8 @@ before(async () => {
   pages.ramp = join(work, 'ramp_race.html');
   animate(join(root, 'examples', 'cubli.yaml'), work);
   pages.cubli = join(work, 'cubli.html');
+  animate(join(root, 'examples', 'planar', 'bat_struck.yaml'), work);
+  pages.planarBat = join(work, 'bat_struck_planar.html');
 
   // 20,000 rows: the prism with a row every millisecond.
   const prism = readFileSync(join(root, 'examples', 'tumbling_prism.yaml'), 'utf8');
@@ -203,6 +205,24 @@ test('joints are drawn, and each body has its colour in the plots as in the lege
   await page.screenshot({ path: join(artifacts, 'cubli.png'), fullPage: true });
   assert.deepEqual(seen.errors, []);
   assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
+test('a planar scenario is seen as the chapter draws it: from +z, y up', async () => {
+  const { page, context, seen } = await open(pages.planarBat);
+  assert.equal(await page.evaluate(() => window.tumble.planar), true);
+  assert.equal(await page.evaluate(() => window.tumble.joints), 1);
+  const view = await page.evaluate(() => window.tumble.view());
+  assert.deepEqual(view.up, [0, 1, 0]);
+  assert.ok(view.from[2] > 0.999, `the camera looks along -z: ${view.from}`);
+  const prism = await open(pages.prism);
+  assert.equal(await prism.page.evaluate(() => window.tumble.planar), false);
+  assert.deepEqual((await prism.page.evaluate(() => window.tumble.view())).up, [0, 0, 1]);
+  await page.evaluate(() => window.tumble.seek(0.3));
+  await page.screenshot({ path: join(artifacts, 'bat_struck_planar.png'), fullPage: true });
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await prism.context.close();
   await context.close();
 });
 

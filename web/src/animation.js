@@ -476,6 +476,12 @@ window.tumble = {
   rows,
   planes: planes.length,
   joints: joints.length,
+  planar: Boolean(data.planar),
+  // Where the camera looks from, relative to what it looks at, and which way is up in the view.
+  view: () => ({
+    from: camera.position.clone().sub(controls.target).normalize().toArray(),
+    up: camera.up.toArray(),
+  }),
   // The body-axes omega plot's series: label and colour, and the legend's colours, for the test.
   seriesStrokes: () => plotSpecs[0].series.slice(1).map((x) => ({ label: x.label, stroke: x.stroke })),
   bodyColors: bodies.map((body) => body.color),

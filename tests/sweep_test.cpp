@@ -267,6 +267,12 @@ TEST(SweepSharedModel, VelocityOnlyRunsAreTheBytesOfRunsThatReadTheirOwn) {
   tilt.fixed = {{"a", "4"}};
   expect_shared_equals_unshared(tilt, {{2.0}, {3.5}, {5.0}}, true);
   expect_shared_equals_unshared(spec_for(prism, {"a"}, {"w=min(prism.w3)"}), {{3.9}, {4.1}}, false);
+  // A planar statement's spin is one number, about z.
+  const std::string planar =
+      test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/planar/backspin_disk.yaml");
+  expect_shared_equals_unshared(
+      spec_for(planar, {"v0", "w0"}, {"roll=first(floor.rolls)", "turned=final(disk.angle)"}),
+      speeds, true);
 }
 
 // Parameters defined from a varied one (in the file, or by --set) follow it; an initial state the

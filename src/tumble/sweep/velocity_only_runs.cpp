@@ -2,12 +2,14 @@
 
 #include <optional>
 #include <string_view>
+#include <tuple>
 
 namespace tumble {
 namespace {
 
 // The body, the velocity and the axis of a path "bodies.NAME.velocity[k]" or
-// "bodies.NAME.angular_velocity[k]"; none for another path.
+// "bodies.NAME.angular_velocity[k]", or a planar scenario's "bodies.NAME.angular_velocity" (its
+// rate about z); none for another path.
 std::optional<std::tuple<std::size_t, bool, int>> velocity_component(
     std::string_view path, const std::vector<BodySpec>& bodies) {
   constexpr std::string_view kBodies = "bodies.";
@@ -19,6 +21,7 @@ std::optional<std::tuple<std::size_t, bool, int>> velocity_component(
       continue;
     }
     const std::string_view key = path.substr(name.size() + 1);
+    if (key == "angular_velocity") return std::make_tuple(b, true, 2);  // planar: about z
     for (const bool angular : {false, true}) {
       for (int axis = 0; axis < 3; ++axis) {
         const std::string wanted =

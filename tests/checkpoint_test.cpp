@@ -4,6 +4,8 @@
 // The first run is gone before the second starts, so nothing can be shared but the checkpoint.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -53,6 +55,12 @@ struct Case {
   const char* what;
 };
 
+// An example's name as a test's or a directory's ("planar/backspin_disk": planar_backspin_disk).
+std::string test_name_of(std::string example) {
+  std::replace(example.begin(), example.end(), '/', '_');
+  return example;
+}
+
 void PrintTo(const Case& c, std::ostream* os) {
   *os << c.example << " at t = " << c.t1;
 }
@@ -66,7 +74,7 @@ TEST_P(Checkpoint, ResumedRowsAreTheUninterruptedRunsBytes) {
   const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
   // ctest runs the cases in parallel: one directory each.
   const std::filesystem::path dir =
-      test::fresh_test_dir("Checkpoint", std::string(c.example) + "_" + std::to_string(c.t1));
+      test::fresh_test_dir("Checkpoint", test_name_of(c.example) + "_" + std::to_string(c.t1));
 
   PreparedSimulation whole = prepare_run(*model);
   Csv whole_csv(scenario, whole, dir / "whole.csv");
@@ -106,7 +114,7 @@ TEST_P(Checkpoint, ResumedRowsAreTheUninterruptedRunsBytes) {
   EXPECT_EQ(resumed.jumps.size(), whole_result.jumps.size());
   ASSERT_EQ(resumed.user_events.size(), whole_result.user_events.size());
   for (std::size_t i = 0; i < resumed.user_events.size(); ++i) {
-    EXPECT_EQ(resumed.user_events[i].t, whole_result.user_events[i].t);  // the prism's flip
+    EXPECT_EQ(resumed.user_events[i].t, whole_result.user_events[i].t);  // the disk's reversal
   }
   EXPECT_EQ(resumed.rows, whole_result.rows);
   EXPECT_EQ(resumed.conservation.max_energy_change, whole_result.conservation.max_energy_change);
@@ -124,9 +132,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"cubli", 0.7, "after the lock"},
                       Case{"cubli_falls_back", 0.3, "a held box in flight, before it lands"},
                       Case{"cubli_falls_back", 0.55, "between its first two bounces"},
-                      Case{"rolling_coin", 1.0, "a coin rolling on its rim"}),
+                      Case{"rolling_coin", 1.0, "a coin rolling on its rim"},
+                      Case{"planar/backspin_disk", 0.7,
+                           "in the plane, before its event (it reverses at 1.02 s)"}),
     [](const ::testing::TestParamInfo<Case>& param) {
-      return std::string(param.param.example) + "_" + std::to_string(param.index);
+      return test_name_of(param.param.example) + "_" + std::to_string(param.index);
     });
 
 }  // namespace

@@ -222,16 +222,13 @@ TEST(Cli, RunsTheTumblingPrismAndWritesTheContractCsv) {
     const Vec3 omega_B = R.transpose() * w;
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::stod(rows[i][28 + k]), omega_B(k), 1e-15);
   }
-  // Nothing but the finished files is left behind: the trajectory and the events CSV, whose one
-  // event is the flip (`events:` in the example), at the 40-digit reference's 9.664094834 s to
-  // what rtol 1e-8, grown along the unstable spin by exp(lambda t) ~ 300, allows.
-  std::set<std::string> files;
-  for (const auto& entry : fs::directory_iterator(dir)) files.insert(entry.path().filename());
-  EXPECT_EQ(files, (std::set<std::string>{"tumbling_prism.csv", "tumbling_prism_events.csv"}));
-  const std::string events = slurp(dir / "tumbling_prism_events.csv");
-  const std::size_t line = events.find('\n') + 1;
-  ASSERT_NE(events.find(",\"event\",\"flip\"", line), std::string::npos) << events;
-  EXPECT_NEAR(std::stod(events.substr(line)), 9.664094834075236, 1e-6);
+  // Nothing but the finished file is left behind.
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    ++files;
+    EXPECT_EQ(entry.path().filename(), "tumbling_prism.csv");
+  }
+  EXPECT_EQ(files, 1);
 }
 
 TEST(Cli, SameScenarioGivesBitIdenticalOutput) {

@@ -119,6 +119,19 @@ simulate: {duration: 2, integrator: dop853, rtol: 1e-10, atol: 1e-12, output_eve
   }
 }
 
+// The planar backspin disk's own event: its centre reverses at t_rev = v0 / (mu g), while it
+// still slides (vx = v0 - mu g t). The located time is as good as the integrated vx, which the
+// contact's solved forces and the state's projections hold to about rtol (1e-10): asserted to
+// ten times that.
+TEST(PlanarScenario, TheBackspinDiskReversesWhenItsEventSays) {
+  const test::ScenarioRun run = test::run_scenario(
+      load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/planar/backspin_disk.yaml", {}));
+  const double t_rev = 2.0 / (0.2 * 9.81);
+  ASSERT_EQ(run.result.user_events.size(), 1u);
+  EXPECT_EQ(run.result.user_events[0].name, "reverses");
+  EXPECT_NEAR(run.result.user_events[0].t, t_rev, 1e-9 * t_rev);
+}
+
 // A planar statement says so where it is wrong: a point in 3D, a 3D spin, an orientation, a
 // ball joint, a hinge's axis.
 TEST(PlanarScenario, ThreeDimensionalKeysAreRefusedWhereWritten) {

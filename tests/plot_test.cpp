@@ -99,8 +99,7 @@ TEST_F(Plot, DrawsAPngOfTheRequestedSize) {
   EXPECT_EQ(big_endian_u32(bytes, 16), 640u);
   EXPECT_EQ(big_endian_u32(bytes, 20), 360u);
   // Nothing but the trajectory and the finished figure (no script, no partial file).
-  EXPECT_EQ(files_in(dir_),
-            (std::set<std::string>{"tumbling_prism.csv", "tumbling_prism_events.csv", "w.png"}));
+  EXPECT_EQ(files_in(dir_), (std::set<std::string>{"tumbling_prism.csv", "w.png"}));
 }
 
 TEST_F(Plot, DrawsAnSvgWithTheColumnTitlesAndUnits) {
@@ -144,8 +143,7 @@ TEST_F(Plot, UnknownColumnExitsTwoAndListsTheAvailableOnes) {
         << r.out;
     EXPECT_NE(r.out.find("Ly, Lz"), std::string::npos) << r.out;
   }
-  EXPECT_EQ(files_in(dir_),
-            (std::set<std::string>{"tumbling_prism.csv", "tumbling_prism_events.csv"}));
+  EXPECT_EQ(files_in(dir_), (std::set<std::string>{"tumbling_prism.csv"}));
 }
 
 TEST_F(Plot, MissingCsvAndBadOutputNamesExitTwo) {
@@ -164,8 +162,7 @@ TEST_F(Plot, MissingCsvAndBadOutputNamesExitTwo) {
   EXPECT_EQ(pdf.status, 2) << pdf.out;
   EXPECT_NE(pdf.out.find("must end in .png or .svg"), std::string::npos) << pdf.out;
   EXPECT_EQ(run_tumble("plot " + quote_for_shell(csv.string()) + " -o x.png").status, 2);
-  EXPECT_EQ(files_in(dir_),
-            (std::set<std::string>{"tumbling_prism.csv", "tumbling_prism_events.csv"}));
+  EXPECT_EQ(files_in(dir_), (std::set<std::string>{"tumbling_prism.csv"}));
 }
 
 TEST_F(Plot, UnwritableOutputDirectoryExitsFive) {
@@ -219,8 +216,7 @@ TEST_F(Plot, MissingGnuplotExitsFiveAndSaysHowToInstallIt) {
   EXPECT_EQ(r.status, 5) << r.out;
   EXPECT_NE(r.out.find("gnuplot is not installed"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("apt-get install gnuplot-nox"), std::string::npos) << r.out;
-  EXPECT_EQ(files_in(dir_),
-            (std::set<std::string>{"tumbling_prism.csv", "tumbling_prism_events.csv"}));
+  EXPECT_EQ(files_in(dir_), (std::set<std::string>{"tumbling_prism.csv"}));
 }
 
 }  // namespace

@@ -34,6 +34,7 @@ void RowVariables::read_by(std::span<const BoundExpression* const> expressions) 
   };
   read_.clear();
   reads_extras_ = false;
+  reads_quantities_ = false;
   std::size_t i = 0;
   for_each_column(layout_, [&](std::string_view owner, std::string_view field, auto&& value_of) {
     if (is_read(names_[i])) {
@@ -44,6 +45,7 @@ void RowVariables::read_by(std::span<const BoundExpression* const> expressions) 
           owns(layout_.elements, owner) || (owner.empty() && (field == "PE" || field == "E"))) {
         reads_extras_ = true;
       }
+      if (owner.empty() && field != "t") reads_quantities_ = true;
     }
     ++i;
   });

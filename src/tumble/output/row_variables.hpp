@@ -34,6 +34,8 @@ class RowVariables {
   // Whether a column read is the joints', contacts' or elements' (RowExtras), or an energy that
   // holds the springs' (PE, E): a row needs its extras computed.
   bool reads_extras() const { return reads_extras_; }
+  // Whether a column read is the system's (KE, PE, E, p, L): a row needs its quantities.
+  bool reads_quantities() const { return reads_quantities_; }
 
   // New parameter values (the same names, a sweep's next run).
   void set_parameters(const std::map<std::string, double>& parameters);
@@ -55,6 +57,7 @@ class RowVariables {
   std::vector<BoundExpression::Variable> variables_;
   std::vector<ReadColumn> read_;
   bool reads_extras_ = false;
+  bool reads_quantities_ = false;
 };
 
 }  // namespace tumble

@@ -7,21 +7,6 @@
 #include "tumble/scenario/readers.hpp"
 
 namespace tumble::scenario_reading {
-namespace {
-
-// Whether `when` is one comparison (outside parentheses), which says its own direction.
-bool is_comparison(const std::string& when) {
-  int depth = 0;
-  for (const char c : when) {
-    if (c == '(') ++depth;
-    if (c == ')') --depth;
-    if (depth == 0 && (c == '<' || c == '>')) return true;
-  }
-  return false;
-}
-
-}  // namespace
-
 std::vector<UserEventSpec> read_events(const Reader& reader, const Field& field,
                                        const Scenario& scenario) {
   std::vector<UserEventSpec> events;
@@ -62,7 +47,8 @@ std::vector<UserEventSpec> read_events(const Reader& reader, const Field& field,
     }
     if (const auto f = map.find("direction")) {
       const std::string direction = reader.text(*f);
-      if (is_comparison(event.when)) {
+      // As the run reads it (UserEventSystem): one comparison says its own direction.
+      if (split_comparison(event.when)) {
         reader.fail_at_value(*f, "a comparison says its own direction ('" + event.when +
                                      "' happens as it becomes true); leave direction out, or "
                                      "write the expression whose zero it is");

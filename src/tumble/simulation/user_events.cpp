@@ -62,8 +62,9 @@ void UserEventSystem::event_functions(double t, const VecX& y, VecX& g) const {
   // The row at (t, y), as the trajectory would have it there.
   formulation_->unpack_all(y, states_);
   if (row_->reads_extras()) formulation_->calc_row_extras(t, y, extras_);
-  const Model& model = formulation_->model();
-  const SystemQuantities q = row_quantities(model, states_, extras_);
+  // The system's energies and momenta only where a condition reads them (this runs every step).
+  SystemQuantities q;
+  if (row_->reads_quantities()) q = row_quantities(formulation_->model(), states_, extras_);
   row_->take({t, states_, &q, &extras_});
   for (std::size_t k = 0; k < functions_.size(); ++k) {
     g(static_cast<Eigen::Index>(own_count_ + k)) = functions_[k]->evaluate();

@@ -56,6 +56,10 @@ struct FindArguments {
   double tol = 0.0;  // 0: 1e-9 of the larger bound's magnitude
 };
 
+// The whole command line: parses argv (argv[0] the program) and runs the subcommand; returns the
+// exit status (exit_status.hpp).
+int run_cli(int argc, const char* const* argv);
+
 int run_command(const RunArguments& args);
 int sweep_command(const SweepArguments& args);
 int find_command(const FindArguments& args);

@@ -7,6 +7,7 @@ packages=(
   libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev libmuparser-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-pandas
   chromium gnuplot-nox ffmpeg
 )
 # Node.js and npm build the animation page. A machine may already have them from elsewhere

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test: formatting, the Release suite, the same suite under
-# AddressSanitizer + UndefinedBehaviorSanitizer, the runs that share a model on threads under
-# ThreadSanitizer, a minute of fuzzing the scenario reader, the main example end to end, and the animation
-# page and its videos (`tumble run --video`, checked with ffprobe) in headless Chromium.
+# Sets up, builds and runs every test: formatting, the Release suite (with the Python module's
+# pytest suite), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, the runs that
+# share a model on threads under ThreadSanitizer, a minute of fuzzing the scenario reader, the main
+# example end to end, the Python package as installed, and the animation page and its videos
+# (`tumble run --video`, checked with ffprobe) in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -35,6 +36,16 @@ out=$(mktemp -d)
 build/release/tumble run examples/tumbling_prism.yaml --out "$out" --animate
 test -s "$out/tumbling_prism.csv"
 test -s "$out/tumbling_prism.html"
+
+echo "== The Python package, installed as the README installs it (here under a scratch DESTDIR)"
+stage=$(mktemp -d)
+DESTDIR="$stage" cmake --install build/release --component python >/dev/null
+site=$(find "$stage" -type d -name tumble -path '*site-packages*' | head -1)
+PYTHONPATH="$(dirname "$site")" /usr/bin/python3 -m tumble run examples/tumbling_prism.yaml \
+  --out "$stage/out" >/dev/null
+PYTHONPATH="$(dirname "$site")" /usr/bin/python3 -c \
+  "import tumble; r = tumble.load('examples/tumbling_prism.yaml').run(); assert len(r) == 401"
+cmp "$stage/out/tumbling_prism.csv" "$out/tumbling_prism.csv"
 
 echo "== The animation page and its videos in headless Chromium"
 TUMBLE_EXE=build/release/tumble TUMBLE_ARTIFACTS=build/release/artifacts node --test tests/browser/

@@ -1,0 +1,189 @@
+// tumble: rigid-body dynamics from a scenario file. `tumble run` integrates and writes the
+// trajectory and a summary; `tumble sweep` and `tumble find` run it at many parameter values;
+// `tumble inertia` prints mass properties; `tumble plot` draws a CSV's columns. The executable's
+// main and the Python module's `python3 -m tumble` both call run_cli.
+#include <fmt/core.h>
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "exit_status.hpp"
+
+namespace tumble::cli {
+
+int run_cli(int argc, const char* const* argv) {
+  const std::string version = fmt::format("tumble {}", TUMBLE_VERSION);
+
+  CLI::App app{"tumble: rigid-body dynamics you can check. Scenario format: docs/scenario.md",
+               "tumble"};
+  app.set_version_flag("--version", version);
+  app.require_subcommand(1);
+
+  RunArguments run_args;
+  CLI::App* run = app.add_subcommand(
+      "run",
+      "Integrate a scenario; write its trajectory CSV, its events CSV when it has contact events, "
+      "jumps or events of its own (`events:`, located to the integrator's precision; "
+      "`stop: true` ends the run there) (with --animate an HTML page that animates it, with "
+      "--video an .mp4 or .gif of that page's 3D view) and print a summary (steps, "
+      "evaluations, wall time, drift of E and |L|, largest |R^T R - I|, the events).\nExit "
+      "status: 0 done, "
+      "2 bad command line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed "
+      "(the rows so far stay a valid CSV), 5 output not writable (or the video could not be "
+      "made: node, Chromium or ffmpeg missing or failing; no partial video is left).");
+  run->set_version_flag("--version", version);
+  run->add_option("scenario", run_args.scenario, "Scenario file (YAML)")->required();
+  run->add_option("--out", run_args.out_dir, "Directory for the output files (created if missing)")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](const std::string& dir) {
+            return dir.empty() ? std::string(
+                                     "an empty path names no directory (use . for this "
+                                     "one)")
+                               : std::string();
+          },
+          "DIR"));
+  run->add_option("--set", run_args.sets,
+                  "Override a parameter: NAME=VALUE (VALUE may be an expression); repeatable");
+  run->add_flag("--animate", run_args.animate,
+                "Also write the animation page: one self-contained HTML file (3D view of the "
+                "bodies, plots of omega, E and |L|) named like the trajectory with .html, or "
+                "output.animation");
+  CLI::Option* video =
+      run->add_option("--video", run_args.video,
+                      "Also write a video of the page's 3D view, with the name and the time: "
+                      "PATH.mp4 (H.264) or PATH.gif (from the current directory, not under --out), "
+                      "drawn by headless Chromium and encoded by ffmpeg (docs/video.md)");
+  run->add_option("--video-size", run_args.video_size,
+                  "The video's WIDTHxHEIGHT in pixels, 16 to 8192 each (even for .mp4)")
+      ->capture_default_str()
+      ->needs(video);
+  run->add_option("--video-fps", run_args.video_fps, "Frames per second of the video")
+      ->check(CLI::Range(1, 240))
+      ->capture_default_str()
+      ->needs(video);
+  run->add_option("--video-speed", run_args.video_speed,
+                  "Simulation seconds per second of video (2: twice as fast as real time)")
+      ->capture_default_str()
+      ->needs(video);
+
+  InertiaArguments inertia_args;
+  CLI::App* inertia = app.add_subcommand(
+      "inertia",
+      "Print each body's mass, COM, inertia about the COM, principal moments and axes (and with\n"
+      "--about, its inertia about that point). The scenario needs no simulate: section.\nExit "
+      "status: 0 done, 2 bad command line (or no such body), 3 invalid scenario.");
+  inertia->set_version_flag("--version", version);
+  inertia->add_option("scenario", inertia_args.scenario, "Scenario file (YAML)")->required();
+  inertia->add_option("body", inertia_args.body, "Only this body");
+  inertia
+      ->add_option("--about", inertia_args.about,
+                   "X Y Z: also the inertia about this world point at t = 0 (a pivot O, m): "
+                   "I_O = I_G + m (|d|^2 E - d d^T), d from O to the COM (parallel axis "
+                   "theorem), in world and body axes, with its principal moments")
+      ->expected(3);
+
+  SweepArguments sweep_args;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep",
+      "Run the scenario at every point of a grid of its parameters (or at seeded random points), "
+      "on every core, and under mpirun on every process; write DIR/sweep.csv, one row per run "
+      "in a fixed order (the same bytes whatever the thread or process count): the run's number, "
+      "its parameter values, status (ok, failed, invalid), accepted steps, E and |L| drift, the "
+      "recorded values and, for a run that did not finish, its message (docs/sweeps.md).\nExit "
+      "status: 0 done (runs that failed are rows), 2 bad command line (an unknown parameter, an "
+      "empty range, a malformed record), 3 invalid scenario, 5 output not writable.");
+  sweep->set_version_flag("--version", version);
+  sweep->add_option("scenario", sweep_args.scenario, "Scenario file (YAML)")->required();
+  sweep
+      ->add_option("--vary", sweep_args.vary,
+                   "NAME=START:STOP:COUNT: COUNT values of parameter NAME from START to STOP "
+                   "(numbers or expressions such as pi/4, 30 deg); with --random, NAME=LO:HI; "
+                   "repeatable (a grid: the first varies slowest)")
+      ->required();
+  sweep
+      ->add_option("--random", sweep_args.random,
+                   "Instead of the grid, this many points drawn uniformly between the bounds")
+      ->check(CLI::Range(1L, 10'000'000L));
+  sweep->add_option("--seed", sweep_args.seed, "Seed of the random points")->capture_default_str();
+  sweep->add_option(
+      "--record", sweep_args.record,
+      "NAME=REDUCTION: a column of sweep.csv. REDUCTION is an expression over "
+      "final(X), max(X), min(X), mean(X), time_of_max(X) (X a column or an "
+      "expression of columns and parameters), first(EVENT), count(EVENT) (EVENT: "
+      "CONTACT.KIND, event.NAME, impulse.NAME, lock.NAME, motor.NAME), first(CONDITION), "
+      "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0); "
+      "repeatable");
+  sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");
+  sweep->add_option("--threads", sweep_args.threads, "Threads (default: every core)")
+      ->check(CLI::Range(1, 1024));
+  sweep->add_option("--out", sweep_args.out_dir, "Directory for sweep.csv (created if missing)")
+      ->capture_default_str();
+
+  FindArguments find_args;
+  CLI::App* find = app.add_subcommand(
+      "find",
+      "Find the value of one parameter at which a yes/no outcome of the run changes (a critical "
+      "friction, speed or stiffness), by bisection to --tol, and print the bracket and the runs "
+      "it took (docs/sweeps.md).\nExit status: 0 found, 2 bad command line (an unknown "
+      "parameter, an empty range, a malformed condition, or the same outcome at both ends), 3 "
+      "invalid scenario, 4 a run failed.");
+  find->set_version_flag("--version", version);
+  find->add_option("scenario", find_args.scenario, "Scenario file (YAML)")->required();
+  find->add_option("--vary", find_args.vary,
+                   "NAME=LO:HI: the parameter and the range to search (the outcome must differ "
+                   "at LO and HI)")
+      ->required();
+  find->add_option("--when", find_args.when,
+                   "The condition, an expression of reductions as for sweep --record, true where "
+                   "not 0: e.g. \"max(frame.angle) > pi/4\"")
+      ->required();
+  find->add_option("--tol", find_args.tol,
+                   "Width of the final bracket (default 1e-9 of the larger bound's magnitude)");
+  find->add_option("--set", find_args.sets, "Fix a parameter: NAME=VALUE");
+
+  PlotArguments plot_args;
+  CLI::App* plot = app.add_subcommand(
+      "plot",
+      "Plot columns of a CSV (a trajectory, or a sweep.csv) against t or another column into a PNG "
+      "or SVG, with "
+      "gnuplot (docs/plotting.md). The figure appears only when complete.\nExit status: 0 done, "
+      "2 bad command line (unreadable CSV, no such column, not .png/.svg), 5 output could not be "
+      "produced (gnuplot missing or failed, output not writable).");
+  plot->set_version_flag("--version", version);
+  plot->add_option("csv", plot_args.csv, "CSV file with a header row")->required();
+  plot->add_option("--columns", plot_args.columns, "Columns to plot, by name: A,B,...")
+      ->required()
+      ->delimiter(',')
+      ->allow_extra_args(false);  // one argument each time: `--columns A,B CSV` leaves CSV
+  plot->add_option("-x,--x-column", plot_args.x_column, "Column on the x axis")
+      ->capture_default_str();
+  plot->add_option("-o,--output", plot_args.output, "Figure to write: a .png or .svg file")
+      ->required();
+  plot->add_option("--title", plot_args.title, "Title above the plot");
+  plot->add_option("--width", plot_args.width, "Width in pixels")
+      ->check(CLI::Range(16, 20000))
+      ->capture_default_str();
+  plot->add_option("--height", plot_args.height, "Height in pixels")
+      ->check(CLI::Range(16, 20000))
+      ->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kBadCommandLine;
+  }
+  if (run->parsed()) return run_command(run_args);
+  if (plot->parsed()) return plot_command(plot_args);
+  if (sweep->parsed()) return sweep_command(sweep_args);
+  if (find->parsed()) return find_command(find_args);
+  return inertia_command(inertia_args);
+}
+
+}  // namespace tumble::cli

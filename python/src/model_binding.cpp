@@ -1,0 +1,188 @@
+// A model (the scenario read and built once) and its runs: the rows reach numpy as one table,
+// handed over without a copy; the integration runs with the GIL released, so Python threads run
+// models side by side.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <limits>
+#include <memory>
+#include <optional>
+
+#include "bindings.hpp"
+#include "tumble/simulation/table_run.hpp"
+
+namespace tumble::python {
+namespace {
+
+struct LoadedModel {
+  Scenario scenario;
+  std::shared_ptr<const SimulationModel> model;
+};
+
+// Where a run stopped, to go on from in another run of the same model.
+struct SavedState {
+  std::shared_ptr<const SimulationModel> model;
+  SimulationCheckpoint checkpoint;
+};
+
+LoadedModel load(const ScenarioSource& source, const Overrides& overrides) {
+  LoadedModel loaded;
+  loaded.scenario = source.is_text
+                        ? load_scenario_text(source.source, source.name, to_overrides(overrides))
+                        : load_scenario(source.source, to_overrides(overrides));
+  loaded.model = build_simulation_model(loaded.scenario);
+  return loaded;
+}
+
+// The rows as a (rows x columns) float64 array that owns them: the vector moves into the capsule
+// that the array keeps alive.
+py::array_t<double> rows_array(std::vector<double> values, std::size_t columns) {
+  auto* owned = new std::vector<double>(std::move(values));
+  const py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  const std::size_t rows = columns == 0 ? 0 : owned->size() / columns;
+  const auto stride = static_cast<py::ssize_t>(sizeof(double));
+  return py::array_t<double>({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(columns)},
+                             {static_cast<py::ssize_t>(columns) * stride, stride}, owned->data(),
+                             owner);
+}
+
+py::list contact_and_scenario_events(const Scenario& scenario, const SimulationResult& result) {
+  // events.csv's order: at one instant the contacts' events before the scenario's own.
+  std::vector<std::tuple<double, int, std::string, std::string>> events;
+  for (const ContactEventRecord& e : result.contact_events) {
+    events.emplace_back(e.t, 0, scenario.contacts[e.contact].name, e.what);
+  }
+  for (const UserEventRecord& e : result.user_events) {
+    events.emplace_back(e.t, 1, "event", e.stopped ? e.name + " (stops the run)" : e.name);
+  }
+  std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) {
+    return std::get<0>(a) != std::get<0>(b) ? std::get<0>(a) < std::get<0>(b)
+                                            : std::get<1>(a) < std::get<1>(b);
+  });
+  py::list out;
+  for (const auto& [t, order, source, what] : events) {
+    py::dict event;
+    event["t"] = t;
+    event["source"] = source;
+    event["what"] = what;
+    out.append(event);
+  }
+  return out;
+}
+
+py::list jumps(const Scenario& scenario, const SimulationResult& result) {
+  py::list out;
+  for (const JumpRecord& jump : result.jumps) {
+    py::dict record;
+    record["t"] = jump.t;
+    record["what"] = jump.what;
+    record["KE_before"] = jump.kinetic_energy_before;
+    record["KE_after"] = jump.kinetic_energy_after;
+    py::dict impulses;  // per joint: [Fx, Fy, Fz, Mx, My, Mz], N s and N m s, world
+    for (std::size_t j = 0; j < scenario.joints.size() && j < jump.reaction_impulses.size(); ++j) {
+      const JointReaction& r = jump.reaction_impulses[j];
+      impulses[py::str(scenario.joints[j].name)] = std::vector<double>{
+          r.F_W.x(), r.F_W.y(), r.F_W.z(), r.M_J_W.x(), r.M_J_W.y(), r.M_J_W.z()};
+    }
+    record["impulses"] = impulses;
+    out.append(record);
+  }
+  return out;
+}
+
+py::dict summary(const LoadedModel& loaded, const SimulationResult& result) {
+  const IntegrationReport& report = result.report;
+  const ConservationReport& c = result.conservation;
+  py::dict s;
+  s["completed"] = report.completed;
+  s["failure"] = report.failure;
+  s["t_reached"] = report.t_reached;
+  s["rows"] = result.rows;
+  s["integrator"] = loaded.model->integrator;
+  s["formulation"] = loaded.model->formulation->name();
+  s["rtol"] = loaded.scenario.simulate.rtol;
+  s["atol"] = loaded.scenario.simulate.atol;
+  s["accepted_steps"] = report.stats.accepted_steps;
+  s["rejected_steps"] = report.stats.rejected_steps;
+  s["rhs_evaluations"] = report.stats.rhs_evaluations;
+  s["wall_seconds"] = result.wall_seconds;
+  s["E0"] = c.initial_energy;
+  s["max_energy_change"] = c.max_energy_change;
+  s["energy_scale"] = c.energy_scale();
+  s["energy_drift"] = c.scaled_energy_drift();
+  s["L0"] = c.initial_angular_momentum;
+  s["max_angular_momentum_change"] = c.max_angular_momentum_change;
+  s["angular_momentum_drift"] = c.scaled_angular_momentum_drift();
+  s["max_orthonormality_error"] = c.max_orthonormality_error;
+  s["max_work_energy_residual"] = c.max_work_energy_residual;
+  s["max_contact_work"] = c.max_contact_work;
+  return s;
+}
+
+py::dict run(const LoadedModel& loaded, double stop_at, const SavedState* start) {
+  if (start != nullptr && start->model != loaded.model) {
+    throw std::invalid_argument(
+        "start: a state goes on only in the model whose run it came from (Model.run of that "
+        "model)");
+  }
+  TableRunOptions options;
+  options.stop_at = stop_at;
+  options.start = start != nullptr ? &start->checkpoint : nullptr;
+  std::optional<TableRun> done;
+  {
+    const py::gil_scoped_release unlocked;
+    done.emplace(run_into_table(loaded.scenario, *loaded.model, options));
+  }
+  py::dict out;
+  out["columns"] = done->table.columns();
+  out["data"] = rows_array(done->table.take_values(), done->table.columns().size());
+  out["events"] = contact_and_scenario_events(loaded.scenario, done->result);
+  out["jumps"] = jumps(loaded.scenario, done->result);
+  out["summary"] = summary(loaded, done->result);
+  if (done->state) {
+    out["state"] = SavedState{loaded.model, std::move(*done->state)};
+  } else {
+    out["state"] = py::none();
+  }
+  return out;
+}
+
+std::vector<std::string> columns_of(const LoadedModel& loaded) {
+  const PreparedSimulation run = prepare_run(*loaded.model);
+  return column_names(column_layout(loaded.scenario, *run.formulation));
+}
+
+}  // namespace
+
+void bind_model(py::module_& m) {
+  py::class_<SavedState>(m, "State", "Where a run stopped (Model.run(stop_at=...)).")
+      .def_property_readonly(
+          "t", [](const SavedState& s) { return s.checkpoint.t(); }, "The time it stopped at, s.");
+
+  py::class_<LoadedModel>(m, "LoadedModel")
+      .def_property_readonly("name", [](const LoadedModel& l) { return l.scenario.name; })
+      .def_property_readonly("file", [](const LoadedModel& l) { return l.scenario.file; })
+      .def_property_readonly("parameters",
+                             [](const LoadedModel& l) { return l.scenario.parameters; })
+      .def_property_readonly("bodies",
+                             [](const LoadedModel& l) {
+                               std::vector<std::string> names;
+                               for (const BodySpec& b : l.scenario.bodies) names.push_back(b.name);
+                               return names;
+                             })
+      .def_property_readonly("planar", [](const LoadedModel& l) { return l.scenario.planar; })
+      .def_property_readonly("t0", [](const LoadedModel& l) { return l.model->t0; })
+      .def_property_readonly("t_end", [](const LoadedModel& l) { return l.model->t_end; })
+      .def_property_readonly("columns", &columns_of)
+      .def("run", &run, py::arg("stop_at"), py::arg("start").none(true));
+
+  m.def(
+      "load",
+      [](const std::string& source, bool is_text, const std::string& name,
+         const Overrides& overrides) {
+        return load(ScenarioSource{source, is_text, name}, overrides);
+      },
+      py::arg("source"), py::arg("is_text"), py::arg("name"), py::arg("overrides"));
+}
+
+}  // namespace tumble::python

@@ -1,0 +1,48 @@
+#include "tumble/sweep/sweep_setup.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "tumble/scenario/scenario_document.hpp"
+#include "tumble/simulation/simulation.hpp"
+#include "tumble/sweep/run_recorder.hpp"
+
+namespace tumble {
+
+SweepSpec make_sweep_spec(std::string text, std::string path, std::vector<ParameterOverride> fixed,
+                          std::span<const VaryRange> ranges, std::vector<Outcome> outcomes,
+                          const SweepArgumentNames& names) {
+  SweepSpec spec;
+  spec.text = std::move(text);
+  spec.path = std::move(path);
+  spec.fixed = std::move(fixed);
+  const Scenario base = ScenarioDocument::from_text(spec.text, spec.path).read(spec.fixed);
+  const std::shared_ptr<const SimulationModel> model = build_simulation_model(base);
+  std::vector<std::string> parameters;
+  for (const auto& [name, value] : base.parameters) parameters.push_back(name);
+  for (const VaryRange& range : ranges) {
+    if (std::find(parameters.begin(), parameters.end(), range.name) == parameters.end()) {
+      throw std::invalid_argument(fmt::format(
+          "{} {}: no parameter {} in {}; {}", names.vary, range.argument, range.name, spec.path,
+          parameters.empty() ? "it has no parameters: add them under `parameters:` and use them"
+                             : fmt::format("its parameters are {}", fmt::join(parameters, ", "))));
+    }
+    if (std::find(spec.varied.begin(), spec.varied.end(), range.name) != spec.varied.end()) {
+      throw std::invalid_argument(
+          fmt::format("{} {}: {} is varied twice", names.vary, range.argument, range.name));
+    }
+    spec.varied.push_back(range.name);
+  }
+  try {
+    const PreparedSimulation run = prepare_run(*model);
+    const RunRecorder compiles(outcomes, column_layout(base, *run.formulation), base);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{} {}", names.outcome, e.what()));
+  }
+  spec.outcomes = std::move(outcomes);
+  return spec;
+}
+
+}  // namespace tumble

@@ -4,9 +4,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <limits>
+#include <algorithm>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 #include "bindings.hpp"
 #include "tumble/simulation/table_run.hpp"

@@ -141,6 +141,27 @@ int run_cli(int argc, const char* const* argv) {
                    "Width of the final bracket (default 1e-9 of the larger bound's magnitude)");
   find->add_option("--set", find_args.sets, "Fix a parameter: NAME=VALUE");
 
+  ModesArguments modes_args;
+  CLI::App* modes = app.add_subcommand(
+      "modes",
+      "Linearise the equations of motion about the scenario's initial state (an equilibrium, or "
+      "a steady motion: a spin about a principal axis, a steady precession) in the joints' "
+      "coordinates, by automatic differentiation, and print its modes: eigenvalues, natural "
+      "frequencies (rad/s, Hz), periods, damping ratios, growth rates, mode shapes by "
+      "coordinate, and a verdict (stable, marginal, unstable and which mode). Writes "
+      "STEM_modes.csv beside where the trajectory would go (docs/modes.md).\nExit status: 0 "
+      "done, 2 bad command line, 3 invalid scenario, 5 output not writable, 6 the initial state "
+      "is neither an equilibrium nor a steady motion (the message says which rate is off and by "
+      "how much), or the scenario has contacts.");
+  modes->set_version_flag("--version", version);
+  modes->add_option("scenario", modes_args.scenario, "Scenario file (YAML)")->required();
+  modes->add_option("--out", modes_args.out_dir, "Directory for the output files")
+      ->capture_default_str();
+  modes->add_option("--set", modes_args.sets, "Override a parameter: NAME=VALUE; repeatable");
+  modes->add_flag("--animate", modes_args.animate,
+                  "Also write STEM_modes.html, the animation page with each mode shape moving "
+                  "in turn (three cycles each) about the initial configuration");
+
   PlotArguments plot_args;
   CLI::App* plot = app.add_subcommand(
       "plot",
@@ -183,6 +204,7 @@ int run_cli(int argc, const char* const* argv) {
   if (plot->parsed()) return plot_command(plot_args);
   if (sweep->parsed()) return sweep_command(sweep_args);
   if (find->parsed()) return find_command(find_args);
+  if (modes->parsed()) return modes_command(modes_args);
   return inertia_command(inertia_args);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,14 @@ struct InertiaArguments {
   std::string scenario;
   std::string body;           // empty: every body
   std::vector<double> about;  // a world point at t = 0 (3 numbers), or empty
+};
+
+// tumble modes: the linearisation about the initial state (docs/modes.md).
+struct ModesArguments {
+  std::string scenario;
+  std::string out_dir = ".";
+  std::vector<std::string> sets;  // NAME=VALUE
+  bool animate = false;           // also the page where each mode shape moves
 };
 
 // tumble plot: columns of a CSV against another, drawn by gnuplot (docs/plotting.md).
@@ -65,6 +74,12 @@ int sweep_command(const SweepArguments& args);
 int find_command(const FindArguments& args);
 int inertia_command(const InertiaArguments& args);
 int plot_command(const PlotArguments& args);
+int modes_command(const ModesArguments& args);
+
+// The scenario with its overrides, or the exit status after the message on stderr (3 for the
+// scenario's FILE:LINE:COL: KEY: why, 2 for a malformed override, prefixed "tumble COMMAND: ").
+std::optional<Scenario> load_scenario_for(const char* command, const std::string& path,
+                                          const std::vector<std::string>& sets, int& status);
 
 // Splits each NAME=VALUE; throws std::invalid_argument for a malformed one.
 std::vector<ParameterOverride> parse_overrides(const std::vector<std::string>& sets);

@@ -1,5 +1,6 @@
 #pragma once
-// The documented exit statuses of every tumble command (docs/cli.md).
+// The documented exit statuses of every tumble command (README.md, "Commands"; each command's
+// --help).
 namespace tumble::cli {
 
 enum ExitStatus : int {
@@ -8,6 +9,9 @@ enum ExitStatus : int {
   kInvalidScenario = 3,
   kIntegrationFailed = 4,
   kOutputError = 5,  // an output file or directory could not be written
+  // tumble modes: the initial state is neither an equilibrium nor a steady motion, or the
+  // model has what a linearisation does not cover yet (contacts)
+  kNoLinearisation = 6,
 };
 
 }  // namespace tumble::cli

@@ -27,6 +27,20 @@ std::vector<ParameterOverride> parse_overrides(const std::vector<std::string>& s
   return overrides;
 }
 
+std::optional<Scenario> load_scenario_for(const char* command, const std::string& path,
+                                          const std::vector<std::string>& sets, int& status) {
+  try {
+    return load_scenario(path, parse_overrides(sets));
+  } catch (const ScenarioError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    status = kInvalidScenario;
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "tumble {}: {}\n", command, e.what());
+    status = kBadCommandLine;
+  }
+  return std::nullopt;
+}
+
 namespace {
 
 void print_summary(const Scenario& scenario, const PreparedSimulation& simulation,
@@ -142,16 +156,10 @@ int run_command(const RunArguments& args) {
     }
   }
 
-  Scenario scenario;
-  try {
-    scenario = load_scenario(args.scenario, parse_overrides(args.sets));
-  } catch (const ScenarioError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return kInvalidScenario;
-  } catch (const std::invalid_argument& e) {
-    fmt::print(stderr, "tumble run: {}\n", e.what());
-    return kBadCommandLine;
-  }
+  int status = kDone;
+  std::optional<Scenario> loaded = load_scenario_for("run", args.scenario, args.sets, status);
+  if (!loaded) return status;
+  Scenario& scenario = *loaded;
 
   // The video's frame count is known from the duration: too many is refused now, not after the
   // whole run.

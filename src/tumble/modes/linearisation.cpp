@@ -1,0 +1,264 @@
+#include "tumble/modes/linearisation.hpp"
+
+#include <fmt/core.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tumble {
+
+namespace {
+
+// A position block: the coordinates of one joint's place (a free body has two: where its COM is,
+// and how it is turned).
+struct PositionBlock {
+  Eigen::Index first = 0, count = 0;
+};
+
+std::vector<PositionBlock> position_blocks(const ArticulatedModel& model,
+                                           const ModalLayout& layout) {
+  std::vector<PositionBlock> blocks;
+  for (std::size_t k = 0; k < model.tree.size(); ++k) {
+    const Eigen::Index o = layout.position_offset[k];
+    if (o < 0 || model.tree[k].nv == 0) continue;
+    if (model.tree[k].type == JointType::Free) {
+      blocks.push_back({o, 3});
+      blocks.push_back({o + 3, 3});
+    } else {
+      blocks.push_back({o, model.tree[k].nv});
+    }
+  }
+  return blocks;
+}
+
+// The candidates for a steady motion's turns: each body on a ball or free joint with an axis of
+// symmetry spinning about it (a sphere or a cube about the axis it spins about), then the whole
+// turning about the vertical.
+std::vector<Symmetry> candidate_symmetries(const ModalEquations& equations) {
+  const ArticulatedModel& m = equations.model();
+  std::vector<Symmetry> spins;
+  for (std::size_t k = 0; k < m.tree.size(); ++k) {
+    const TreeJoint& joint = m.tree[k];
+    if (equations.layout().position_offset[k] < 0) continue;
+    if (joint.type != JointType::Ball && joint.type != JointType::Free) continue;
+    const RigidBody& body = m.model.bodies[joint.child];
+    const Eigen::SelfAdjointEigenSolver<Mat3> principal(body.I_G_B);
+    const Vec3& I = principal.eigenvalues();  // ascending
+    const double close = 1e-9 * I(2);
+    Vec3 axis;
+    if (I(2) - I(0) <= close) {
+      const Vec3 omega_C = equations.y0().segment<3>(joint.v);
+      if (omega_C.norm() == 0.0) continue;
+      axis = omega_C.normalized();
+    } else if (I(1) - I(0) <= close) {
+      axis = principal.eigenvectors().col(2);
+    } else if (I(2) - I(1) <= close) {
+      axis = principal.eigenvectors().col(0);
+    } else {
+      continue;
+    }
+    spins.push_back({Symmetry::Kind::BodySpin, axis, k,
+                     fmt::format("{} spinning about its axis of symmetry", body.name)});
+  }
+  const double g = m.model.gravity_W.norm();
+  if (g > 0.0) {
+    spins.push_back({Symmetry::Kind::WorldTurn, -m.model.gravity_W / g, 0,
+                     "the whole turning about the vertical"});
+  }
+  return spins;
+}
+
+MatX rows_and_columns(const MatX& J, const std::vector<Eigen::Index>& kept) {
+  const auto n = static_cast<Eigen::Index>(kept.size());
+  MatX out(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) out(i, j) = J(kept[i], kept[j]);
+  }
+  return out;
+}
+
+VecX rows(const VecX& v, const std::vector<Eigen::Index>& kept) {
+  VecX out(static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t i = 0; i < kept.size(); ++i) out(static_cast<Eigen::Index>(i)) = v(kept[i]);
+  return out;
+}
+
+}  // namespace
+
+MatX jacobian_at_zero(const std::function<VecOf<Dual>(const VecOf<Dual>&)>& f, Eigen::Index n,
+                      VecX* value) {
+  VecOf<Dual> z(n);
+  for (Eigen::Index i = 0; i < n; ++i) z(i) = Dual(0.0, Eigen::VectorXd::Unit(n, i));
+  const VecOf<Dual> out = f(z);
+  MatX J = MatX::Zero(out.size(), n);
+  if (value != nullptr) value->resize(out.size());
+  for (Eigen::Index i = 0; i < out.size(); ++i) {
+    if (value != nullptr) (*value)(i) = out(i).value();
+    if (out(i).derivatives().size() == n) J.row(i) = out(i).derivatives().transpose();
+  }
+  return J;
+}
+
+Linearisation linearise(const ModalEquations& equations) {
+  const ArticulatedModel& m = equations.model();
+  const ModalLayout& layout = equations.layout();
+  if (!m.model.contacts.empty()) {
+    throw NotSteady(
+        "contacts: the modes of bodies that touch planes (rolling, sliding, resting) are not "
+        "computed yet; remove the contacts to get those of the rest");
+  }
+  const Eigen::Index n = layout.size();
+  if (n == 0) throw NotSteady("joints: nothing can move (every joint is fixed, locked or driven)");
+
+  VecX f0;
+  const MatX J =
+      jacobian_at_zero([&](const VecOf<Dual>& z) { return equations.rates<Dual>(z); }, n, &f0);
+  Linearisation result;
+  result.jacobian_scale = J.cwiseAbs().maxCoeff();
+  const double scale = 1.0 + result.jacobian_scale;
+  // Round-off in J and in the rates grows with their size; a rate or a dependence below these is
+  // taken as zero. Speeds multiply the Jacobian into rates, hence rate_tolerance.
+  const double tolerance = 1e-10 * scale;
+  // The positions' rates at y0 are the speeds.
+  const double speed_scale =
+      layout.position_count > 0
+          ? std::max(1.0, f0.head(layout.position_count).cwiseAbs().maxCoeff())
+          : 1.0;
+  const double rate_tolerance = 1e-9 * scale * speed_scale;
+
+  // Step 2: ignorable positions.
+  std::vector<bool> kept_row(static_cast<std::size_t>(n), true);
+  std::vector<PositionBlock> blocks = position_blocks(m, layout);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (auto block = blocks.begin(); block != blocks.end(); ++block) {
+      double dependence = 0.0;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        if (!kept_row[static_cast<std::size_t>(i)]) continue;
+        if (i >= block->first && i < block->first + block->count) continue;
+        dependence = std::max(dependence,
+                              J.row(i).segment(block->first, block->count).cwiseAbs().maxCoeff());
+      }
+      if (dependence > tolerance) continue;
+      for (Eigen::Index i = block->first; i < block->first + block->count; ++i) {
+        kept_row[static_cast<std::size_t>(i)] = false;
+        const ModalCoordinate& coordinate = layout.coordinates[static_cast<std::size_t>(i)];
+        result.ignorable.push_back(coordinate.name);
+        // A free body's place and turn are symmetries; a joint's coordinate that nothing
+        // restores is neutral only to first order.
+        if (m.tree[coordinate.tree_joint].type != JointType::Free) {
+          result.unrestored.push_back(coordinate.name);
+        }
+      }
+      blocks.erase(block);
+      changed = true;
+      break;
+    }
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!kept_row[static_cast<std::size_t>(i)]) continue;
+    result.kept.push_back(i);
+    result.coordinates.push_back(layout.coordinates[static_cast<std::size_t>(i)]);
+  }
+  if (result.kept.empty()) {
+    throw NotSteady("every coordinate is ignorable: nothing acts that a small change could alter");
+  }
+  const VecX f_s = rows(f0, result.kept);
+  MatX A = rows_and_columns(J, result.kept);
+
+  // Step 3: steady? First as an equilibrium, then with the spins, then with the turn about the
+  // vertical as well.
+  const std::vector<Symmetry> candidates = candidate_symmetries(equations);
+  const auto field_of = [&](const Symmetry& s) {
+    VecX X0;
+    MatX DX = jacobian_at_zero(
+        [&](const VecOf<Dual>& z) { return equations.symmetry_field<Dual>(s, z); }, n, &X0);
+    return std::make_pair(X0, DX);
+  };
+  std::vector<std::pair<VecX, MatX>> fields;
+  for (const Symmetry& s : candidates) fields.push_back(field_of(s));
+
+  VecX residual = f_s;
+  std::vector<std::size_t> used;
+  VecX c;
+  if (f_s.cwiseAbs().maxCoeff() > rate_tolerance) {
+    std::vector<std::size_t> spins, all;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (candidates[i].kind == Symmetry::Kind::BodySpin) spins.push_back(i);
+      all.push_back(i);
+    }
+    for (const std::vector<std::size_t>& trial : {spins, all}) {
+      if (trial.empty()) continue;
+      MatX X(f_s.size(), static_cast<Eigen::Index>(trial.size()));
+      for (std::size_t i = 0; i < trial.size(); ++i) {
+        X.col(static_cast<Eigen::Index>(i)) = rows(fields[trial[i]].first, result.kept);
+      }
+      const Eigen::CompleteOrthogonalDecomposition<MatX> fit(X);
+      const VecX rates = fit.solve(f_s);
+      const VecX left = f_s - X * rates;
+      if (left.cwiseAbs().maxCoeff() < residual.cwiseAbs().maxCoeff()) {
+        residual = left;
+        used = trial;
+        c = rates;
+      }
+      if (left.cwiseAbs().maxCoeff() <= rate_tolerance) break;
+    }
+  }
+  Eigen::Index worst = 0;
+  const double off = residual.cwiseAbs().maxCoeff(&worst);
+  if (off > rate_tolerance) {
+    const ModalCoordinate& coordinate = result.coordinates[static_cast<std::size_t>(worst)];
+    std::string what = coordinate.is_speed
+                           ? fmt::format("{} changes at {:.6g} {}/s", coordinate.name,
+                                         residual(worst), coordinate.unit)
+                           : fmt::format("{} moves at {:.6g} {}/s", coordinate.name,
+                                         residual(worst), coordinate.unit);
+    what = "the initial state is neither an equilibrium nor a steady motion: " + what;
+    if (!used.empty()) what += " even as the state turns with its symmetries";
+    throw NotSteady(what);
+  }
+  result.largest_rate = off;
+
+  // The turns that carry the steady motion: each must commute with the motion ([X, f] = 0),
+  // or the frame that moves with it would see the equations change.
+  std::vector<Eigen::Index> orbit_columns;
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    const double rate = c(static_cast<Eigen::Index>(i));
+    if (std::abs(rate) * scale <= rate_tolerance) continue;
+    const auto& [X0, DX] = fields[used[i]];
+    const VecX bracket = rows(J * X0 - DX * f0, result.kept);
+    if (bracket.cwiseAbs().maxCoeff() > rate_tolerance * (1.0 + std::abs(rate))) {
+      throw NotSteady(fmt::format(
+          "the initial state turns as {} at {:.6g} rad/s, but the loads change as it turns: "
+          "not a steady motion",
+          candidates[used[i]].description, rate));
+    }
+    result.symmetries.push_back(candidates[used[i]]);
+    A -= rate * rows_and_columns(DX, result.kept);
+    orbit_columns.push_back(static_cast<Eigen::Index>(i));
+  }
+  result.symmetry_rates.resize(static_cast<Eigen::Index>(result.symmetries.size()));
+  const auto ns = static_cast<Eigen::Index>(result.kept.size());
+  result.orbit.resize(ns, static_cast<Eigen::Index>(orbit_columns.size()));
+  for (std::size_t i = 0; i < orbit_columns.size(); ++i) {
+    const auto column = static_cast<Eigen::Index>(i);
+    result.symmetry_rates(column) = c(orbit_columns[i]);
+    result.orbit.col(column) =
+        rows(fields[used[static_cast<std::size_t>(orbit_columns[i])]].first, result.kept);
+  }
+  result.A = A;
+
+  // Step 4: the quotient by the directions along the orbit.
+  if (result.orbit.cols() == 0) {
+    result.quotient = MatX::Identity(ns, ns);
+  } else {
+    const Eigen::HouseholderQR<MatX> qr(result.orbit);
+    const MatX Q = qr.householderQ() * MatX::Identity(ns, ns);
+    result.quotient = Q.rightCols(ns - result.orbit.cols());
+  }
+  return result;
+}
+
+}  // namespace tumble

@@ -1,0 +1,59 @@
+#pragma once
+// The linearisation of a model about its initial state (`tumble modes`): an equilibrium, where
+// every rate of the modal coordinates vanishes, or a steady motion, where the state only turns
+// along symmetries of the model: a body spinning about a principal axis, a wheel spinning on its
+// axle while the whole precesses about the vertical, a top spinning upright.
+//
+// 1. The Jacobian J = d(dz/dt)/dz at z = 0, by automatic differentiation (modal_equations.hpp).
+// 2. Ignorable coordinates are set aside: a position on which no other rate depends (a free
+//    body's place, the turn of a body that nothing pulls back, the angle of a wheel symmetric
+//    about its axle). They only drift; what is left evolves on its own, as Euler's equations
+//    do for the free prism.
+// 3. What is left must be steady: its rates zero (an equilibrium), or equal to the rates of a
+//    turn along symmetries, sum_i c_i X_i (found by least squares: the spins of symmetric bodies
+//    first, then a turn about the vertical), where each X_i commutes with the motion
+//    ([X_i, f] = 0). Otherwise NotSteady says which rate is off and by how much.
+// 4. The linearisation is then A = J - sum_i c_i dX_i/dz: the equations seen from a frame that
+//    moves with the steady motion, so A is constant. Directions along which the motion is only
+//    turned (X_i) are a neutral family of the same steady motion; they are taken out (the
+//    quotient), so a change of spin is not mistaken for a growing drift.
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tumble/modes/modal_equations.hpp"
+
+namespace tumble {
+
+// The initial state is neither an equilibrium nor a steady motion (or the model is one a
+// linearisation does not cover).
+class NotSteady : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Linearisation {
+  std::vector<ModalCoordinate> coordinates;  // the ones kept, in z's order
+  std::vector<Eigen::Index> kept;            // their places in z
+  std::vector<std::string> ignorable;        // positions set aside (step 2)
+  std::vector<std::string> unrestored;       // those of joints (not of free bodies)
+  MatX A;                                    // d(ds/dt)/ds, s the kept coordinates
+  std::vector<Symmetry> symmetries;          // the steady motion's turns (none: an equilibrium)
+  VecX symmetry_rates;                       // c_i: rad/s
+  MatX orbit;                   // columns: the directions, in s, along which the motion only turns
+  MatX quotient;                // an orthonormal basis of the rest: A's modes are those of Q^T A Q
+  double largest_rate = 0.0;    // the largest rate of s that the steadiness leaves (round-off)
+  double jacobian_scale = 0.0;  // max |J|, 1/s: the scale of the tolerances
+  bool equilibrium() const { return symmetries.empty(); }
+};
+
+// Throws NotSteady.
+Linearisation linearise(const ModalEquations& equations);
+
+// The Jacobian of a function of z at z = 0 by forward-mode automatic differentiation, and its
+// value.
+MatX jacobian_at_zero(const std::function<VecOf<Dual>(const VecOf<Dual>&)>& f, Eigen::Index n,
+                      VecX* value = nullptr);
+
+}  // namespace tumble

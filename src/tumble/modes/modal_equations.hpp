@@ -1,0 +1,76 @@
+#pragma once
+// The equations of motion written in the modal coordinates (modal_coordinates.hpp): dz/dt as a
+// function of z, the departure from the initial state y0, for a linearisation by automatic
+// differentiation. Templated on the scalar: double for values, Eigen's AutoDiffScalar for the
+// Jacobian, which is then exact to round-off (no step size to choose, as finite differences
+// would need).
+//
+// The equations are the chapter's Newton-Euler equations for each body (m a_G = F,
+// I_G alpha + omega x I_G omega = M_G), projected onto the joints' speeds u (Kane's form):
+//     sum_b  J_v,b^T (m_b a_G,b - F_b) + J_w,b^T (I_G,b alpha_b + omega_b x I_G,b omega_b - M_G,b)
+//         = tau (the motors' efforts),
+// with a_G,b = J_v,b u' + (the velocity terms) and alpha_b likewise, J_v,b and J_w,b the
+// body's COM velocity and angular velocity per unit of each speed (world axes). That is the
+// mass matrix M(q) u' = the generalised forces: an algorithm independent of the articulated-body
+// passes that integrate the same model, which a test holds to the same accelerations.
+//
+// What acts: gravity, the loads active at t0, linear springs and dampers, torsional springs and
+// dampers, the motors' efforts at t0; joints held or driven at t0 keep their speed. Contacts,
+// impulses and later schedule changes are not part of a linearisation about t0.
+//
+// A rotation's coordinates are a small turn r about the body's axes, R = R0 exp([r]x), taken to
+// first order (R0 (1 + [r]x)): a linearisation differentiates once, at r = 0, where the two have
+// the same value and derivative. Evaluate only at z = 0 for that reason.
+#include <memory>
+#include <string>
+
+#include <Eigen/Dense>
+// After Eigen/Dense, which the AutoDiff module needs first.
+#include <unsupported/Eigen/AutoDiff>
+
+#include "tumble/modes/modal_coordinates.hpp"
+
+namespace tumble {
+
+using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+template <typename Scalar>
+using VecOf = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+
+// A continuous symmetry the steady motions may turn along: the whole system turned about a world
+// axis (about the vertical, which leaves gravity unchanged), or one body turned about its own
+// axis of symmetry (two equal principal moments) through its joint.
+struct Symmetry {
+  enum class Kind { WorldTurn, BodySpin } kind = Kind::WorldTurn;
+  Vec3 axis = Vec3::UnitZ();   // unit: world axes (WorldTurn) or the body's axes (BodySpin)
+  std::size_t tree_joint = 0;  // BodySpin: the ball or free joint holding the body
+  std::string description;     // "a turn of the whole about the vertical", ...
+};
+
+class ModalEquations {
+ public:
+  ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout, VecX y0,
+                 double t0);
+
+  const ArticulatedModel& model() const { return *model_; }
+  const std::shared_ptr<const ArticulatedModel>& shared_model() const { return model_; }
+  const ModalLayout& layout() const { return layout_; }
+  const VecX& y0() const { return y0_; }
+
+  // dz/dt at z.
+  template <typename Scalar>
+  VecOf<Scalar> rates(const VecOf<Scalar>& z) const;
+  // The rates of z while the state turns along `symmetry` at unit rate.
+  template <typename Scalar>
+  VecOf<Scalar> symmetry_field(const Symmetry& symmetry, const VecOf<Scalar>& z) const;
+
+ private:
+  std::shared_ptr<const ArticulatedModel> model_;
+  ModalLayout layout_;
+  VecX y0_;
+  double t0_;
+  std::vector<Mat3> R_PC0_;  // per tree joint: the child's orientation relative to its parent at y0
+  std::vector<Vec3>
+      v_G0_W_;  // per tree joint: the child's COM velocity at y0 (free joints' speeds)
+};
+
+}  // namespace tumble

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include "commands.hpp"
 #include "exit_status.hpp"
@@ -66,7 +67,7 @@ void print_summary(const Scenario& scenario, const ScenarioModes& modes) {
     for (Eigen::Index j = 0; j < m.shape.size(); ++j) {
       const double a = std::abs(m.shape(j));
       if (a < 1e-6) continue;
-      const double phase = std::arg(m.shape(j)) * 180.0 / M_PI;
+      const double phase = std::arg(m.shape(j)) * 180.0 / std::numbers::pi;
       shape += fmt::format("{}{} {:.6g}", shape.empty() ? "" : ", ",
                            lin.coordinates[static_cast<std::size_t>(j)].name, a);
       if (std::abs(phase) > 1e-6) shape += fmt::format(" ({:.1f})", phase);
@@ -102,6 +103,7 @@ int modes_command(const ModesArguments& args) {
   std::filesystem::path stem = std::filesystem::path(args.out_dir) / scenario.output.trajectory;
   stem.replace_extension();
   const std::filesystem::path csv = stem.string() + "_modes.csv";
+  std::string wrote = csv.string();  // the summary's last line: what was written
   try {
     std::filesystem::create_directories(csv.parent_path());
     write_file(csv, modes_csv(modes));
@@ -109,22 +111,17 @@ int modes_command(const ModesArguments& args) {
       const AnimationScene scene = make_animation_scene(scenario);
       double size = 0.0;
       for (const AnimationBody& body : scene.bodies) size = std::max(size, body.extent);
-      std::vector<double> starts;
-      const RecordedTrajectory rows = mode_shape_rows(modes, std::max(size, 1e-3), starts);
+      std::vector<ShownMode> shown;
+      const RecordedTrajectory rows = mode_shape_rows(modes, std::max(size, 1e-3), shown);
       if (rows.rows() > 0) {
         const std::filesystem::path page = stem.string() + "_modes.html";
         write_animation_html(page, scene, rows);
         std::string when;
-        for (std::size_t i = 0, shown = 0; i < modes.analysis.modes.size(); ++i) {
-          if (modes.analysis.modes[i].kind == Mode::Kind::Neutral || shown >= starts.size()) {
-            continue;
-          }
-          when += fmt::format("{}mode {} from t = {:.4g} s", when.empty() ? "" : ", ", i + 1,
-                              starts[shown++]);
+        for (const ShownMode& s : shown) {
+          when += fmt::format("{}mode {} from t = {:.4g} s", when.empty() ? "" : ", ", s.mode + 1,
+                              s.start);
         }
-        print_summary(scenario, modes);
-        fmt::print("wrote {} and {} ({})\n", csv.string(), page.string(), when);
-        return kDone;
+        wrote += fmt::format(" and {} ({})", page.string(), when);
       }
     }
   } catch (const std::exception& e) {
@@ -132,7 +129,7 @@ int modes_command(const ModesArguments& args) {
     return kOutputError;
   }
   print_summary(scenario, modes);
-  fmt::print("wrote {}\n", csv.string());
+  fmt::print("wrote {}\n", wrote);
   return kDone;
 }
 

@@ -116,8 +116,7 @@ Linearisation linearise(const ModalEquations& equations) {
   const MatX J =
       jacobian_at_zero([&](const VecOf<Dual>& z) { return equations.rates<Dual>(z); }, n, &f0);
   Linearisation result;
-  result.jacobian_scale = J.cwiseAbs().maxCoeff();
-  const double scale = 1.0 + result.jacobian_scale;
+  const double scale = 1.0 + J.cwiseAbs().maxCoeff();
   // Round-off in J and in the rates grows with their size; a rate or a dependence below these is
   // taken as zero. Speeds multiply the Jacobian into rates, hence rate_tolerance.
   const double tolerance = 1e-10 * scale;
@@ -250,14 +249,11 @@ Linearisation linearise(const ModalEquations& equations) {
   }
   result.A = A;
 
-  // Step 4: the quotient by the directions along the orbit.
-  if (result.orbit.cols() == 0) {
-    result.quotient = MatX::Identity(ns, ns);
-  } else {
-    const Eigen::HouseholderQR<MatX> qr(result.orbit);
-    const MatX Q = qr.householderQ() * MatX::Identity(ns, ns);
-    result.quotient = Q.rightCols(ns - result.orbit.cols());
-  }
+  // Step 4: the quotient by the directions along the orbit (with none, Q is the identity).
+  const MatX basis =
+      Eigen::HouseholderQR<MatX>(result.orbit).householderQ() * MatX::Identity(ns, ns);
+  result.orbit_basis = basis.leftCols(result.orbit.cols());
+  result.quotient = basis.rightCols(ns - result.orbit.cols());
   return result;
 }
 

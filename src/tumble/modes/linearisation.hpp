@@ -41,10 +41,10 @@ struct Linearisation {
   MatX A;                                    // d(ds/dt)/ds, s the kept coordinates
   std::vector<Symmetry> symmetries;          // the steady motion's turns (none: an equilibrium)
   VecX symmetry_rates;                       // c_i: rad/s
-  MatX orbit;                   // columns: the directions, in s, along which the motion only turns
-  MatX quotient;                // an orthonormal basis of the rest: A's modes are those of Q^T A Q
-  double largest_rate = 0.0;    // the largest rate of s that the steadiness leaves (round-off)
-  double jacobian_scale = 0.0;  // max |J|, 1/s: the scale of the tolerances
+  MatX orbit;                 // columns: the directions, in s, along which the motion only turns
+  MatX orbit_basis;           // P: an orthonormal basis of their span
+  MatX quotient;              // Q: one of the rest; A's modes are those of Q^T A Q
+  double largest_rate = 0.0;  // the largest rate of s that the steadiness leaves (round-off)
   bool equilibrium() const { return symmetries.empty(); }
 };
 

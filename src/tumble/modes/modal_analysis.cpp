@@ -19,11 +19,9 @@ using Complex = std::complex<double>;
 Eigen::VectorXcd full_shape(const Linearisation& lin, const Eigen::VectorXcd& v_q, Complex lambda) {
   const MatX& Q = lin.quotient;
   Eigen::VectorXcd v = Q.cast<Complex>() * v_q;
-  const Eigen::Index orbit = lin.orbit.cols();
+  const MatX& P = lin.orbit_basis;
+  const Eigen::Index orbit = P.cols();
   if (orbit == 0) return v;
-  const Eigen::Index n = Q.rows();
-  const MatX P =
-      (Eigen::HouseholderQR<MatX>(lin.orbit).householderQ() * MatX::Identity(n, n)).leftCols(orbit);
   const Eigen::MatrixXcd block = (P.transpose() * lin.A * P).cast<Complex>() -
                                  lambda * Eigen::MatrixXcd::Identity(orbit, orbit);
   const Eigen::VectorXcd coupling = (P.transpose() * lin.A * Q).cast<Complex>() * v_q;

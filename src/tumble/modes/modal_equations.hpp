@@ -23,6 +23,7 @@
 // the same value and derivative. Evaluate only at z = 0 for that reason.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 // After Eigen/Dense, which the AutoDiff module needs first.

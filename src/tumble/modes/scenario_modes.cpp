@@ -60,7 +60,7 @@ std::string modes_csv(const ScenarioModes& modes) {
 }
 
 RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
-                                   std::vector<double>& starts) {
+                                   std::vector<ShownMode>& shown) {
   const ModalEquations& eq = *modes.equations;
   const ArticulatedModel& model = eq.model();
   const ModalLayout& layout = eq.layout();
@@ -68,11 +68,12 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
   const ArticulatedFormulation formulation(eq.shared_model());
   RecordedTrajectory rows(model.body_count());
   std::vector<BodyState> states(model.body_count());
-  starts.clear();
+  shown.clear();
   double t = 0.0;
   constexpr int kRowsPerCycle = 48;
   constexpr int kCycles = 3;
-  for (const Mode& mode : modes.analysis.modes) {
+  for (std::size_t m = 0; m < modes.analysis.modes.size(); ++m) {
+    const Mode& mode = modes.analysis.modes[m];
     if (mode.kind == Mode::Kind::Neutral) continue;
     // The shape over all of z: kept entries as they are; a position set aside or without its
     // own entry moves by its speed / lambda.
@@ -89,18 +90,18 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
         if (!kept) shape(po + i) = shape(po + count + i) / mode.eigenvalue;
       }
     }
-    double turn = 0.0, shift = 0.0;
+    double turn = 0.0, shift = 0.0;  // the largest angle (rad) and displacement (m)
     for (Eigen::Index i = 0; i < layout.position_count; ++i) {
-      const double a = std::abs(shape(i));
-      (layout.coordinates[static_cast<std::size_t>(i)].unit == "rad" ? turn : shift) =
-          std::max(a, layout.coordinates[static_cast<std::size_t>(i)].unit == "rad" ? turn : shift);
+      double& largest =
+          layout.coordinates[static_cast<std::size_t>(i)].unit == "rad" ? turn : shift;
+      largest = std::max(largest, std::abs(shape(i)));
     }
     const double scale =
         std::min(turn > 0.0 ? 0.2 / turn : INFINITY, shift > 0.0 ? 0.1 * size / shift : INFINITY);
     if (!std::isfinite(scale)) continue;
     const bool oscillates = mode.damped_frequency > 0.0;
     const double cycle = oscillates ? mode.period() : 2.0;
-    starts.push_back(t);
+    shown.push_back({m, t});
     for (int row = 0; row <= kCycles * kRowsPerCycle; ++row) {
       const double phase = 2.0 * std::numbers::pi * row / kRowsPerCycle;
       const std::complex<double> swing =

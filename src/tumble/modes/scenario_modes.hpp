@@ -30,9 +30,14 @@ std::string modes_csv(const ScenarioModes& modes);
 // Each mode that moves, one after the other, for three cycles (three periods; a real mode swings
 // its shape over 2 s cycles), about the initial configuration; the largest turn in a shape is
 // 0.2 rad, the largest displacement a tenth of `size` (m). A mode without positions (a free
-// body's spin) moves its positions by speed / lambda, the motion its speeds make. The start time
-// of each mode's cycles is in `starts` (none for neutral modes).
+// body's spin) moves its positions by speed / lambda, the motion its speeds make. Neutral modes
+// and shapes that move nothing are not shown; `shown` gets, for each mode shown, its index in
+// ModalAnalysis::modes and the time its cycles start.
+struct ShownMode {
+  std::size_t mode = 0;
+  double start = 0.0;  // s
+};
 RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
-                                   std::vector<double>& starts);
+                                   std::vector<ShownMode>& shown);
 
 }  // namespace tumble

@@ -145,14 +145,16 @@ int run_cli(int argc, const char* const* argv) {
   CLI::App* modes = app.add_subcommand(
       "modes",
       "Linearise the equations of motion about the scenario's initial state (an equilibrium, or "
-      "a steady motion: a spin about a principal axis, a steady precession) in the joints' "
-      "coordinates, by automatic differentiation, and print its modes: eigenvalues, natural "
+      "a steady motion: a spin about a principal axis, a steady precession, a wheel rolling) in "
+      "the joints' coordinates, reduced by the contacts that touch (rolling, sticking or "
+      "frictionless), by automatic differentiation, and print its modes: eigenvalues, natural "
       "frequencies (rad/s, Hz), periods, damping ratios, growth rates, mode shapes by "
       "coordinate, and a verdict (stable, marginal, unstable and which mode). Writes "
       "STEM_modes.csv beside where the trajectory would go (docs/modes.md).\nExit status: 0 "
       "done, 2 bad command line, 3 invalid scenario, 5 output not writable, 6 the initial state "
       "is neither an equilibrium nor a steady motion (the message says which rate is off and by "
-      "how much), or the scenario has contacts.");
+      "how much), or a contact it cannot linearise (resting on an edge, a face or a line; "
+      "sliding with friction; lifting off).");
   modes->set_version_flag("--version", version);
   modes->add_option("scenario", modes_args.scenario, "Scenario file (YAML)")->required();
   modes->add_option("--out", modes_args.out_dir, "Directory for the output files")

@@ -32,6 +32,16 @@ void print_summary(const Scenario& scenario, const ScenarioModes& modes) {
                  number(lin.symmetry_rates(static_cast<Eigen::Index>(i))));
     }
   }
+  for (const Symmetry& symmetry : lin.neutral_symmetries) {
+    fmt::print("  neutral family taken out: {} (the motion carried over unchanged)\n",
+               symmetry.description);
+  }
+  for (const ModalContact& held : modes.equations->contacts()) {
+    const PlaneContact& contact = modes.equations->model().model.contacts[held.contact];
+    fmt::print("contact {}: {}\n", contact.name,
+               held.rolls ? "rolling (its point held, friction within the cone)"
+                          : "frictionless (its point kept on the plane)");
+  }
   std::string names;
   for (const ModalCoordinate& c : lin.coordinates) {
     names += fmt::format("{}{} [{}]", names.empty() ? "" : ", ", c.name, c.unit);

@@ -3,9 +3,12 @@
 #include <fmt/core.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
+
+#include "tumble/contact/plane_contact.hpp"
 
 namespace tumble {
 
@@ -85,6 +88,79 @@ VecX rows(const VecX& v, const std::vector<Eigen::Index>& kept) {
   return out;
 }
 
+// An orthonormal basis of the range of M (columns), its rank taken at `relative` of its
+// largest singular value.
+MatX orthonormal_range(const MatX& M, double relative) {
+  if (M.cols() == 0) return MatX(M.rows(), 0);
+  const Eigen::JacobiSVD<MatX> svd(M, Eigen::ComputeThinU);
+  const VecX& sigma = svd.singularValues();
+  Eigen::Index rank = 0;
+  while (rank < sigma.size() && sigma(rank) > relative * std::max(sigma(0), 1e-300)) ++rank;
+  return svd.matrixU().leftCols(rank);
+}
+
+// Whether x lies in the span of the orthonormal columns of T (to round-off).
+bool in_span(const MatX& T, const VecX& x) {
+  return (x - T * (T.transpose() * x)).norm() <= 1e-9 * std::max(x.norm(), 1e-300);
+}
+
+// The touching contacts must hold with what the plane can give: their points not slipping (or,
+// frictionless, not leaving the plane), pressed on (N > 0), inside the friction cone.
+void check_contacts(const ModalEquations& equations, double speed_scale) {
+  const Model& model = equations.model().model;
+  const VecX values = equations.constraints<double>(VecX::Zero(equations.layout().size()));
+  const std::vector<Vec3> forces = equations.contact_forces();
+  Eigen::Index row = 0;
+  for (std::size_t i = 0; i < equations.contacts().size(); ++i) {
+    const ModalContact& held = equations.contacts()[i];
+    const PlaneContact& contact = model.contacts[held.contact];
+    ++row;  // the height, at the plane by touching_contacts
+    const double slip = values.segment(row, held.rows()).norm();
+    row += held.rows();
+    if (slip > 1e-9 * speed_scale * std::max(1.0, contact_size(contact.surface))) {
+      throw NotSteady(
+          held.rolls ? fmt::format("contact {}: its point slides at {:.6g} m/s; a sliding contact "
+                                   "(Coulomb's friction against the slip) is not linearised, only "
+                                   "rolling, sticking and frictionless ones",
+                                   contact.name, slip)
+                     : fmt::format("contact {}: its point moves off the plane at {:.6g} m/s",
+                                   contact.name, slip));
+    }
+    const double N = forces[i].dot(contact.normal_W);
+    if (N <= 0.0) {
+      throw NotSteady(
+          fmt::format("contact {}: the plane would have to pull (N = {:.6g} N): the body lifts off",
+                      contact.name, N));
+    }
+    const double friction = (forces[i] - N * contact.normal_W).norm();
+    if (friction > contact.friction * N * (1.0 + 1e-9)) {
+      throw NotSteady(fmt::format(
+          "contact {}: holding its point needs a friction force of {:.6g} N, more than mu N = "
+          "{:.6g} N: it slides",
+          contact.name, friction, contact.friction * N));
+    }
+  }
+}
+
+// An orthonormal basis T (columns, over the kept coordinates) of the contacts' tangent space:
+// the changes the linearised constraints allow (C dz = 0), with the positions set aside free to
+// take up what they can (a rolling disk's height follows its lean).
+MatX contact_tangent(const ModalEquations& equations, const std::vector<Eigen::Index>& kept) {
+  const Eigen::Index n = equations.layout().size();
+  const MatX C =
+      jacobian_at_zero([&](const VecOf<Dual>& z) { return equations.constraints<Dual>(z); }, n);
+  const Eigen::JacobiSVD<MatX> svd(C, Eigen::ComputeFullV);
+  const VecX& sigma = svd.singularValues();
+  Eigen::Index rank = 0;
+  while (rank < sigma.size() && sigma(rank) > 1e-10 * std::max(sigma(0), 1.0)) ++rank;
+  const MatX allowed = svd.matrixV().rightCols(n - rank);
+  MatX allowed_kept(static_cast<Eigen::Index>(kept.size()), allowed.cols());
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    allowed_kept.row(static_cast<Eigen::Index>(i)) = allowed.row(kept[i]);
+  }
+  return orthonormal_range(allowed_kept, 1e-10);
+}
+
 }  // namespace
 
 MatX jacobian_at_zero(const std::function<VecOf<Dual>(const VecOf<Dual>&)>& f, Eigen::Index n,
@@ -104,11 +180,6 @@ MatX jacobian_at_zero(const std::function<VecOf<Dual>(const VecOf<Dual>&)>& f, E
 Linearisation linearise(const ModalEquations& equations) {
   const ArticulatedModel& m = equations.model();
   const ModalLayout& layout = equations.layout();
-  if (!m.model.contacts.empty()) {
-    throw NotSteady(
-        "contacts: the modes of bodies that touch planes (rolling, sliding, resting) are not "
-        "computed yet; remove the contacts to get those of the rest");
-  }
   const Eigen::Index n = layout.size();
   if (n == 0) throw NotSteady("joints: nothing can move (every joint is fixed, locked or driven)");
 
@@ -126,6 +197,7 @@ Linearisation linearise(const ModalEquations& equations) {
           ? std::max(1.0, f0.head(layout.position_count).cwiseAbs().maxCoeff())
           : 1.0;
   const double rate_tolerance = 1e-9 * scale * speed_scale;
+  if (!equations.contacts().empty()) check_contacts(equations, speed_scale);
 
   // Step 2: ignorable positions.
   std::vector<bool> kept_row(static_cast<std::size_t>(n), true);
@@ -166,6 +238,9 @@ Linearisation linearise(const ModalEquations& equations) {
   }
   const VecX f_s = rows(f0, result.kept);
   MatX A = rows_and_columns(J, result.kept);
+  const auto ns = static_cast<Eigen::Index>(result.kept.size());
+  result.tangent = equations.contacts().empty() ? MatX(MatX::Identity(ns, ns))
+                                                : contact_tangent(equations, result.kept);
 
   // Step 3: steady? First as an equilibrium, then with the spins, then with the turn about the
   // vertical as well.
@@ -222,7 +297,8 @@ Linearisation linearise(const ModalEquations& equations) {
 
   // The turns that carry the steady motion: each must commute with the motion ([X, f] = 0),
   // or the frame that moves with it would see the equations change.
-  std::vector<Eigen::Index> orbit_columns;
+  std::vector<VecX> orbit;
+  result.symmetry_rates.resize(0);
   for (std::size_t i = 0; i < used.size(); ++i) {
     const double rate = c(static_cast<Eigen::Index>(i));
     if (std::abs(rate) * scale <= rate_tolerance) continue;
@@ -234,26 +310,49 @@ Linearisation linearise(const ModalEquations& equations) {
           "not a steady motion",
           candidates[used[i]].description, rate));
     }
+    const VecX X_s = rows(X0, result.kept);
+    if (!in_span(result.tangent, X_s)) {
+      throw NotSteady(fmt::format(
+          "the initial state turns as {} at {:.6g} rad/s, but the contacts do not allow that "
+          "turn: not a steady motion",
+          candidates[used[i]].description, rate));
+    }
     result.symmetries.push_back(candidates[used[i]]);
+    result.symmetry_rates.conservativeResize(result.symmetry_rates.size() + 1);
+    result.symmetry_rates(result.symmetry_rates.size() - 1) = rate;
     A -= rate * rows_and_columns(DX, result.kept);
-    orbit_columns.push_back(static_cast<Eigen::Index>(i));
+    orbit.push_back(X_s);
   }
-  result.symmetry_rates.resize(static_cast<Eigen::Index>(result.symmetries.size()));
-  const auto ns = static_cast<Eigen::Index>(result.kept.size());
-  result.orbit.resize(ns, static_cast<Eigen::Index>(orbit_columns.size()));
-  for (std::size_t i = 0; i < orbit_columns.size(); ++i) {
-    const auto column = static_cast<Eigen::Index>(i);
-    result.symmetry_rates(column) = c(orbit_columns[i]);
-    result.orbit.col(column) =
-        rows(fields[used[static_cast<std::size_t>(orbit_columns[i])]].first, result.kept);
+  // The turns the state does not move along but that carry its motion over unchanged (a rolling
+  // wheel's heading, a hanging body's turn about the vertical): the steady motions they reach
+  // are a neutral family, which would show as a drift (a repeated zero) if left in.
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto& [X0, DX] = fields[i];
+    const VecX X_s = rows(X0, result.kept);
+    if (X_s.norm() <= tolerance || !in_span(result.tangent, X_s)) continue;
+    if (rows(J * X0 - DX * f0, result.kept).cwiseAbs().maxCoeff() > rate_tolerance) continue;
+    MatX spanned(ns, static_cast<Eigen::Index>(orbit.size()));
+    for (std::size_t j = 0; j < orbit.size(); ++j) {
+      spanned.col(static_cast<Eigen::Index>(j)) = orbit[j];
+    }
+    if (!orbit.empty() && in_span(orthonormal_range(spanned, 1e-9), X_s)) continue;
+    result.neutral_symmetries.push_back(candidates[i]);
+    orbit.push_back(X_s);
+  }
+  result.orbit.resize(ns, static_cast<Eigen::Index>(orbit.size()));
+  for (std::size_t j = 0; j < orbit.size(); ++j) {
+    result.orbit.col(static_cast<Eigen::Index>(j)) = orbit[j];
   }
   result.A = A;
 
-  // Step 4: the quotient by the directions along the orbit (with none, Q is the identity).
+  // Step 4: the quotient, within the contacts' tangent space T, by the directions along the
+  // orbit (with neither, Q is the identity): with O = T^T orbit = [P' Q'] R, P = T P', Q = T Q'.
+  const Eigen::Index dimension = result.tangent.cols();
+  const MatX along = result.tangent.transpose() * result.orbit;
   const MatX basis =
-      Eigen::HouseholderQR<MatX>(result.orbit).householderQ() * MatX::Identity(ns, ns);
-  result.orbit_basis = basis.leftCols(result.orbit.cols());
-  result.quotient = basis.rightCols(ns - result.orbit.cols());
+      Eigen::HouseholderQR<MatX>(along).householderQ() * MatX::Identity(dimension, dimension);
+  result.orbit_basis = result.tangent * basis.leftCols(along.cols());
+  result.quotient = result.tangent * basis.rightCols(dimension - along.cols());
   return result;
 }
 

@@ -16,22 +16,18 @@
 // 4. The linearisation is then A = J - sum_i c_i dX_i/dz: the equations seen from a frame that
 //    moves with the steady motion, so A is constant. Directions along which the motion is only
 //    turned (X_i) are a neutral family of the same steady motion; they are taken out (the
-//    quotient), so a change of spin is not mistaken for a growing drift.
+//    quotient), so a change of spin is not mistaken for a growing drift. So are the turns the
+//    state does not move along that carry its motion over unchanged (a rolling wheel's heading).
+// With contacts touching (modal_contacts.hpp), the modes are those on the constraints' tangent
+// space T, which the flow keeps (A T in T): the quotient is taken within it.
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "tumble/modes/modal_equations.hpp"
+#include "tumble/modes/not_steady.hpp"
 
 namespace tumble {
-
-// The initial state is neither an equilibrium nor a steady motion (or the model is one a
-// linearisation does not cover).
-class NotSteady : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct Linearisation {
   std::vector<ModalCoordinate> coordinates;  // the ones kept, in z's order
@@ -41,9 +37,13 @@ struct Linearisation {
   MatX A;                                    // d(ds/dt)/ds, s the kept coordinates
   std::vector<Symmetry> symmetries;          // the steady motion's turns (none: an equilibrium)
   VecX symmetry_rates;                       // c_i: rad/s
-  MatX orbit;                 // columns: the directions, in s, along which the motion only turns
-  MatX orbit_basis;           // P: an orthonormal basis of their span
-  MatX quotient;              // Q: one of the rest; A's modes are those of Q^T A Q
+  // Turns the state does not move along that leave its motion as it is (a rolling wheel's
+  // heading): taken out with the orbit, at no rate.
+  std::vector<Symmetry> neutral_symmetries;
+  MatX tangent;      // T: an orthonormal basis of the changes of s the contacts allow (all: I)
+  MatX orbit;        // columns: the directions, in s, along which the motion only turns (or could)
+  MatX orbit_basis;  // P: an orthonormal basis of their span
+  MatX quotient;     // Q: one of the rest of T; A's modes are those of Q^T A Q
   double largest_rate = 0.0;  // the largest rate of s that the steadiness leaves (round-off)
   bool equilibrium() const { return symmetries.empty(); }
 };

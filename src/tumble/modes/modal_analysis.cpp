@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -15,8 +16,11 @@ namespace {
 using Complex = std::complex<double>;
 
 // The eigenvector over s from one of Q^T A Q: v = Q v_q + P b, where P spans the orbit and
-// (P^T A P - lambda) b = -P^T A Q v_q (the orbit is invariant under A).
-Eigen::VectorXcd full_shape(const Linearisation& lin, const Eigen::VectorXcd& v_q, Complex lambda) {
+// (P^T A P - lambda) b = -P^T A Q v_q (the orbit is invariant under A). Where lambda is an
+// eigenvalue of P^T A P as well (to `tol`: a neutral mode, whose change only moves the state
+// along the orbit, at a new rate), there is no such b: the shape is the change, Q v_q.
+Eigen::VectorXcd full_shape(const Linearisation& lin, const Eigen::VectorXcd& v_q, Complex lambda,
+                            double tol) {
   const MatX& Q = lin.quotient;
   Eigen::VectorXcd v = Q.cast<Complex>() * v_q;
   const MatX& P = lin.orbit_basis;
@@ -25,18 +29,23 @@ Eigen::VectorXcd full_shape(const Linearisation& lin, const Eigen::VectorXcd& v_
   const Eigen::MatrixXcd block = (P.transpose() * lin.A * P).cast<Complex>() -
                                  lambda * Eigen::MatrixXcd::Identity(orbit, orbit);
   const Eigen::VectorXcd coupling = (P.transpose() * lin.A * Q).cast<Complex>() * v_q;
-  const Eigen::FullPivLU<Eigen::MatrixXcd> lu(block);
-  if (lu.isInvertible()) v -= P.cast<Complex>() * lu.solve(coupling);
+  const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(block, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  if (svd.singularValues()(orbit - 1) > tol) v -= P.cast<Complex>() * svd.solve(coupling);
   return v;
 }
 
 void normalise(const Linearisation& lin, Eigen::VectorXcd& shape) {
   Eigen::Index best = 0;
   double largest = -1.0;
-  bool positions = false;
+  // By the largest position, unless the mode moves no position (a change of speed alone, as
+  // along a family of steady motions): its positions are then round-off.
+  double position_size = 0.0;
   for (std::size_t i = 0; i < lin.coordinates.size(); ++i) {
-    positions = positions || !lin.coordinates[i].is_speed;
+    if (!lin.coordinates[i].is_speed) {
+      position_size = std::max(position_size, std::abs(shape(static_cast<Eigen::Index>(i))));
+    }
   }
+  const bool positions = position_size > 1e-9 * shape.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < shape.size(); ++i) {
     if (positions && lin.coordinates[static_cast<std::size_t>(i)].is_speed) continue;
     if (std::abs(shape(i)) > largest) {
@@ -156,7 +165,7 @@ ModalAnalysis analyse_modes(const Linearisation& lin) {
       } else {
         mode.kind = mu.imag() > 0.0 ? Mode::Kind::Oscillating : Mode::Kind::Neutral;
       }
-      mode.shape = full_shape(lin, vectors.col(j), lambdas(j));
+      mode.shape = full_shape(lin, vectors.col(j), lambdas(j), tol);
       normalise(lin, mode.shape);
       if (defective && mu.real() == 0.0 && !drifts) {
         drifts = true;

@@ -1,9 +1,12 @@
 #include "tumble/modes/modal_equations.hpp"
 
 #include <cmath>
+
+#include <Eigen/Eigenvalues>
 #include <stdexcept>
 
 #include "tumble/math/rotation.hpp"
+#include "tumble/modes/not_steady.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
@@ -106,8 +109,19 @@ VecOf<Dual> solve_mass(const MX<Dual>& M, const VecOf<Dual>& b) {
   return x;
 }
 
+// The values of a matrix without their derivatives.
+MatX values_of(const MatX& A) {
+  return A;
+}
+MatX values_of(const MX<Dual>& A) {
+  return A.unaryExpr([](const Dual& x) { return x.value(); });
+}
+
+}  // namespace
+
+// Per tree joint: its child's pose and motion.
 template <typename S>
-struct Kinematics {
+struct ModalKinematics {
   M3<S> R_WC;
   V3<S> r_G, omega, v_G;  // world
   V3<S> alpha0, a0;       // the accelerations with every joint's speeds' rates zero
@@ -115,8 +129,6 @@ struct Kinematics {
   VecOf<S> u;             // the joint's speeds (tree convention)
   S angle = S(0.0);       // a hinge's angle (tree convention)
 };
-
-}  // namespace
 
 ModalEquations::ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout,
                                VecX y0, double t0)
@@ -132,33 +144,40 @@ ModalEquations::ModalEquations(std::shared_ptr<const ArticulatedModel> model, Mo
       v_G0_W_[k] = R_PC0_[k] * y0_.segment<3>(joint.v + 3);
     }
   }
+  // Unknown accelerations: the speeds of the joints that are neither held nor driven.
+  unknown_.assign(n, -1);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (model_->prescribed(k, t0_)) continue;
+    unknown_[k] = unknowns_;
+    unknowns_ += model_->tree[k].nv;
+  }
+  if (!model_->model.contacts.empty()) {
+    const std::vector<ModalKinematics<double>> kin = kinematics<double>(VecX::Zero(layout_.size()));
+    const std::size_t bodies = model_->model.bodies.size();
+    std::vector<Vec3> r_G_W(bodies, Vec3::Zero());
+    std::vector<Mat3> R_WB(bodies, Mat3::Identity());
+    for (std::size_t k = 0; k < n; ++k) {
+      r_G_W[model_->tree[k].child] = kin[k].r_G;
+      R_WB[model_->tree[k].child] = kin[k].R_WC;
+    }
+    contacts_ = touching_contacts(model_->model, r_G_W, R_WB);
+  }
 }
 
+// Forward: poses, velocities and the velocity terms of the accelerations, parents first.
 template <typename S>
-VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
+std::vector<ModalKinematics<S>> ModalEquations::kinematics(const VecOf<S>& z) const {
   const ArticulatedModel& m = *model_;
-  const Model& model = m.model;
   const std::size_t n = m.tree.size();
-  std::vector<Kinematics<S>> kin(n);
-
-  // Unknown accelerations: the speeds of the joints that are neither held nor driven.
-  std::vector<Eigen::Index> unknown(n, -1);
-  Eigen::Index unknowns = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (m.prescribed(k, t0_)) continue;
-    unknown[k] = unknowns;
-    unknowns += m.tree[k].nv;
-  }
-
-  // Forward: poses, velocities and the velocity terms of the accelerations, parents first.
+  std::vector<ModalKinematics<S>> kin(n);
   for (std::size_t k = 0; k < n; ++k) {
     const TreeJoint& joint = m.tree[k];
-    Kinematics<S>& c = kin[k];
+    ModalKinematics<S>& c = kin[k];
     M3<S> R_WP = M3<S>::Identity();
     V3<S> r_P = V3<S>::Zero(), omega_P = V3<S>::Zero(), v_P = V3<S>::Zero();
     V3<S> alpha_P = V3<S>::Zero(), a_P = V3<S>::Zero();
     if (joint.parent != kGround) {
-      const Kinematics<S>& p = kin[m.slot_of_body[static_cast<std::size_t>(joint.parent)]];
+      const ModalKinematics<S>& p = kin[m.slot_of_body[static_cast<std::size_t>(joint.parent)]];
       R_WP = p.R_WC;
       r_P = p.r_G;
       omega_P = p.omega;
@@ -169,8 +188,8 @@ VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
     const Eigen::Index po = layout_.position_offset[k];
     const Eigen::Index so = layout_.speed_offset[k];
     const S sign(layout_.sign[k]);
-    M3<S> R_PC;
-    V3<S> p_PC_P;
+    M3<S> R_PC = M3<S>::Identity();
+    V3<S> p_PC_P = V3<S>::Zero();
     c.u = y0_.segment(joint.v, joint.nv).cast<S>();
     switch (joint.type) {
       case JointType::Hinge:
@@ -228,11 +247,22 @@ VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
     c.a0 = a_P + alpha_P.cross(d) + omega_P.cross(omega_P.cross(d)) + omega_P.cross(v_rel) +
            c.omega.cross(v_rel);
   }
+  return kin;
+}
+
+template <typename S>
+VecOf<S> ModalEquations::evaluate(const VecOf<S>& z, std::vector<Vec3>* contact_forces_W) const {
+  const ArticulatedModel& m = *model_;
+  const Model& model = m.model;
+  const std::size_t n = m.tree.size();
+  const std::vector<ModalKinematics<S>> kin = kinematics<S>(z);
+  const std::vector<Eigen::Index>& unknown = unknown_;
+  const Eigen::Index unknowns = unknowns_;
 
   // Loads on each body: force at the COM and moment about it, world axes.
   const std::size_t bodies = model.bodies.size();
   std::vector<V3<S>> F(bodies, V3<S>::Zero()), M(bodies, V3<S>::Zero());
-  const auto slot = [&](int body) -> const Kinematics<S>& {
+  const auto slot = [&](int body) -> const ModalKinematics<S>& {
     return kin[m.slot_of_body[static_cast<std::size_t>(body)]];
   };
   for (std::size_t b = 0; b < bodies; ++b) {
@@ -240,7 +270,7 @@ VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
   }
   for (const AppliedLoad& load : model.loads) {
     if (!load.active_at(t0_)) continue;
-    const Kinematics<S>& c = slot(static_cast<int>(load.body));
+    const ModalKinematics<S>& c = slot(static_cast<int>(load.body));
     const V3<S> value_W =
         load.body_frame ? V3<S>(c.R_WC * load.value.cast<S>()) : V3<S>(load.value.cast<S>());
     if (load.kind == AppliedLoad::Kind::Torque) {
@@ -263,7 +293,7 @@ VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
       v_W = V3<S>::Zero();
       return;
     }
-    const Kinematics<S>& c = slot(body);
+    const ModalKinematics<S>& c = slot(body);
     p_W = c.R_WC * p_B.cast<S>();
     r_W = c.r_G + p_W;
     v_W = c.v_G + c.omega.cross(p_W);
@@ -323,7 +353,7 @@ VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
   }
   std::vector<M3X<S>> J_v(n), J_w(n);
   for (std::size_t kb = 0; kb < n; ++kb) {
-    const Kinematics<S>& c = kin[kb];
+    const ModalKinematics<S>& c = kin[kb];
     const RigidBody& body = model.bodies[m.tree[kb].child];
     J_v[kb] = M3X<S>::Zero(3, unknowns);
     J_w[kb] = M3X<S>::Zero(3, unknowns);
@@ -345,14 +375,70 @@ VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
     force += J_v[kb].transpose() * (F[b] - body.mass * c.a0) +
              J_w[kb].transpose() * (M[b] - I_W * c.alpha0 - c.omega.cross(I_W * c.omega));
   }
-  const VecOf<S> u_dot = unknowns > 0 ? solve_mass(mass, force) : VecOf<S>(0);
+  VecOf<S> u_dot = unknowns > 0 ? solve_mass(mass, force) : VecOf<S>(0);
+
+  // The contacts' forces lambda hold their rows: G u' + kappa = 0, G the rows' velocity per unit
+  // of the unknown speeds (the body's point: J_v - [p]x J_w) and kappa their acceleration with
+  // u' = 0 (a_G + alpha x p + omega x p'). With u' = M^-1 (Q + G^T lambda):
+  // G M^-1 G^T lambda = -kappa - G M^-1 Q.
+  Eigen::Index rows = 0;
+  for (const ModalContact& contact : contacts_) rows += contact.rows();
+  if (rows > 0) {
+    MX<S> G = MX<S>::Zero(rows, unknowns);
+    VecOf<S> kappa(rows);
+    Eigen::Index row = 0;
+    for (const ModalContact& held : contacts_) {
+      const PlaneContact& contact = model.contacts[held.contact];
+      const auto kb = static_cast<std::size_t>(m.slot_of_body[contact.body]);
+      const ModalKinematics<S>& c = kin[kb];
+      V3<S> p_W, p_rate_W;
+      contact_offset<S>(held, contact.normal_W, c.R_WC, c.omega, p_W, p_rate_W);
+      const M3X<S> G_point = J_v[kb] - hat_of<S>(p_W) * J_w[kb];
+      const V3<S> a_point = c.a0 + c.alpha0.cross(p_W) + c.omega.cross(p_rate_W);
+      if (held.rolls) {
+        G.middleRows(row, 3) = G_point;
+        kappa.template segment<3>(row) = a_point;
+      } else {
+        const V3<S> n_W = contact.normal_W.cast<S>();
+        G.row(row) = n_W.transpose() * G_point;
+        kappa(row) = n_W.dot(a_point);
+      }
+      row += held.rows();
+    }
+    MX<S> response(unknowns, rows);  // M^-1 G^T
+    for (Eigen::Index j = 0; j < rows; ++j) {
+      response.col(j) = solve_mass(mass, VecOf<S>(G.row(j).transpose()));
+    }
+    const MX<S> schur = G * response;
+    // Rows the joints already hold (a point on a hinge's axis) leave it singular.
+    const Eigen::SelfAdjointEigenSolver<MatX> definite(values_of(schur));
+    if (definite.eigenvalues()(0) <= 1e-12 * definite.eigenvalues()(rows - 1)) {
+      throw NotSteady(
+          "contacts: a touching point's motion is already held by the joints (or by another "
+          "contact): its force is not determined, and a linearisation needs it");
+    }
+    const VecOf<S> lambda = solve_mass(schur, VecOf<S>(-kappa - G * u_dot));
+    u_dot += response * lambda;
+    if (contact_forces_W != nullptr) {
+      contact_forces_W->clear();
+      row = 0;
+      for (const ModalContact& held : contacts_) {
+        const Vec3& n_W = model.contacts[held.contact].normal_W;
+        contact_forces_W->push_back(
+            held.rolls
+                ? Vec3(value_of(lambda(row)), value_of(lambda(row + 1)), value_of(lambda(row + 2)))
+                : Vec3(value_of(lambda(row)) * n_W));
+        row += held.rows();
+      }
+    }
+  }
 
   VecOf<S> z_dot(z.size());
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Index po = layout_.position_offset[k];
     const Eigen::Index so = layout_.speed_offset[k];
     if (po < 0) continue;
-    const Kinematics<S>& c = kin[k];
+    const ModalKinematics<S>& c = kin[k];
     const S sign(layout_.sign[k]);
     const auto rates_of = [&](Eigen::Index count) { return u_dot.segment(unknown[k], count); };
     switch (m.tree[k].type) {
@@ -377,6 +463,43 @@ VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
     }
   }
   return z_dot;
+}
+
+template <typename S>
+VecOf<S> ModalEquations::rates(const VecOf<S>& z) const {
+  return evaluate<S>(z, nullptr);
+}
+
+std::vector<Vec3> ModalEquations::contact_forces() const {
+  std::vector<Vec3> forces;
+  evaluate<double>(VecX::Zero(layout_.size()), &forces);
+  return forces;
+}
+
+template <typename S>
+VecOf<S> ModalEquations::constraints(const VecOf<S>& z) const {
+  const ArticulatedModel& m = *model_;
+  const std::vector<ModalKinematics<S>> kin = kinematics<S>(z);
+  Eigen::Index rows = 0;
+  for (const ModalContact& contact : contacts_) rows += 1 + contact.rows();
+  VecOf<S> values(rows);
+  Eigen::Index row = 0;
+  for (const ModalContact& held : contacts_) {
+    const PlaneContact& contact = m.model.contacts[held.contact];
+    const ModalKinematics<S>& c = kin[static_cast<std::size_t>(m.slot_of_body[contact.body])];
+    V3<S> p_W, p_rate_W;
+    contact_offset<S>(held, contact.normal_W, c.R_WC, c.omega, p_W, p_rate_W);
+    const V3<S> n_W = contact.normal_W.cast<S>();
+    values(row++) = n_W.dot(c.r_G + p_W - contact.point_W.cast<S>());
+    const V3<S> v_point = c.v_G + c.omega.cross(p_W);
+    if (held.rolls) {
+      values.template segment<3>(row) = v_point;
+    } else {
+      values(row) = n_W.dot(v_point);
+    }
+    row += held.rows();
+  }
+  return values;
 }
 
 template <typename S>
@@ -426,6 +549,8 @@ VecOf<S> ModalEquations::symmetry_field(const Symmetry& symmetry, const VecOf<S>
 
 template VecOf<double> ModalEquations::rates<double>(const VecOf<double>&) const;
 template VecOf<Dual> ModalEquations::rates<Dual>(const VecOf<Dual>&) const;
+template VecOf<double> ModalEquations::constraints<double>(const VecOf<double>&) const;
+template VecOf<Dual> ModalEquations::constraints<Dual>(const VecOf<Dual>&) const;
 template VecOf<double> ModalEquations::symmetry_field<double>(const Symmetry&,
                                                               const VecOf<double>&) const;
 template VecOf<Dual> ModalEquations::symmetry_field<Dual>(const Symmetry&,

@@ -15,8 +15,12 @@
 // passes that integrate the same model, which a test holds to the same accelerations.
 //
 // What acts: gravity, the loads active at t0, linear springs and dampers, torsional springs and
-// dampers, the motors' efforts at t0; joints held or driven at t0 keep their speed. Contacts,
-// impulses and later schedule changes are not part of a linearisation about t0.
+// dampers, the motors' efforts at t0; joints held or driven at t0 keep their speed. Contacts
+// touching at t0 hold their point (modal_contacts.hpp): rolling, or frictionless on the plane, by
+// the forces lambda that keep the constraints' accelerations zero (G u' + kappa = 0), found from
+// the Schur complement of the mass matrix, G M^-1 G^T lambda = -kappa - G M^-1 Q. The flow keeps
+// the constraints, so the state stays on them; linearise() takes the modes on their tangent
+// space. Impulses and later schedule changes are not part of a linearisation about t0.
 //
 // A rotation's coordinates are a small turn r about the body's axes, R = R0 exp([r]x), taken to
 // first order (R0 (1 + [r]x)): a linearisation differentiates once, at r = 0, where the two have
@@ -29,6 +33,7 @@
 // After Eigen/Dense, which the AutoDiff module needs first.
 #include <unsupported/Eigen/AutoDiff>
 
+#include "tumble/modes/modal_contacts.hpp"
 #include "tumble/modes/modal_coordinates.hpp"
 
 namespace tumble {
@@ -47,6 +52,9 @@ struct Symmetry {
   std::string description;     // "a turn of the whole about the vertical", ...
 };
 
+template <typename Scalar>
+struct ModalKinematics;
+
 class ModalEquations {
  public:
   ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout, VecX y0,
@@ -60,11 +68,25 @@ class ModalEquations {
   // dz/dt at z.
   template <typename Scalar>
   VecOf<Scalar> rates(const VecOf<Scalar>& z) const;
+  // The contacts touching at t0, which the equations hold.
+  const std::vector<ModalContact>& contacts() const { return contacts_; }
+  // Per held contact: its point's height over the plane (m), then the point's velocity (world,
+  // m/s; a frictionless contact: its normal component). Zero on the constraints.
+  template <typename Scalar>
+  VecOf<Scalar> constraints(const VecOf<Scalar>& z) const;
+  // Per held contact at z = 0: the plane's force on the body (world, N).
+  std::vector<Vec3> contact_forces() const;
   // The rates of z while the state turns along `symmetry` at unit rate.
   template <typename Scalar>
   VecOf<Scalar> symmetry_field(const Symmetry& symmetry, const VecOf<Scalar>& z) const;
 
  private:
+  template <typename Scalar>
+  std::vector<ModalKinematics<Scalar>> kinematics(const VecOf<Scalar>& z) const;
+  // dz/dt, and the contacts' forces into `contact_forces_W` where given.
+  template <typename Scalar>
+  VecOf<Scalar> evaluate(const VecOf<Scalar>& z, std::vector<Vec3>* contact_forces_W) const;
+
   std::shared_ptr<const ArticulatedModel> model_;
   ModalLayout layout_;
   VecX y0_;
@@ -72,6 +94,10 @@ class ModalEquations {
   std::vector<Mat3> R_PC0_;  // per tree joint: the child's orientation relative to its parent at y0
   std::vector<Vec3>
       v_G0_W_;  // per tree joint: the child's COM velocity at y0 (free joints' speeds)
+  // Per tree joint: where its speeds' rates start among the unknowns (-1: held or driven).
+  std::vector<Eigen::Index> unknown_;
+  Eigen::Index unknowns_ = 0;
+  std::vector<ModalContact> contacts_;
 };
 
 }  // namespace tumble

@@ -19,6 +19,7 @@ void bind_errors(py::module_& m);
 void bind_model(py::module_& m);     // load, Model, RunOutput, State
 void bind_sweep(py::module_& m);     // sweep, find
 void bind_inertia(py::module_& m);   // inertia
+void bind_modes(py::module_& m);     // modes
 void bind_commands(py::module_& m);  // run_cli: `python3 -m tumble`
 
 // A scenario given as (source, is_text, name): a file's path, or YAML text that `name` names in

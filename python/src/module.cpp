@@ -24,5 +24,6 @@ PYBIND11_MODULE(_tumble, m) {
   tumble::python::bind_model(m);
   tumble::python::bind_sweep(m);
   tumble::python::bind_inertia(m);
+  tumble::python::bind_modes(m);
   tumble::python::bind_commands(m);
 }

@@ -10,11 +10,19 @@
 
 The scenarios are the command line's (docs/scenario.md), and each function means what its
 command does: load + Model.run is ``tumble run``, sweep and find ``tumble sweep`` and ``tumble
-find``, inertia ``tumble inertia``; ``python3 -m tumble`` is the command line itself.
+find``, inertia ``tumble inertia``, modes ``tumble modes``; ``python3 -m tumble`` is the command
+line itself.
 """
 
-from tumble._errors import FindError, IntegrationError, ScenarioError, TumbleError
+from tumble._errors import (
+    FindError,
+    IntegrationError,
+    NotSteadyError,
+    ScenarioError,
+    TumbleError,
+)
 from tumble._model import Model, Result, State, load
+from tumble._modes import Modes, modes
 from tumble._studies import BodyInertia, FindResult, SweepResult, find, inertia, sweep
 from tumble._tumble import __version__
 
@@ -24,6 +32,8 @@ __all__ = [
     "FindResult",
     "IntegrationError",
     "Model",
+    "Modes",
+    "NotSteadyError",
     "Result",
     "ScenarioError",
     "State",
@@ -33,5 +43,6 @@ __all__ = [
     "find",
     "inertia",
     "load",
+    "modes",
     "sweep",
 ]

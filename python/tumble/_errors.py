@@ -43,3 +43,9 @@ class FindError(TumbleError):
         self.same_at_both_ends = same_at_both_ends
         self.status = status
         self.run_message = run_message
+
+
+class NotSteadyError(TumbleError, ValueError):
+    """tumble.modes: the initial state is neither an equilibrium nor a steady motion, or has a
+    contact that has no linearisation (the command line's exit status 6); str(error) says which
+    rate is off and by how much, or which contact and why."""

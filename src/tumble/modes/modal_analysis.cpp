@@ -115,6 +115,18 @@ std::string kind_name(Mode::Kind kind) {
   return "neutral";
 }
 
+std::string verdict_name(ModalAnalysis::Verdict verdict) {
+  switch (verdict) {
+    case ModalAnalysis::Verdict::Stable:
+      return "stable";
+    case ModalAnalysis::Verdict::Marginal:
+      return "marginal";
+    case ModalAnalysis::Verdict::Unstable:
+      return "unstable";
+  }
+  return "stable";
+}
+
 ModalAnalysis analyse_modes(const Linearisation& lin) {
   const MatX Aq = lin.quotient.transpose() * lin.A * lin.quotient;
   const Eigen::EigenSolver<MatX> eigen(Aq);

@@ -46,6 +46,9 @@ struct ModalAnalysis {
   double tolerance = 0.0;         // |sigma| and |lambda| below this count as zero, 1/s
 };
 
+// "stable", "marginal", "unstable".
+std::string verdict_name(ModalAnalysis::Verdict verdict);
+
 ModalAnalysis analyse_modes(const Linearisation& linearisation);
 
 }  // namespace tumble

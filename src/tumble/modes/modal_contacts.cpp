@@ -55,6 +55,16 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       const Vec3 n_B = R.transpose() * contact.normal_W;
       double tilt = 0.0;
       const Vec3 u_B = lowest_in_plane(n_B, tilt);
+      // A cone on its apex, the base's rim off the plane (a top, upright or leaning): a point of
+      // the body, whatever the tilt.
+      const bool apex_down =
+          ends.radius[0] == 0.0 && !ends.one_rim && height_of(ends.centre_B[0]) <= within;
+      if (apex_down && height_of(rim_point(ends, 1, u_B)) > within) {
+        held.point = ModalContact::Point::Material;
+        held.p_B = ends.centre_B[0];
+        touching.push_back(held);
+        continue;
+      }
       if (tilt <= 1e-9) {
         throw NotSteady(fmt::format(
             "contact {}: the body lies flat on an end face, where a small tilt moves the plane's "

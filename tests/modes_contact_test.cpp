@@ -5,29 +5,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 
+#include "modes_checks.hpp"
 #include "run_tumble.hpp"
 #include "scenario_run.hpp"
+#include "test_files.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble {
 namespace {
 
-constexpr double kRelative = 1e-9;
-
-std::string example(const std::string& name) {
-  return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + name;
-}
-
-std::string text_of(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::example;
+using test::expect_relative;
 
 // `text` with its first `from` replaced by `to` (which must be there).
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -40,10 +30,6 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 ScenarioModes modes_of_text(const std::string& yaml,
                             const std::vector<ParameterOverride>& sets = {}) {
   return modes_of_scenario(load_scenario_text(yaml, "inline.yaml", sets));
-}
-
-void expect_relative(double actual, double expected) {
-  EXPECT_NEAR(actual, expected, kRelative * std::abs(expected)) << "expected " << expected;
 }
 
 std::size_t count_of(const ModalAnalysis& analysis, Mode::Kind kind) {
@@ -66,7 +52,7 @@ void expect_tangent_space_kept(const Linearisation& lin) {
 // another speed).
 TEST(ModesContact, RollingDiskWobblesAboveItsCriticalSpinAndFallsBelow) {
   const double M = 2, r = 0.3, g = 9.81;
-  const std::string disk = text_of(example("modes/rolling_disk.yaml"));
+  const std::string disk = test::read_file(example("modes/rolling_disk.yaml"));
   for (const bool ring : {false, true}) {
     const double I_a = ring ? M * r * r : M * r * r / 2;
     const double I_d = ring ? M * r * r / 2 : M * r * r / 4;
@@ -101,7 +87,7 @@ TEST(ModesContact, RollingDiskWobblesAboveItsCriticalSpinAndFallsBelow) {
 // on ice its COM only moves vertically, I_d phi'' = M g r phi (to first order).
 TEST(ModesContact, DiskOnItsRimFallsAboutTheContactOrItsCentre) {
   const double M = 2, r = 0.3, g = 9.81, I_d = M * r * r / 4;
-  const std::string disk = text_of(example("modes/rolling_disk.yaml"));
+  const std::string disk = test::read_file(example("modes/rolling_disk.yaml"));
   for (const bool ice : {false, true}) {
     const std::string yaml = ice ? replaced(disk, "friction: 0.8", "friction: 0") : disk;
     const ScenarioModes modes = modes_of_text(yaml, {{"Omega", "0"}});
@@ -226,7 +212,7 @@ TEST(ModesContact, CoinRollingInACircleWobblesAsItsIntegratedMotionDoes) {
   const double r = 0.0125, theta = 15.0 * std::numbers::pi / 180.0, rho = 0.1, g = 9.81;
   const double Omega = std::sqrt(g * std::tan(theta) / (1.5 * rho + 0.25 * r * std::sin(theta)));
   const double s = -Omega * (rho + r * std::sin(theta)) / r;
-  const ScenarioModes modes = modes_of_scenario(load_scenario(example("rolling_coin.yaml"), {}));
+  const ScenarioModes modes = test::modes_of(example("rolling_coin.yaml"));
   const Linearisation& lin = modes.linearisation;
   ASSERT_EQ(lin.symmetries.size(), 2U);
   expect_relative(lin.symmetry_rates(0), s);
@@ -261,7 +247,7 @@ TEST(ModesContact, RefusesWhatHasNoLinearisationAndSaysWhy) {
   const auto expect_refused = [](const std::string& path, const std::string& why,
                                  const std::vector<ParameterOverride>& sets = {}) {
     try {
-      modes_of_scenario(load_scenario(path, sets));
+      test::modes_of(path, sets);
       ADD_FAILURE() << path << ": no NotSteady";
     } catch (const NotSteady& e) {
       EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
@@ -271,7 +257,7 @@ TEST(ModesContact, RefusesWhatHasNoLinearisationAndSaysWhy) {
   expect_refused(example("ramp_race.yaml"), "rests along a line of its side");
   expect_refused(example("backspin_disk.yaml"), "slides at");
   // The coin needs mu >= 0.18 to hold its circle.
-  const std::string coin = text_of(example("rolling_coin.yaml"));
+  const std::string coin = test::read_file(example("rolling_coin.yaml"));
   try {
     modes_of_text(replaced(coin, "friction: 0.5", "friction: 0.1"));
     ADD_FAILURE() << "no NotSteady";
@@ -281,9 +267,7 @@ TEST(ModesContact, RefusesWhatHasNoLinearisationAndSaysWhy) {
 }
 
 TEST(ModesContact, CommandWritesTheRollingDisksModes) {
-  const std::filesystem::path out =
-      std::filesystem::temp_directory_path() / "tumble_modes_contact_cli";
-  std::filesystem::remove_all(out);
+  const std::filesystem::path out = test::fresh_test_dir("ModesContact", "Command");
   const test::CommandResult result =
       test::run_tumble("modes " + example("modes/rolling_disk.yaml") + " --out " + out.string());
   EXPECT_EQ(result.status, 0) << result.out;

@@ -9,7 +9,9 @@
 #include <fstream>
 #include <numbers>
 
+#include "modes_checks.hpp"
 #include "run_tumble.hpp"
+#include "test_files.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 #include "tumble/multibody/articulated_formulation.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
@@ -17,15 +19,17 @@
 namespace tumble {
 namespace {
 
-constexpr double kRelative = 1e-9;
+using test::example;
+using test::expect_relative;
+using test::modes_of;
 
-std::string example(const std::string& name) {
-  return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + name;
-}
-
-ScenarioModes modes_of(const std::string& path, const std::vector<ParameterOverride>& sets = {}) {
-  return modes_of_scenario(load_scenario(path, sets));
-}
+// examples/modes/inverted_mast.yaml: a cylinder hinged at its base O, held up by a torsional
+// spring of k_ratio times the critical stiffness M g length/2.
+struct Mast {
+  static constexpr double M = 3, length = 2, r = 0.01, g = 9.81;
+  static constexpr double I_O = M * (3 * r * r + length * length) / 12 + M * length * length / 4;
+  static constexpr double critical = M * g * length / 2;  // N m/rad
+};
 
 // The mode of the given kind with the largest |lambda| (or the first), failing if none.
 const Mode& first_of(const ModalAnalysis& analysis, Mode::Kind kind) {
@@ -36,21 +40,15 @@ const Mode& first_of(const ModalAnalysis& analysis, Mode::Kind kind) {
   return analysis.modes.front();
 }
 
-void expect_relative(double actual, double expected) {
-  EXPECT_NEAR(actual, expected, kRelative * std::abs(expected)) << "expected " << expected;
-}
-
 TEST(Modes, InvertedMastStandsWithTheChaptersFrequency) {
-  const double M = 3, length = 2, r = 0.01, g = 9.81;
-  const double I_O = M * (3 * r * r + length * length) / 12 + M * length * length / 4;
   for (const double k_ratio : {2.0, 1.5, 1.01}) {
-    const double k = k_ratio * M * g * length / 2;
+    const double k = k_ratio * Mast::critical;
     const ScenarioModes modes =
         modes_of(example("modes/inverted_mast.yaml"), {{"k_ratio", std::to_string(k_ratio)}});
     ASSERT_EQ(modes.analysis.modes.size(), 1U);
     const Mode& mode = modes.analysis.modes[0];
     EXPECT_EQ(mode.kind, Mode::Kind::Oscillating);
-    expect_relative(mode.natural_frequency, std::sqrt((k - M * g * length / 2) / I_O));
+    expect_relative(mode.natural_frequency, std::sqrt((k - Mast::critical) / Mast::I_O));
     EXPECT_EQ(mode.growth_rate, 0.0);
     EXPECT_EQ(modes.analysis.verdict, ModalAnalysis::Verdict::Stable);
     // The shape: the angle, and the rate a quarter period ahead.
@@ -59,15 +57,14 @@ TEST(Modes, InvertedMastStandsWithTheChaptersFrequency) {
 }
 
 TEST(Modes, InvertedMastFallsBelowTheCriticalStiffness) {
-  const double M = 3, length = 2, r = 0.01, g = 9.81;
-  const double I_O = M * (3 * r * r + length * length) / 12 + M * length * length / 4;
   for (const double k_ratio : {0.9, 0.5, 0.0}) {
-    const double k = k_ratio * M * g * length / 2;
+    const double k = k_ratio * Mast::critical;
     const ScenarioModes modes =
         modes_of(example("modes/inverted_mast.yaml"), {{"k_ratio", std::to_string(k_ratio)}});
     EXPECT_EQ(modes.analysis.verdict, ModalAnalysis::Verdict::Unstable);
     EXPECT_EQ(modes.analysis.deciding_mode, 0U);
-    expect_relative(modes.analysis.modes[0].growth_rate, std::sqrt((M * g * length / 2 - k) / I_O));
+    expect_relative(modes.analysis.modes[0].growth_rate,
+                    std::sqrt((Mast::critical - k) / Mast::I_O));
     EXPECT_NE(modes.analysis.verdict_text.find("mode 1 grows"), std::string::npos);
   }
   // Exactly critical: nothing restores the angle.
@@ -77,17 +74,15 @@ TEST(Modes, InvertedMastFallsBelowTheCriticalStiffness) {
 }
 
 TEST(Modes, DampedMastDecaysWithItsDampingRatio) {
-  const double M = 3, length = 2, r = 0.01, g = 9.81, c = 1.5;
-  const double I_O = M * (3 * r * r + length * length) / 12 + M * length * length / 4;
-  const double k = 2 * M * g * length / 2;
+  const double c = 1.5, k = 2 * Mast::critical;  // the example's k_ratio 2
   const ScenarioModes modes =
       modes_of(example("modes/inverted_mast.yaml"), {{"damping", std::to_string(c)}});
   const Mode& mode = modes.analysis.modes.at(0);
   EXPECT_EQ(mode.kind, Mode::Kind::DampedOscillation);
   // I_O theta'' + c theta' + (k - M g L/2) theta = 0.
-  const double omega_n = std::sqrt((k - M * g * length / 2) / I_O);
+  const double omega_n = std::sqrt((k - Mast::critical) / Mast::I_O);
   expect_relative(mode.natural_frequency, omega_n);
-  expect_relative(mode.damping_ratio, c / (2 * I_O * omega_n));
+  expect_relative(mode.damping_ratio, c / (2 * Mast::I_O * omega_n));
   EXPECT_EQ(modes.analysis.verdict, ModalAnalysis::Verdict::Stable);
 }
 
@@ -314,8 +309,7 @@ TEST(Modes, JacobianAgreesWithCentralDifferences) {
 }
 
 TEST(ModesCommand, WritesTheModesCsvAndThePageAndSaysWhyNot) {
-  const std::filesystem::path out = std::filesystem::temp_directory_path() / "tumble_modes_test";
-  std::filesystem::remove_all(out);
+  const std::filesystem::path out = test::fresh_test_dir("ModesCommand", "WritesTheModesCsv");
   const test::CommandResult ok = test::run_tumble("modes " + example("modes/double_pendulum.yaml") +
                                                   " --animate --out " + out.string());
   ASSERT_EQ(ok.status, 0) << ok.out;

@@ -36,22 +36,22 @@ struct ModalContact {
 std::vector<ModalContact> touching_contacts(const Model& model, const std::vector<Vec3>& r_G_W,
                                             const std::vector<Mat3>& R_WB);
 
-// The offset p_W from the body's COM to the contact point and its rate (world axes), the body
-// turned by R_WB and turning at omega_W.
+// The offset p_GP_W from the body's COM G to the contact point P and its rate (world axes), the
+// body turned by R_WB and turning at omega_W.
 template <typename S>
 void contact_offset(const ModalContact& contact, const Vec3& n_W,
                     const Eigen::Matrix<S, 3, 3>& R_WB, const Eigen::Matrix<S, 3, 1>& omega_W,
-                    Eigen::Matrix<S, 3, 1>& p_W, Eigen::Matrix<S, 3, 1>& p_rate_W) {
+                    Eigen::Matrix<S, 3, 1>& p_GP_W, Eigen::Matrix<S, 3, 1>& p_GP_rate_W) {
   using V3 = Eigen::Matrix<S, 3, 1>;
   using std::sqrt;
   switch (contact.point) {
     case ModalContact::Point::Lowest:
-      p_W = -contact.radius * n_W.cast<S>();
-      p_rate_W = V3::Zero();
+      p_GP_W = -contact.radius * n_W.cast<S>();
+      p_GP_rate_W = V3::Zero();
       return;
     case ModalContact::Point::Material:
-      p_W = R_WB * contact.p_B.cast<S>();
-      p_rate_W = omega_W.cross(p_W);
+      p_GP_W = R_WB * contact.p_B.cast<S>();
+      p_GP_rate_W = omega_W.cross(p_GP_W);
       return;
     case ModalContact::Point::Rim: {
       const V3 n = n_W.cast<S>();
@@ -62,9 +62,9 @@ void contact_offset(const ModalContact& contact, const Vec3& n_W,
       const S length = sqrt(w.squaredNorm());
       const V3 w_unit = w / length;
       const V3 centre_W = R_WB * contact.p_B.cast<S>();
-      p_W = centre_W - contact.radius * w_unit;
-      p_rate_W = omega_W.cross(centre_W) -
-                 contact.radius * (w_rate - w_unit.dot(w_rate) * w_unit) / length;
+      p_GP_W = centre_W - contact.radius * w_unit;
+      p_GP_rate_W = omega_W.cross(centre_W) -
+                    contact.radius * (w_rate - w_unit.dot(w_rate) * w_unit) / length;
       return;
     }
   }

@@ -391,17 +391,19 @@ VecOf<S> ModalEquations::evaluate(const VecOf<S>& z, std::vector<Vec3>* contact_
       const PlaneContact& contact = model.contacts[held.contact];
       const auto kb = static_cast<std::size_t>(m.slot_of_body[contact.body]);
       const ModalKinematics<S>& c = kin[kb];
-      V3<S> p_W, p_rate_W;
-      contact_offset<S>(held, contact.normal_W, c.R_WC, c.omega, p_W, p_rate_W);
-      const M3X<S> G_point = J_v[kb] - hat_of<S>(p_W) * J_w[kb];
-      const V3<S> a_point = c.a0 + c.alpha0.cross(p_W) + c.omega.cross(p_rate_W);
+      V3<S> p_GP_W, p_GP_rate_W;
+      contact_offset<S>(held, contact.normal_W, c.R_WC, c.omega, p_GP_W, p_GP_rate_W);
+      // The body's point P at the contact: its velocity per unit of the speeds (world), and its
+      // acceleration with u' = 0.
+      const M3X<S> J_P = J_v[kb] - hat_of<S>(p_GP_W) * J_w[kb];
+      const V3<S> a_P0 = c.a0 + c.alpha0.cross(p_GP_W) + c.omega.cross(p_GP_rate_W);
       if (held.rolls) {
-        G.middleRows(row, 3) = G_point;
-        kappa.template segment<3>(row) = a_point;
+        G.middleRows(row, 3) = J_P;
+        kappa.template segment<3>(row) = a_P0;
       } else {
         const V3<S> n_W = contact.normal_W.cast<S>();
-        G.row(row) = n_W.transpose() * G_point;
-        kappa(row) = n_W.dot(a_point);
+        G.row(row) = n_W.transpose() * J_P;
+        kappa(row) = n_W.dot(a_P0);
       }
       row += held.rows();
     }
@@ -487,15 +489,15 @@ VecOf<S> ModalEquations::constraints(const VecOf<S>& z) const {
   for (const ModalContact& held : contacts_) {
     const PlaneContact& contact = m.model.contacts[held.contact];
     const ModalKinematics<S>& c = kin[static_cast<std::size_t>(m.slot_of_body[contact.body])];
-    V3<S> p_W, p_rate_W;
-    contact_offset<S>(held, contact.normal_W, c.R_WC, c.omega, p_W, p_rate_W);
+    V3<S> p_GP_W, p_GP_rate_W;
+    contact_offset<S>(held, contact.normal_W, c.R_WC, c.omega, p_GP_W, p_GP_rate_W);
     const V3<S> n_W = contact.normal_W.cast<S>();
-    values(row++) = n_W.dot(c.r_G + p_W - contact.point_W.cast<S>());
-    const V3<S> v_point = c.v_G + c.omega.cross(p_W);
+    values(row++) = n_W.dot(c.r_G + p_GP_W - contact.point_W.cast<S>());
+    const V3<S> v_P = c.v_G + c.omega.cross(p_GP_W);
     if (held.rolls) {
-      values.template segment<3>(row) = v_point;
+      values.template segment<3>(row) = v_P;
     } else {
-      values(row) = n_W.dot(v_point);
+      values(row) = n_W.dot(v_P);
     }
     row += held.rows();
   }

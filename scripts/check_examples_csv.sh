@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Runs every example in examples/ and checks that each trajectory CSV has the SHA-256 recorded in
-# tests/golden/examples.sha256: a refactor of the engine must not change one byte of any answer.
+# Runs every example in examples/ and examples/planar/ and `tumble modes` on every example in
+# examples/modes/, and checks that each CSV they write (trajectories, events, modes) has the
+# SHA-256 recorded in tests/golden/examples.sha256: a refactor of the engine must not change one
+# byte of any answer.
 # The digests were made by the commit named in that file's first line; to see what changed,
 # run that commit's tumble on the example and diff the two CSVs.
 #   scripts/check_examples_csv.sh TUMBLE_EXE           check (exit 1 on any difference)
@@ -18,6 +20,16 @@ for scenario in "$root"/examples/*.yaml; do
   name=$(basename "$scenario" .yaml)
   mkdir -p "$out/$name"
   "$exe" run "$scenario" --out "$out/$name" >/dev/null
+done
+for scenario in "$root"/examples/planar/*.yaml; do
+  name=planar/$(basename "$scenario" .yaml)
+  mkdir -p "$out/$name"
+  "$exe" run "$scenario" --out "$out/$name" >/dev/null
+done
+for scenario in "$root"/examples/modes/*.yaml; do
+  name=modes/$(basename "$scenario" .yaml)
+  mkdir -p "$out/$name"
+  "$exe" modes "$scenario" --out "$out/$name" >/dev/null
 done
 (cd "$out" && find . -name '*.csv' | LC_ALL=C sort | xargs sha256sum) >"$out/now.sha256"
 

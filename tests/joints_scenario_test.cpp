@@ -28,7 +28,7 @@ TEST(JointScenario, AJointNamesKnownBodiesAndATypeItHas) {
   expect_error(kBat + "joints:\n  knob: {type: ball, body: bat, at: [0, 0, 0], axis: [0, 1, 0]}\n" +
                    kSimulate,
                5, 48, "joints.knob.axis",
-               "only a hinge or a prismatic joint has axis (this joint is a ball)");
+               "only a hinge, a prismatic or a cylindrical joint has axis (this joint is a ball)");
   expect_error(kBat +
                    "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 0, 0]}\n" +
                    kSimulate,

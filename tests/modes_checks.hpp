@@ -4,6 +4,7 @@
 // exact to round-off, so the eigenvalues are good to ~1e-14).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -25,6 +26,23 @@ inline ScenarioModes modes_of(const std::string& path,
 
 inline void expect_relative(double actual, double expected) {
   EXPECT_NEAR(actual, expected, kModesRelative * std::abs(expected)) << "expected " << expected;
+}
+
+// Every mode oscillates, and their natural frequencies are `expected` (in any order) to
+// `relative`.
+inline void expect_oscillating_at(const ModalAnalysis& analysis, std::vector<double> expected,
+                                  double relative) {
+  std::vector<double> found;
+  for (const Mode& mode : analysis.modes) {
+    EXPECT_EQ(mode.kind, Mode::Kind::Oscillating);
+    found.push_back(mode.natural_frequency);
+  }
+  std::sort(found.begin(), found.end());
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(found.size(), expected.size());
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    EXPECT_NEAR(found[i], expected[i], relative * expected[i]) << "mode " << i;
+  }
 }
 
 }  // namespace tumble::test

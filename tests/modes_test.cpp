@@ -296,7 +296,7 @@ TEST(Modes, JacobianAgreesWithCentralDifferences) {
   const std::shared_ptr<const ModalEquations> eq =
       modal_equations_of(load_scenario(example("modes/double_pendulum.yaml"), {}));
   const Eigen::Index n = eq->layout().size();
-  const MatX J = jacobian_at_zero([&](const VecOf<Dual>& z) { return eq->rates<Dual>(z); }, n);
+  const MatX J = jacobian_at_zero([&](const VecXOf<Dual>& z) { return eq->rates<Dual>(z); }, n);
   // Hinges only: their chart is exact away from zero, so differences may step off it.
   for (Eigen::Index j = 0; j < n; ++j) {
     const double h = 1e-5;

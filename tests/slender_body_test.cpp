@@ -99,8 +99,8 @@ simulate: {{duration: {}, integrator: dop853, rtol: 1e-12, atol: 1e-15, output_e
     std::vector<double> t, angle, rate;
     for (const Row& row : run.rows) {
       t.push_back(row.t);
-      angle.push_back(row.extras.coordinates[0].position + a);  // from upright
-      rate.push_back(row.extras.coordinates[0].rate);
+      angle.push_back(row.extras.coordinates[0].values[0] + a);  // from upright
+      rate.push_back(row.extras.coordinates[0].values[1]);
     }
     const std::vector<double> up = test::upward_zero_crossings(t, angle, rate);
     ASSERT_GE(up.size(), 5u);

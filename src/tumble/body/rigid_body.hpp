@@ -19,12 +19,16 @@ struct RigidBody {
   static RigidBody make(std::string name, double mass, const Mat3& I_G_B);
 };
 
-struct BodyState {
-  Vec3 r_G = Vec3::Zero();       // COM position, world, m
-  Mat3 R_WB = Mat3::Identity();  // rotation tensor: body axes -> world
-  Vec3 v_G = Vec3::Zero();       // COM velocity, world, m/s
-  Vec3 omega_W = Vec3::Zero();   // angular velocity, world, rad/s
+// A body's pose and motion; in a scalar with derivatives where `tumble modes` differentiates the
+// physics (math/dual.hpp), in double everywhere else (BodyState).
+template <typename S>
+struct BodyStateOf {
+  Vec3Of<S> r_G = Vec3Of<S>::Zero();       // COM position, world, m
+  Mat3Of<S> R_WB = Mat3Of<S>::Identity();  // rotation tensor: body axes -> world
+  Vec3Of<S> v_G = Vec3Of<S>::Zero();       // COM velocity, world, m/s
+  Vec3Of<S> omega_W = Vec3Of<S>::Zero();   // angular velocity, world, rad/s
 };
+using BodyState = BodyStateOf<double>;
 
 Mat3 calc_inertia_about_com_W(const RigidBody& body, const Mat3& R_WB);
 Vec3 calc_linear_momentum(const RigidBody& body, const BodyState& s);

@@ -22,8 +22,6 @@ namespace tumble {
 
 namespace {
 
-// Touching contacts are at the plane within this fraction of their size.
-constexpr double kTouchingHeight = 1e-9;
 // Slip slower than this fraction of the contact's speed scale counts as none: events locate the
 // slip's zero to a few ulps of t, leaving ~1e-15 of the scale.
 constexpr double kSlipZero = 1e-9;
@@ -828,7 +826,7 @@ ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
   const double g_n = std::abs(gravity_W.dot(contact.normal_W));
   scales.settle_speed =
       g_n > 0.0 ? std::sqrt(2.0 * g_n * kSettleHeight * size) : kSettleHeight * scales.speed;
-  scales.touching_height = kTouchingHeight * size;
+  scales.touching_height = touching_height(contact.surface);
   scales.landing_height = kSettleHeight * size;
   return scales;
 }

@@ -27,6 +27,10 @@ int lower_end(const RoundEnds& ends, const Vec3& n_B, Vec3& u_B) {
 
 }  // namespace
 
+double touching_height(const ContactSurface& surface) {
+  return kTouchingHeightPerSize * std::max(contact_size(surface), 1e-300);
+}
+
 double contact_size(const ContactSurface& surface) {
   if (surface.kind == ContactSurface::Kind::Sphere) return surface.radius;
   double size = 0.0;

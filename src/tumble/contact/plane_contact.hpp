@@ -64,4 +64,9 @@ Vec3 lowest_in_plane(const Vec3& n_B, double& projected_length);
 // (a round body's) farthest vertex (or rim point) from the COM.
 double contact_size(const ContactSurface& surface);
 
+// How near the plane a surface's point counts as touching it: this fraction of its size. A run's
+// contact modes and `tumble modes` decide what touches by it alike.
+inline constexpr double kTouchingHeightPerSize = 1e-9;
+double touching_height(const ContactSurface& surface);
+
 }  // namespace tumble

@@ -1,31 +1,30 @@
 #include "tumble/dynamics/force_elements.hpp"
 
+#include "tumble/math/dual.hpp"
 #include "tumble/math/rotation.hpp"
 
 namespace tumble {
 
-const BodyState& state_or_ground(std::span<const BodyState> states, int body) {
-  static const BodyState kGroundState{};
-  return body == kGround ? kGroundState : states[static_cast<std::size_t>(body)];
-}
-
-ElementLoad calc_spring_load(const LinearSpring& spring, std::span<const BodyState> states) {
-  const BodyState& a = state_or_ground(states, spring.body_a);
-  const BodyState& b = state_or_ground(states, spring.body_b);
+template <typename S>
+ElementLoadOf<S> calc_spring_load(const LinearSpring& spring,
+                                  std::span<const BodyStateOf<S>> states) {
+  using std::sqrt;
+  const BodyStateOf<S>& a = state_or_ground<S>(states, spring.body_a);
+  const BodyStateOf<S>& b = state_or_ground<S>(states, spring.body_b);
   // Attachment points from each COM (world axes) and their velocities.
-  const Vec3 p_A_W = a.R_WB * spring.p_A_A;
-  const Vec3 p_B_W = b.R_WB * spring.p_B_B;
-  const Vec3 d_W = (b.r_G + p_B_W) - (a.r_G + p_A_W);
-  const Vec3 v_rel_W =
-      velocity_of_point(b.v_G, b.omega_W, p_B_W) - velocity_of_point(a.v_G, a.omega_W, p_A_W);
-  const double length = d_W.norm();
-  ElementLoad load;
-  const double stretch = length - spring.rest_length;
+  const Vec3Of<S> p_A_W = a.R_WB * spring.p_A_A.cast<S>();
+  const Vec3Of<S> p_B_W = b.R_WB * spring.p_B_B.cast<S>();
+  const Vec3Of<S> d_W = (b.r_G + p_B_W) - (a.r_G + p_A_W);
+  const Vec3Of<S> v_rel_W =
+      velocity_of_point<S>(b.v_G, b.omega_W, p_B_W) - velocity_of_point<S>(a.v_G, a.omega_W, p_A_W);
+  const S length = sqrt(d_W.squaredNorm());
+  ElementLoadOf<S> load;
+  const S stretch = length - spring.rest_length;
   load.energy = 0.5 * spring.stiffness * stretch * stretch;
-  if (length == 0.0) return load;
-  const Vec3 u_W = d_W / length;  // from A's point to B's
-  const double length_rate = u_W.dot(v_rel_W);
-  const double tension = spring.stiffness * stretch + spring.damping * length_rate;
+  if (value_of(length) == 0.0) return load;
+  const Vec3Of<S> u_W = d_W / length;  // from A's point to B's
+  const S length_rate = u_W.dot(v_rel_W);
+  const S tension = spring.stiffness * stretch + spring.damping * length_rate;
   load.F_b_W = -tension * u_W;
   load.M_b_W = p_B_W.cross(load.F_b_W);
   load.F_a_W = tension * u_W;
@@ -34,21 +33,24 @@ ElementLoad calc_spring_load(const LinearSpring& spring, std::span<const BodySta
   return load;
 }
 
-ElementLoad calc_torsional_spring_load(const TorsionalSpring& spring,
-                                       std::span<const BodyState> states, double hinge_angle,
-                                       double hinge_rate, const Vec3& axis_W) {
-  const BodyState& a = state_or_ground(states, spring.body_a);
-  const BodyState& b = state_or_ground(states, spring.body_b);
-  ElementLoad load;
-  Vec3 M_b_W;
-  const Vec3 omega_rel_W = b.omega_W - a.omega_W;
+template <typename S>
+ElementLoadOf<S> calc_torsional_spring_load(const TorsionalSpring& spring,
+                                            std::span<const BodyStateOf<S>> states,
+                                            const S& hinge_angle, const S& hinge_rate,
+                                            const Vec3Of<S>& axis_W) {
+  const BodyStateOf<S>& a = state_or_ground<S>(states, spring.body_a);
+  const BodyStateOf<S>& b = state_or_ground<S>(states, spring.body_b);
+  ElementLoadOf<S> load;
+  Vec3Of<S> M_b_W;
+  const Vec3Of<S> omega_rel_W = b.omega_W - a.omega_W;
   if (spring.hinge >= 0) {
-    const double theta = hinge_angle - spring.rest_angle;
+    const S theta = hinge_angle - spring.rest_angle;
     M_b_W = -(spring.stiffness * theta + spring.damping * hinge_rate) * axis_W;
     load.energy = 0.5 * spring.stiffness * theta * theta;
   } else {
     // B turned from its rest pose relative to A: R_WB = exp([theta n]x) R_WA R_AB_rest.
-    const Vec3 theta_n_W = log_so3(b.R_WB * spring.R_AB_rest.transpose() * a.R_WB.transpose());
+    const Vec3Of<S> theta_n_W =
+        log_so3<S>(b.R_WB * spring.R_AB_rest.transpose().cast<S>() * a.R_WB.transpose());
     M_b_W = -spring.stiffness * theta_n_W - spring.damping * omega_rel_W;
     load.energy = 0.5 * spring.stiffness * theta_n_W.squaredNorm();
   }
@@ -59,5 +61,17 @@ ElementLoad calc_torsional_spring_load(const TorsionalSpring& spring,
   load.M_a_W = -M_b_W;
   return load;
 }
+
+template ElementLoadOf<double> calc_spring_load<double>(const LinearSpring&,
+                                                        std::span<const BodyStateOf<double>>);
+template ElementLoadOf<Dual> calc_spring_load<Dual>(const LinearSpring&,
+                                                    std::span<const BodyStateOf<Dual>>);
+template ElementLoadOf<double> calc_torsional_spring_load<double>(
+    const TorsionalSpring&, std::span<const BodyStateOf<double>>, const double&, const double&,
+    const Vec3Of<double>&);
+template ElementLoadOf<Dual> calc_torsional_spring_load<Dual>(const TorsionalSpring&,
+                                                              std::span<const BodyStateOf<Dual>>,
+                                                              const Dual&, const Dual&,
+                                                              const Vec3Of<Dual>&);
 
 }  // namespace tumble

@@ -36,24 +36,48 @@ struct TorsionalSpring {
 };
 
 // The state of one of the bodies a force element joins; ground is at rest at the origin.
-const BodyState& state_or_ground(std::span<const BodyState> states, int body);
+template <typename S>
+const BodyStateOf<S>& state_or_ground(std::span<const BodyStateOf<S>> states, int body) {
+  static const BodyStateOf<S> kGroundState{};
+  return body == kGround ? kGroundState : states[static_cast<std::size_t>(body)];
+}
+inline const BodyState& state_or_ground(std::span<const BodyState> states, int body) {
+  return state_or_ground<double>(states, body);
+}
 
 // What one element does at an instant: the force (at the COM) and moment (about the COM) on each
 // of its two bodies, world axes, its stored energy and its power (rate of work on the bodies).
-struct ElementLoad {
-  Vec3 F_a_W = Vec3::Zero(), M_a_W = Vec3::Zero();
-  Vec3 F_b_W = Vec3::Zero(), M_b_W = Vec3::Zero();
-  double energy = 0.0;  // J
-  double power = 0.0;   // W
+template <typename S>
+struct ElementLoadOf {
+  Vec3Of<S> F_a_W = Vec3Of<S>::Zero(), M_a_W = Vec3Of<S>::Zero();
+  Vec3Of<S> F_b_W = Vec3Of<S>::Zero(), M_b_W = Vec3Of<S>::Zero();
+  S energy = S(0.0);  // J
+  S power = S(0.0);   // W
 };
+using ElementLoad = ElementLoadOf<double>;
 
+// The force laws are written once over the scalar (double for a run, Dual for `tumble modes`;
+// force_elements.cpp instantiates both).
+//
 // A spring whose two points coincide has no direction: it then pushes with no force.
-ElementLoad calc_spring_load(const LinearSpring& spring, std::span<const BodyState> states);
+template <typename S>
+ElementLoadOf<S> calc_spring_load(const LinearSpring& spring,
+                                  std::span<const BodyStateOf<S>> states);
+inline ElementLoad calc_spring_load(const LinearSpring& spring, std::span<const BodyState> states) {
+  return calc_spring_load<double>(spring, states);
+}
 
 // hinge_angle and hinge_rate are used when spring.hinge >= 0 (the angle of B relative to A about
 // axis_W, the hinge axis in world axes).
-ElementLoad calc_torsional_spring_load(const TorsionalSpring& spring,
-                                       std::span<const BodyState> states, double hinge_angle,
-                                       double hinge_rate, const Vec3& axis_W);
+template <typename S>
+ElementLoadOf<S> calc_torsional_spring_load(const TorsionalSpring& spring,
+                                            std::span<const BodyStateOf<S>> states,
+                                            const S& hinge_angle, const S& hinge_rate,
+                                            const Vec3Of<S>& axis_W);
+inline ElementLoad calc_torsional_spring_load(const TorsionalSpring& spring,
+                                              std::span<const BodyState> states, double hinge_angle,
+                                              double hinge_rate, const Vec3& axis_W) {
+  return calc_torsional_spring_load<double>(spring, states, hinge_angle, hinge_rate, axis_W);
+}
 
 }  // namespace tumble

@@ -12,13 +12,15 @@ namespace tumble {
 
 inline constexpr int kGround = -1;
 
-// A motor on a joint's one freedom (a hinge's angle, a slider's travel): while active
-// (from <= t < to) it prescribes the relative speed (rad/s about a hinge, m/s along a slider) or
-// applies the effort (a torque in N m about a hinge's axis, a force in N along a slider's), on
-// the second body and against the first.
+// A motor on one freedom of a joint (a hinge's angle, a slider's travel, a cylindrical joint's
+// turn or slide): while active (from <= t < to) it prescribes the relative speed (rad/s about a
+// hinge, m/s along a slider) or applies the effort (a torque in N m about the axis, a force in N
+// along it), on the second body and against the first. A speed is prescribed only on a joint of
+// one freedom.
 struct JointMotor {
   enum class Kind { None, Speed, Effort } kind = Kind::None;
   double value = 0.0;
+  int freedom = 0;  // which of the joint's speeds it drives (a cylindrical joint's 1: the slide)
   double from = -std::numeric_limits<double>::infinity();  // s
   double to = std::numeric_limits<double>::infinity();     // s
 
@@ -35,8 +37,11 @@ struct JointModel {
   Mat3 R_AB0 = Mat3::Identity();  // B's axes relative to A's at t = 0: R_WA^T R_WB
   // Hinge: the unit axis in B's axes; the angle theta turns B relative to A about it, positive
   // by the right-hand rule, zero at t = 0. Prismatic: the unit axis in B's axes; the travel d
-  // moves B's joint point from A's along it, zero at t = 0.
+  // moves B's joint point from A's along it, zero at t = 0. Cylindrical: both about and along it.
   Vec3 axis_B = Vec3::UnitZ();
+  // Universal: the first axis, fixed in A (A's axes, unit; world when A is ground); axis_B is
+  // the second, fixed in B. At right angles.
+  Vec3 axis_A = Vec3::UnitX();
   JointMotor motor;
   double lock_at = std::numeric_limits<double>::infinity();  // s: the joint is rigid from then
 };

@@ -29,19 +29,6 @@ double Model::next_load_switch(double t) const {
   return next;
 }
 
-LoadOnBody calc_load_on_body(const AppliedLoad& load, const Mat3& R_WB) {
-  const Vec3 value_W = load.body_frame ? Vec3(R_WB * load.value) : load.value;
-  LoadOnBody on_body;
-  if (load.kind == AppliedLoad::Kind::Torque) {
-    on_body.M_G_W = value_W;
-  } else {
-    // A force at point P adds the moment (r_P - r_G) x F about the COM.
-    on_body.F_W = value_W;
-    on_body.M_G_W = (R_WB * load.p_GP_B).cross(value_W);
-  }
-  return on_body;
-}
-
 void calc_applied_loads(const Model& model, std::size_t body, double schedule_time,
                         const Mat3& R_WB, Vec3& F_W, Vec3& M_G_W) {
   F_W.setZero();

@@ -46,12 +46,30 @@ struct Model {
 };
 
 // What one active load does to its body at orientation R_WB: the force (world) and its moment
-// about the COM (world).
-struct LoadOnBody {
-  Vec3 F_W = Vec3::Zero();
-  Vec3 M_G_W = Vec3::Zero();
+// about the COM (world). Written once over the scalar (a run's double, `tumble modes`' Dual).
+template <typename S>
+struct LoadOnBodyOf {
+  Vec3Of<S> F_W = Vec3Of<S>::Zero();
+  Vec3Of<S> M_G_W = Vec3Of<S>::Zero();
 };
-LoadOnBody calc_load_on_body(const AppliedLoad& load, const Mat3& R_WB);
+using LoadOnBody = LoadOnBodyOf<double>;
+template <typename S>
+LoadOnBodyOf<S> calc_load_on_body(const AppliedLoad& load, const Mat3Of<S>& R_WB) {
+  const Vec3Of<S> value_W =
+      load.body_frame ? Vec3Of<S>(R_WB * load.value.cast<S>()) : Vec3Of<S>(load.value.cast<S>());
+  LoadOnBodyOf<S> on_body;
+  if (load.kind == AppliedLoad::Kind::Torque) {
+    on_body.M_G_W = value_W;
+  } else {
+    // A force at point P adds the moment (r_P - r_G) x F about the COM.
+    on_body.F_W = value_W;
+    on_body.M_G_W = (R_WB * load.p_GP_B.cast<S>()).cross(value_W);
+  }
+  return on_body;
+}
+inline LoadOnBody calc_load_on_body(const AppliedLoad& load, const Mat3& R_WB) {
+  return calc_load_on_body<double>(load, R_WB);
+}
 
 // Resultant of the applied loads on one body (gravity excluded): the force (world) and the
 // moment about the COM (world), for orientation R_WB. The loads that act are those active at

@@ -1,6 +1,7 @@
 #pragma once
 // What a row of output reports besides the bodies' states, for formulations with joints, force
 // elements and contacts (empty otherwise).
+#include <array>
 #include <vector>
 
 #include "tumble/math/types.hpp"
@@ -22,13 +23,11 @@ struct ContactOutput {
   double slip_speed = 0.0;         // m/s, of the body's material point at the contact
   int mode = 0;                    // 0 apart, 1 sliding, 2 rolling / sticking
 };
-// A joint's own coordinates (the CSV's J.angle J.rate, J.travel J.speed, J.rx J.ry J.rz): a
-// hinge's angle (rad) and rate (rad/s), or a slider's travel (m) and speed (m/s), signed as the
-// scenario states the joint and 0 at t = 0; a ball joint's relative rotation, the rotation
-// vector (rad) of the second body's axes relative to the first's, in the first's axes.
+// A joint's own coordinates, as its kind names them in the CSV (JointKind::coordinate_columns:
+// a hinge's J.angle J.rate, a slider's J.travel J.speed, a ball joint's J.rx J.ry J.rz, ...), in
+// that order.
 struct JointCoordinates {
-  double position = 0.0, rate = 0.0;  // hinge, prismatic
-  Vec3 rotation = Vec3::Zero();       // ball
+  std::array<double, 6> values{};
 };
 struct RowExtras {
   std::vector<JointReaction> joints;          // one per Model::joints entry

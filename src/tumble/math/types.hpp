@@ -3,6 +3,11 @@
 // its name (see docs/notation.md): r_G (COM, world), omega_B (angular velocity, body axes), ...
 #include <Eigen/Dense>
 
+namespace Eigen {
+template <typename DerivativeType>
+class AutoDiffScalar;
+}  // namespace Eigen
+
 namespace tumble {
 
 using Vec3 = Eigen::Vector3d;
@@ -12,5 +17,27 @@ using Quat = Eigen::Quaterniond;  // (w, x, y, z); unit quaternions stand for ro
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
+
+// The same in another scalar: the physics that both a run (double) and `tumble modes`
+// (math/dual.hpp: numbers with derivatives) evaluate is written once over these.
+template <typename S>
+using Vec3Of = Eigen::Matrix<S, 3, 1>;
+template <typename S>
+using Mat3Of = Eigen::Matrix<S, 3, 3>;
+template <typename S>
+using Vec6Of = Eigen::Matrix<S, 6, 1>;
+template <typename S>
+using VecXOf = Eigen::Matrix<S, Eigen::Dynamic, 1>;
+template <typename S>
+using MatXOf = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
+
+// A number with its derivatives (math/dual.hpp, which defines what it needs).
+using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+
+// The plain number of a scalar (itself for double; math/dual.hpp adds the dual numbers').
+inline double value_of(double x) {
+  return x;
+}
+double value_of(const Dual& x);  // math/dual.cpp
 
 }  // namespace tumble

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "tumble/contact/plane_contact.hpp"
+#include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
 
@@ -26,11 +27,10 @@ std::vector<PositionBlock> position_blocks(const ArticulatedModel& model,
   for (std::size_t k = 0; k < model.tree.size(); ++k) {
     const Eigen::Index o = layout.position_offset[k];
     if (o < 0 || model.tree[k].nv == 0) continue;
-    if (model.tree[k].type == JointType::Free) {
-      blocks.push_back({o, 3});
-      blocks.push_back({o + 3, 3});
-    } else {
-      blocks.push_back({o, model.tree[k].nv});
+    Eigen::Index first = o;
+    for (const int count : model.tree[k].kind->modal_position_blocks()) {
+      blocks.push_back({first, count});
+      first += count;
     }
   }
   return blocks;
@@ -45,7 +45,7 @@ std::vector<Symmetry> candidate_symmetries(const ModalEquations& equations) {
   for (std::size_t k = 0; k < m.tree.size(); ++k) {
     const TreeJoint& joint = m.tree[k];
     if (equations.layout().position_offset[k] < 0) continue;
-    if (joint.type != JointType::Ball && joint.type != JointType::Free) continue;
+    if (!joint.kind->turns_freely()) continue;
     const RigidBody& body = m.model.bodies[joint.child];
     const Eigen::SelfAdjointEigenSolver<Mat3> principal(body.I_G_B);
     const Vec3& I = principal.eigenvalues();  // ascending
@@ -148,7 +148,7 @@ void check_contacts(const ModalEquations& equations, double speed_scale) {
 MatX contact_tangent(const ModalEquations& equations, const std::vector<Eigen::Index>& kept) {
   const Eigen::Index n = equations.layout().size();
   const MatX C =
-      jacobian_at_zero([&](const VecOf<Dual>& z) { return equations.constraints<Dual>(z); }, n);
+      jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.constraints<Dual>(z); }, n);
   const Eigen::JacobiSVD<MatX> svd(C, Eigen::ComputeFullV);
   const VecX& sigma = svd.singularValues();
   Eigen::Index rank = 0;
@@ -163,11 +163,11 @@ MatX contact_tangent(const ModalEquations& equations, const std::vector<Eigen::I
 
 }  // namespace
 
-MatX jacobian_at_zero(const std::function<VecOf<Dual>(const VecOf<Dual>&)>& f, Eigen::Index n,
+MatX jacobian_at_zero(const std::function<VecXOf<Dual>(const VecXOf<Dual>&)>& f, Eigen::Index n,
                       VecX* value) {
-  VecOf<Dual> z(n);
+  VecXOf<Dual> z(n);
   for (Eigen::Index i = 0; i < n; ++i) z(i) = Dual(0.0, Eigen::VectorXd::Unit(n, i));
-  const VecOf<Dual> out = f(z);
+  const VecXOf<Dual> out = f(z);
   MatX J = MatX::Zero(out.size(), n);
   if (value != nullptr) value->resize(out.size());
   for (Eigen::Index i = 0; i < out.size(); ++i) {
@@ -185,7 +185,7 @@ Linearisation linearise(const ModalEquations& equations) {
 
   VecX f0;
   const MatX J =
-      jacobian_at_zero([&](const VecOf<Dual>& z) { return equations.rates<Dual>(z); }, n, &f0);
+      jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.rates<Dual>(z); }, n, &f0);
   Linearisation result;
   const double scale = 1.0 + J.cwiseAbs().maxCoeff();
   // Round-off in J and in the rates grows with their size; a rate or a dependence below these is
@@ -219,7 +219,7 @@ Linearisation linearise(const ModalEquations& equations) {
         result.ignorable.push_back(coordinate.name);
         // A free body's place and turn are symmetries; a joint's coordinate that nothing
         // restores is neutral only to first order.
-        if (m.tree[coordinate.tree_joint].type != JointType::Free) {
+        if (!m.tree[coordinate.tree_joint].kind->modal_positions_are_symmetries()) {
           result.unrestored.push_back(coordinate.name);
         }
       }
@@ -248,7 +248,7 @@ Linearisation linearise(const ModalEquations& equations) {
   const auto field_of = [&](const Symmetry& s) {
     VecX X0;
     MatX DX = jacobian_at_zero(
-        [&](const VecOf<Dual>& z) { return equations.symmetry_field<Dual>(s, z); }, n, &X0);
+        [&](const VecXOf<Dual>& z) { return equations.symmetry_field<Dual>(s, z); }, n, &X0);
     return std::make_pair(X0, DX);
   };
   std::vector<std::pair<VecX, MatX>> fields;

@@ -53,7 +53,7 @@ Linearisation linearise(const ModalEquations& equations);
 
 // The Jacobian of a function of z at z = 0 by forward-mode automatic differentiation, and its
 // value.
-MatX jacobian_at_zero(const std::function<VecOf<Dual>(const VecOf<Dual>&)>& f, Eigen::Index n,
+MatX jacobian_at_zero(const std::function<VecXOf<Dual>(const VecXOf<Dual>&)>& f, Eigen::Index n,
                       VecX* value = nullptr);
 
 }  // namespace tumble

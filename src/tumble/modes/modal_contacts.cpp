@@ -9,13 +9,6 @@
 
 namespace tumble {
 
-namespace {
-
-// A run's touching tolerance (contact_modes.cpp): at the plane within this fraction of the size.
-constexpr double kTouchingHeight = 1e-9;
-
-}  // namespace
-
 std::vector<ModalContact> touching_contacts(const Model& model, const std::vector<Vec3>& r_G_W,
                                             const std::vector<Mat3>& R_WB) {
   std::vector<ModalContact> touching;
@@ -23,8 +16,7 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
     const PlaneContact& contact = model.contacts[c];
     const Mat3& R = R_WB[contact.body];
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R);
-    const double size = contact_size(contact.surface);
-    const double within = kTouchingHeight * size;
+    const double within = touching_height(contact.surface);
     if (lowest.height > within) continue;  // apart: no force, and none from a small change
     const std::string& name = contact.name;
     // The height over the plane of a point of the body (body axes, from the COM).
@@ -36,8 +28,8 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
     held.rolls = contact.friction > 0.0;
     const ContactSurface& surface = contact.surface;
     if (surface.kind == ContactSurface::Kind::Sphere) {
-      held.point = ModalContact::Point::Lowest;
-      held.radius = surface.radius;
+      held.point.kind = ContactPoint::Kind::Lowest;
+      held.point.radius = surface.radius;
     } else if (surface.kind == ContactSurface::Kind::Polyhedron) {
       int count = 0;
       for (const Vec3& vertex : surface.vertices) count += height_of(vertex) <= within ? 1 : 0;
@@ -48,8 +40,8 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
             "vertex, or remove the contact",
             name, count));
       }
-      held.point = ModalContact::Point::Material;
-      held.p_B = lowest.p_GC_B;
+      held.point.kind = ContactPoint::Kind::Material;
+      held.point.p_B = lowest.p_GC_B;
     } else {
       const RoundEnds ends = round_ends(surface);
       const Vec3 n_B = R.transpose() * contact.normal_W;
@@ -60,8 +52,8 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       const bool apex_down =
           ends.radius[0] == 0.0 && !ends.one_rim && height_of(ends.centre_B[0]) <= within;
       if (apex_down && height_of(rim_point(ends, 1, u_B)) > within) {
-        held.point = ModalContact::Point::Material;
-        held.p_B = ends.centre_B[0];
+        held.point.kind = ContactPoint::Kind::Material;
+        held.point.p_B = ends.centre_B[0];
         touching.push_back(held);
         continue;
       }
@@ -82,9 +74,10 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
             name));
       }
       const auto k = static_cast<std::size_t>(ends_down.front());
-      held.p_B = ends.centre_B[k];
-      held.radius = ends.radius[k];
-      held.point = held.radius > 0.0 ? ModalContact::Point::Rim : ModalContact::Point::Material;
+      held.point.p_B = ends.centre_B[k];
+      held.point.radius = ends.radius[k];
+      held.point.kind =
+          held.point.radius > 0.0 ? ContactPoint::Kind::Rim : ContactPoint::Kind::Material;
     }
     touching.push_back(held);
   }

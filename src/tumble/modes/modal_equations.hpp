@@ -14,6 +14,13 @@
 // mass matrix M(q) u' = the generalised forces: an algorithm independent of the articulated-body
 // passes that integrate the same model, which a test holds to the same accelerations.
 //
+// The physics is the run's, written once over the scalar: each joint's placement, speeds and
+// motion subspace from its coordinates (JointKind::calc_modal_motion, its kind's file in
+// multibody/joints/), the applied loads' and the force elements' laws (calc_load_on_body,
+// calc_spring_load, calc_torsional_spring_load), the contact point's geometry
+// (contact/contact_point.hpp). What is this file's own is the algorithm: Kane's projection, the
+// mass matrix and the Schur complement.
+//
 // What acts: gravity, the loads active at t0, linear springs and dampers, torsional springs and
 // dampers, the motors' efforts at t0; joints held or driven at t0 keep their speed. Contacts
 // touching at t0 hold their point (modal_contacts.hpp): rolling, or frictionless on the plane, by
@@ -23,24 +30,17 @@
 // space. Impulses and later schedule changes are not part of a linearisation about t0.
 //
 // A rotation's coordinates are a small turn r about the body's axes, R = R0 exp([r]x), taken to
-// first order (R0 (1 + [r]x)): a linearisation differentiates once, at r = 0, where the two have
-// the same value and derivative. Evaluate only at z = 0 for that reason.
+// first order (joint_kind_of.hpp, `turned`): evaluate only at z = 0 for that reason.
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-// After Eigen/Dense, which the AutoDiff module needs first.
-#include <unsupported/Eigen/AutoDiff>
-
+#include "tumble/math/dual.hpp"
 #include "tumble/modes/modal_contacts.hpp"
 #include "tumble/modes/modal_coordinates.hpp"
+#include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
-
-using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
-template <typename Scalar>
-using VecOf = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
 
 // A continuous symmetry the steady motions may turn along: the whole system turned about a world
 // axis (about the vertical, which leaves gravity unchanged), or one body turned about its own
@@ -48,7 +48,7 @@ using VecOf = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
 struct Symmetry {
   enum class Kind { WorldTurn, BodySpin } kind = Kind::WorldTurn;
   Vec3 axis = Vec3::UnitZ();   // unit: world axes (WorldTurn) or the body's axes (BodySpin)
-  std::size_t tree_joint = 0;  // BodySpin: the ball or free joint holding the body
+  std::size_t tree_joint = 0;  // BodySpin: the joint holding the body (one that turns freely)
   std::string description;     // "a turn of the whole about the vertical", ...
 };
 
@@ -67,33 +67,33 @@ class ModalEquations {
 
   // dz/dt at z.
   template <typename Scalar>
-  VecOf<Scalar> rates(const VecOf<Scalar>& z) const;
+  VecXOf<Scalar> rates(const VecXOf<Scalar>& z) const;
   // The contacts touching at t0, which the equations hold.
   const std::vector<ModalContact>& contacts() const { return contacts_; }
   // Per held contact: its point's height over the plane (m), then the point's velocity (world,
   // m/s; a frictionless contact: its normal component). Zero on the constraints.
   template <typename Scalar>
-  VecOf<Scalar> constraints(const VecOf<Scalar>& z) const;
+  VecXOf<Scalar> constraints(const VecXOf<Scalar>& z) const;
   // Per held contact at z = 0: the plane's force on the body (world, N).
   std::vector<Vec3> contact_forces() const;
   // The rates of z while the state turns along `symmetry` at unit rate.
   template <typename Scalar>
-  VecOf<Scalar> symmetry_field(const Symmetry& symmetry, const VecOf<Scalar>& z) const;
+  VecXOf<Scalar> symmetry_field(const Symmetry& symmetry, const VecXOf<Scalar>& z) const;
 
  private:
+  // Where tree joint k is in the linearisation at z.
   template <typename Scalar>
-  std::vector<ModalKinematics<Scalar>> kinematics(const VecOf<Scalar>& z) const;
+  ModalJointPoint<Scalar> point_of(std::size_t k, const VecXOf<Scalar>& z) const;
+  template <typename Scalar>
+  std::vector<ModalKinematics<Scalar>> kinematics(const VecXOf<Scalar>& z) const;
   // dz/dt, and the contacts' forces into `contact_forces_W` where given.
   template <typename Scalar>
-  VecOf<Scalar> evaluate(const VecOf<Scalar>& z, std::vector<Vec3>* contact_forces_W) const;
+  VecXOf<Scalar> evaluate(const VecXOf<Scalar>& z, std::vector<Vec3>* contact_forces_W) const;
 
   std::shared_ptr<const ArticulatedModel> model_;
   ModalLayout layout_;
   VecX y0_;
   double t0_;
-  std::vector<Mat3> R_PC0_;  // per tree joint: the child's orientation relative to its parent at y0
-  std::vector<Vec3>
-      v_G0_W_;  // per tree joint: the child's COM velocity at y0 (free joints' speeds)
   // Per tree joint: where its speeds' rates start among the unknowns (-1: held or driven).
   std::vector<Eigen::Index> unknown_;
   Eigen::Index unknowns_ = 0;

@@ -1,5 +1,7 @@
 #include "tumble/multibody/articulated_data.hpp"
 
+#include "tumble/multibody/joints/joint_kind.hpp"
+
 namespace tumble {
 
 ArticulatedData::ArticulatedData(const ArticulatedModel& model) {
@@ -12,6 +14,8 @@ ArticulatedData::ArticulatedData(const ArticulatedModel& model) {
     w.u.resize(nv);
     w.tau.resize(nv);
     w.qdd.resize(nv);
+    w.S_moves = model.tree[k].kind->moving_subspace();
+    w.S_moving = model.tree[k].S;
   }
   states.resize(model.body_count());
   rates.resize(model.dimension - model.ledger);

@@ -34,8 +34,16 @@ struct ArticulatedData {
     SpeedVector qdd;                   // joint accelerations (or speed jumps)
     Vec6 acceleration = Vec6::Zero();  // spatial acceleration (with -g at ground)
     bool known = false;                // prescribed: qdd is given, tau follows
-    Vec6 applied = Vec6::Zero();       // the loads in `external` before contact forces join them
+    // Where the joint's motion subspace turns with its coordinates (JointKind::moving_subspace),
+    // S there, which calc_kinematics sets (with its (dS/dt) u in bias); else the tree's S holds.
+    bool S_moves = false;
+    MotionSubspace S_moving;
+    Vec6 applied = Vec6::Zero();  // the loads in `external` before contact forces join them
   };
+  // The joint's motion subspace at the state last evaluated.
+  static const MotionSubspace& S_of(const TreeJoint& joint, const Workspace& w) {
+    return w.S_moves ? w.S_moving : joint.S;
+  }
   std::vector<Workspace> work;    // per tree joint
   std::vector<BodyState> states;  // per body, from the last calc_kinematics
   VecX rates;                     // the ledger's rates (calc_row_extras)

@@ -13,13 +13,16 @@ namespace tumble {
 
 namespace {
 
-// The inverse of a joint's symmetric positive definite S^T I^A S (1, 3 or 6 freedoms) through
+// The inverse of a joint's symmetric positive definite S^T I^A S (1, 2, 3 or 6 freedoms) through
 // fixed-size types, so nothing is allocated.
 template <typename Matrix>
 void invert_joint_inertia(const Matrix& D, Matrix& D_inv) {
   switch (D.rows()) {
     case 1:
       D_inv(0, 0) = 1.0 / D(0, 0);
+      break;
+    case 2:
+      D_inv = Eigen::Matrix2d(D).inverse();
       break;
     case 3:
       D_inv = Mat3(D).inverse();
@@ -28,7 +31,7 @@ void invert_joint_inertia(const Matrix& D, Matrix& D_inv) {
       D_inv = Mat6(D).ldlt().solve(Mat6::Identity());
       break;
     default:
-      throw std::logic_error("a joint has 0, 1, 3 or 6 freedoms");
+      throw std::logic_error("a joint has 0, 1, 2, 3 or 6 freedoms");
   }
 }
 
@@ -126,11 +129,15 @@ void ArticulatedFormulation::calc_kinematics(const VecX& y, bool with_velocities
     BodyState& s = d_.states[joint.child];
     s.r_G = w.r_G_W;
     s.R_WB = w.R_WC;
+    Vec6 S_rate_u = Vec6::Zero();
+    if (w.S_moves) joint.kind->calc_motion_subspace(joint, y, w.S_moving, S_rate_u);
     if (!with_velocities) continue;
     Vec6 v_joint = Vec6::Zero();
-    if (joint.nv > 0) v_joint.noalias() = joint.S * y.segment(joint.v, joint.nv);
+    if (joint.nv > 0)
+      v_joint.noalias() = ArticulatedData::S_of(joint, w) * y.segment(joint.v, joint.nv);
     w.velocity = w.X.apply_motion(v_P) + v_joint;
     w.bias = cross_motion(w.velocity, v_joint);
+    if (w.S_moves) w.bias += S_rate_u;
     s.omega_W = w.R_WC * w.velocity.head<3>();
     s.v_G = w.R_WC * w.velocity.tail<3>();
   }
@@ -208,7 +215,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
     if (!impulsive && joint.model_joint >= 0) {
       const JointMotor& motor = model_.joints[static_cast<std::size_t>(joint.model_joint)].motor;
       if (motor.kind == JointMotor::Kind::Effort && motor.active_at(mode_time) && !w.known) {
-        w.tau(0) = motor.value;
+        w.tau(motor.freedom) = motor.value;
       }
     }
   }
@@ -236,21 +243,22 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
       w.u = w.tau - w.pA;
       continue;
     }
+    const MotionSubspace& S = ArticulatedData::S_of(joint, w);
     if (w.known) {
       Vec6 a_joint = c;
-      if (joint.nv > 0) a_joint.noalias() += joint.S * w.qdd;
+      if (joint.nv > 0) a_joint.noalias() += S * w.qdd;
       Ia = w.IA;
       pa = w.pA + w.IA * a_joint;
     } else {
-      w.U.noalias() = w.IA * joint.S;
-      const SpeedMatrix D = joint.S.transpose() * w.U;
+      w.U.noalias() = w.IA * S;
+      const SpeedMatrix D = S.transpose() * w.U;
       if (m_.holds_point_on_ball[k]) {
         pseudo_invert_ball_joint_inertia(D, w.D_inv);
       } else {
         invert_joint_inertia(D, w.D_inv);
       }
       w.u = w.tau;
-      w.u.noalias() -= joint.S.transpose() * w.pA;
+      w.u.noalias() -= S.transpose() * w.pA;
       Ia = w.IA;
       Ia.noalias() -= w.U * (w.D_inv * w.U.transpose());
       pa = w.pA + Ia * c;
@@ -276,15 +284,16 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
             : d_.work[m_.slot_of_body[static_cast<std::size_t>(joint.parent)]].acceleration;
     Vec6 a = w.X.apply_motion(a_P);
     if (!impulsive) a += w.bias;
+    const MotionSubspace& S = ArticulatedData::S_of(joint, w);
     if (w.known) {
       if (joint.nv > 0) {
-        a.noalias() += joint.S * w.qdd;
+        a.noalias() += S * w.qdd;
         const Vec6 f = w.IA * a + w.pA;
-        w.tau.noalias() = joint.S.transpose() * f;
+        w.tau.noalias() = S.transpose() * f;
       }
     } else {
       w.qdd.noalias() = w.D_inv * (w.u - w.U.transpose() * a);
-      a.noalias() += joint.S * w.qdd;
+      a.noalias() += S * w.qdd;
     }
     w.acceleration = a;
   }
@@ -320,7 +329,8 @@ void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,
   Eigen::Index entry = offset + m_.first_motor_entry();
   for (const std::size_t j : m_.motor_joints) {
     const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
-    rates(entry++) = d_.work[k].tau(0) * y(m_.tree[k].v);
+    const int f = model_.joints[j].motor.freedom;
+    rates(entry++) = d_.work[k].tau(f) * y(m_.tree[k].v + f);
   }
   for (; entry < rates.size(); ++entry) rates(entry) = 0.0;
 }
@@ -397,19 +407,10 @@ void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras&
   for (std::size_t j = 0; j < model_.joints.size(); ++j) {
     extras.joints[j] = reaction_of(j);
     const JointModel& joint = model_.joints[j];
-    JointCoordinates& coordinates = extras.coordinates[j];
-    if (has_axis(joint.type)) {
-      coordinates.position = m_.hinge_angle(y, j);
-      coordinates.rate = m_.joint_rate(y, j);
-    } else if (joint.type == JointType::Ball) {
-      // R_AB = R_WA^T R_WB, as a rotation vector in A's axes.
-      const Mat3 R_WA = joint.body_a == kGround
-                            ? Mat3::Identity()
-                            : d_.states[static_cast<std::size_t>(joint.body_a)].R_WB;
-      const Eigen::AngleAxisd turn(R_WA.transpose() *
-                                   d_.states[static_cast<std::size_t>(joint.body_b)].R_WB);
-      coordinates.rotation = turn.angle() * turn.axis();
-    }
+    const TreeJoint& tree_joint = m_.tree[static_cast<std::size_t>(m_.slot_of_joint[j])];
+    tree_joint.kind->calc_coordinate_columns(
+        tree_joint, y, state_or_ground(d_.states, joint.body_a),
+        state_or_ground(d_.states, joint.body_b), extras.coordinates[j].values);
   }
   extras.contacts.resize(model_.contacts.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
@@ -485,8 +486,8 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
     w.external.tail<3>() += w.R_WC.transpose() * J_W;
     note("impulse " + impulse.name);
   }
-  // Hinges that lock or whose speed motor starts now jump to their rate; the other prescribed
-  // joints keep theirs.
+  // Joints that lock (every freedom) or whose speed motor starts now jump to their rates; the
+  // other prescribed joints keep theirs.
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
     Workspace& w = d_.work[k];
@@ -495,7 +496,7 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
     const JointModel& model_joint = model_.joints[static_cast<std::size_t>(joint.model_joint)];
     const double rate = y(joint.v);
     if (model_joint.lock_at == t) {
-      w.qdd(0) = -rate;
+      w.qdd = -y.segment(joint.v, joint.nv);
       note("lock " + model_joint.name);
     } else if (t < model_joint.lock_at && model_joint.motor.kind == JointMotor::Kind::Speed &&
                model_joint.motor.from == t) {
@@ -517,11 +518,11 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   }
   // Work at an instant: the impulse times the mean of the velocities before and after it, for
   // impulses on body points and for the angular impulses of locks and starting motors alike.
-  std::vector<double> rate_before(m_.tree.size(), 0.0);
+  std::vector<SpeedStep> rate_before(m_.tree.size());
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
     if (joint.nv == 0) continue;
-    if (has_axis(joint.type)) rate_before[k] = y(joint.v);
+    rate_before[k] = y.segment(joint.v, joint.nv);
     y.segment(joint.v, joint.nv) += d_.work[k].qdd;
   }
   calc_kinematics(y, true);
@@ -533,7 +534,7 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
     const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
     const JointModel& joint = model_.joints[j];
     if (joint.motor.kind == JointMotor::Kind::Speed && joint.motor.from == t && t < joint.lock_at) {
-      y(slot) += d_.work[k].tau(0) * 0.5 * (rate_before[k] + y(m_.tree[k].v));
+      y(slot) += d_.work[k].tau(0) * 0.5 * (rate_before[k](0) + y(m_.tree[k].v));
     }
     ++slot;
   }
@@ -550,7 +551,13 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   }
   for (const std::size_t j : m_.lock_joints) {
     const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
-    if (model_.joints[j].lock_at == t) y(slot) += d_.work[k].tau(0) * 0.5 * rate_before[k];
+    if (model_.joints[j].lock_at == t) {
+      // Each freedom's torque or force times its mean rate (its rate after is zero).
+      const Workspace& w = d_.work[k];
+      double work = w.tau(0) * 0.5 * rate_before[k](0);
+      for (Eigen::Index i = 1; i < w.tau.size(); ++i) work += w.tau(i) * 0.5 * rate_before[k](i);
+      y(slot) += work;
+    }
     ++slot;
   }
   s_.jumps.push_back(std::move(record));

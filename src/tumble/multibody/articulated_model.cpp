@@ -28,13 +28,13 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
     const JointModel& joint = model.joints[j];
     if (joint.motor.kind != JointMotor::Kind::None) {
       if (!has_axis(joint.type)) {
-        throw std::logic_error("a motor needs a hinge or a slider; the reader checks this");
+        throw std::logic_error("a motor needs a joint with an axis; the reader checks this");
       }
       motor_joints.push_back(j);
     }
     if (std::isfinite(joint.lock_at)) {
-      if (!has_axis(joint.type)) {
-        throw std::logic_error("a lock needs a hinge or a slider; the reader checks this");
+      if (!can_lock(joint.type)) {
+        throw std::logic_error("a lock needs a joint with freedoms; the reader checks this");
       }
       lock_joints.push_back(j);
     }

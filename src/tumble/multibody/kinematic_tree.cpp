@@ -40,6 +40,12 @@ TreeJoint from_model_joint(const JointModel& joint, int index, bool reversed) {
     t.R_PC0 = joint.R_AB0.transpose();
     t.axis_C = -(joint.R_AB0 * joint.axis_B);
   }
+  // A universal joint's axes are fixed one in each body: the parent holds the first (or, from
+  // the second body, the second, each turned the other way so that the angles keep their sign).
+  if (joint.type == JointType::Universal) {
+    t.axis_P = reversed ? Vec3(-joint.axis_B) : joint.axis_A;
+    t.axis_C = reversed ? Vec3(-joint.axis_A) : joint.axis_B;
+  }
   set_subspace(t);
   return t;
 }

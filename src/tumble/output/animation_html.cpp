@@ -11,6 +11,7 @@
 
 #include "tumble/inertia/mesh.hpp"
 #include "tumble/math/rotation.hpp"
+#include "tumble/multibody/joints/joint_kind.hpp"
 #include "tumble/output/animation_assets.hpp"
 
 namespace tumble {
@@ -322,10 +323,7 @@ AnimationScene make_animation_scene(const Scenario& scenario) {
     if (held == scenario.bodies.end()) continue;
     AnimationJoint joint;
     joint.name = spec.name;
-    joint.type = spec.type == JointType::Ball        ? "ball"
-                 : spec.type == JointType::Hinge     ? "hinge"
-                 : spec.type == JointType::Prismatic ? "prismatic"
-                                                     : "fixed";
+    joint.type = std::string(joint_kind(spec.type).type_name());
     joint.body = static_cast<std::size_t>(held - scenario.bodies.begin());
     // At t = 0, from the body's COM in its axes (the rows carry the COM and the orientation).
     const Vec3 r_G_W = held->position_W + held->R_WB * held->mass_properties.com;

@@ -10,17 +10,17 @@
 //   1 sliding / 2 rolling), then per force element, motor, impulse, lock and contact E: E.P E.W
 //   (power now, work since t0), then per body B: B.w1 B.w2 B.w3 (its angular velocity in its own
 //   axes: the chapter's omega_1, omega_2, omega_3 of Euler's equations), then per joint J its own
-//   coordinates: a hinge's J.angle J.rate (rad, rad/s), a slider's J.travel J.speed (m, m/s), a
-//   ball joint's J.rx J.ry J.rz (the rotation vector of its second body relative to its first,
-//   rad, the first's axes); a fixed joint none; then, in a planar scenario, per body B: B.angle
-//   B.rate (its angle about z, rad, run on past a turn, and its rate, rad/s).
+//   coordinates as its kind names them (multibody/joints/: a hinge's J.angle J.rate (rad,
+//   rad/s), a slider's J.travel J.speed (m, m/s), a ball joint's J.rx J.ry J.rz (the rotation
+//   vector of its second body relative to its first, rad, the first's axes), a fixed joint
+//   none); then, in a planar scenario, per body B: B.angle B.rate (its angle about z, rad, run
+//   on past a turn, and its rate, rad/s).
 #include <cmath>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "tumble/dynamics/joint_type.hpp"
 #include "tumble/output/output_row.hpp"
 
 namespace tumble {
@@ -29,7 +29,9 @@ namespace tumble {
 struct ColumnLayout {
   std::vector<std::string> bodies;
   std::vector<std::string> joints;
-  std::vector<JointType> joint_types;  // as many as joints: which coordinates each has
+  // As many as joints: the names of each one's own coordinates' columns (its kind's
+  // coordinate_columns(), "angle", "rate").
+  std::vector<std::vector<std::string>> joint_coordinates;
   std::vector<std::string> contacts;
   std::vector<std::string> elements;  // Formulation::element_names()
   bool planar = false;                // each body's angle and rate about z close the row
@@ -122,41 +124,14 @@ void for_each_column(const ColumnLayout& layout, Column&& column) {
       });
     }
   }
-  static constexpr std::string_view kRotation[3] = {"rx", "ry", "rz"};
   for (std::size_t j = 0; j < layout.joints.size(); ++j) {
-    const auto coordinates = [j](Row row) -> const JointCoordinates* {
-      return row.extras != nullptr && j < row.extras->coordinates.size()
-                 ? &row.extras->coordinates[j]
-                 : nullptr;
-    };
-    const auto position = [coordinates](Row row) {
-      const JointCoordinates* c = coordinates(row);
-      return c ? c->position : 0.0;
-    };
-    const auto rate = [coordinates](Row row) {
-      const JointCoordinates* c = coordinates(row);
-      return c ? c->rate : 0.0;
-    };
-    const std::string_view joint = layout.joints[j];
-    switch (layout.joint_types[j]) {
-      case JointType::Hinge:
-        column(joint, "angle", position);
-        column(joint, "rate", rate);
-        break;
-      case JointType::Prismatic:
-        column(joint, "travel", position);
-        column(joint, "speed", rate);
-        break;
-      case JointType::Ball:
-        for (int k = 0; k < 3; ++k) {
-          column(joint, kRotation[k], [coordinates, k](Row row) {
-            const JointCoordinates* c = coordinates(row);
-            return c ? c->rotation(k) : 0.0;
-          });
-        }
-        break;
-      default:
-        break;
+    const std::vector<std::string>& names = layout.joint_coordinates[j];
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      column(layout.joints[j], names[i], [j, i](Row row) {
+        return row.extras != nullptr && j < row.extras->coordinates.size()
+                   ? row.extras->coordinates[j].values[i]
+                   : 0.0;
+      });
     }
   }
   if (!layout.planar) return;

@@ -1,20 +1,77 @@
-// `joints:`: a mapping from each joint's name to {type: ball | hinge | prismatic | fixed,
-// bodies: [a, b] (or body: b, held by ground), at: world point at t = 0, axis:, motor:, lock:
-// (hinge and prismatic)}.
+// `joints:`: a mapping from each joint's name to {type: ball | hinge | prismatic | fixed |
+// cylindrical | universal, bodies: [a, b] (or body: b, held by ground), at: world point at t = 0,
+// axis:, motor: (hinge, prismatic, cylindrical), axes: (universal), lock: (all but ball and
+// fixed)}.
 #include <fmt/format.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 
+#include "tumble/multibody/joints/joint_kind.hpp"
 #include "tumble/scenario/readers.hpp"
 
 namespace tumble::scenario_reading {
 namespace {
 
-const std::vector<std::string> kJointTypes = {"ball", "hinge", "prismatic", "fixed"};
+// The types a scenario names, as the joints' kinds name themselves (multibody/joints/).
+std::vector<std::string> joint_types() {
+  std::vector<std::string> names;
+  for (const std::string_view name : joint_type_names()) names.emplace_back(name);
+  return names;
+}
+// "ball, hinge, prismatic and fixed" (with `last` "or": "... or fixed").
+std::string joint_types_listed(std::string_view last) {
+  std::vector<std::string> names = joint_types();
+  const std::string final_name = names.back();
+  names.pop_back();
+  return join(names) + " " + std::string(last) + " " + final_name;
+}
 
-// A hinge's motor gives speed: (rad/s) or torque: (N m); a slider's speed: (m/s) or force: (N).
+// A motor's from: and to: (s), to after from.
+void read_motor_schedule(const Reader& reader, const MapReader& map, MotorSpec& motor) {
+  if (const auto f = map.find("from")) motor.from = reader.number(*f);
+  if (const auto f = map.find("to")) {
+    motor.to = reader.number(*f);
+    if (!(motor.from < motor.to)) {
+      reader.fail_at_value(*f, fmt::format("to ({} s) must be later than from ({} s)",
+                                           format_number(motor.to), format_number(motor.from)));
+    }
+  }
+}
+
+// A hinge's motor gives speed: (rad/s) or torque: (N m); a slider's speed: (m/s) or force: (N);
+// a cylindrical joint's torque: (N m, its turn) or force: (N, its slide).
+MotorSpec read_cylindrical_motor(const Reader& reader, const Field& field) {
+  const MapReader map(reader, field, "a motor {torque: N m} or {force: N}, with from:, to:");
+  map.allow_only({"torque", "force", "from", "to"}, "a cylindrical joint's motor",
+                 [](const std::string& key) -> std::string {
+                   if (key != "speed") return "";
+                   return "a cylindrical joint's motor gives a torque: about its axis or a "
+                          "force: along it; a speed is prescribed on a hinge or a slider";
+                 });
+  MotorSpec motor;
+  motor.where = reader.location(field.key_mark);
+  const auto torque = map.find("torque");
+  const auto force = map.find("force");
+  if (torque && force) {
+    reader.fail_at_key(*force, "a motor drives one freedom: the torque or the force, not both");
+  }
+  if (!torque && !force) {
+    reader.fail_at_value(field,
+                         "give the motor's torque: (N m, about the axis) or force: (N, "
+                         "along it)");
+  }
+  motor.kind = MotorSpec::Kind::Effort;
+  motor.freedom = force ? 1 : 0;
+  motor.value = reader.number(force ? *force : *torque);
+  read_motor_schedule(reader, map, motor);
+  return motor;
+}
+
 MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
+  if (type == JointType::Cylindrical) return read_cylindrical_motor(reader, field);
   const bool slider = type == JointType::Prismatic;
   const std::string effort_key = slider ? "force" : "torque";
   const std::string speed_unit = slider ? "m/s" : "rad/s";
@@ -37,48 +94,57 @@ MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
   }
   motor.kind = speed ? MotorSpec::Kind::Speed : MotorSpec::Kind::Effort;
   motor.value = reader.number(speed ? *speed : *effort);
-  if (const auto f = map.find("from")) motor.from = reader.number(*f);
-  if (const auto f = map.find("to")) {
-    motor.to = reader.number(*f);
-    if (!(motor.from < motor.to)) {
-      reader.fail_at_value(*f, fmt::format("to ({} s) must be later than from ({} s)",
-                                           format_number(motor.to), format_number(motor.from)));
-    }
-  }
+  read_motor_schedule(reader, map, motor);
   return motor;
 }
 
-// A hinge's or a slider's motor and lock, after its axis.
+// A hinge's, a slider's or a cylindrical joint's motor and lock, after its axis.
 JointSpec read_drive(const Reader& reader, const MapReader& map, JointSpec& joint);
+// A universal joint's two axes (the first fixed in body a, the second in body b, at right
+// angles), and its lock.
+JointSpec read_universal_axes(const Reader& reader, const MapReader& map, JointSpec& joint);
 
 JointSpec read_joint(const Reader& reader, const Field& field,
                      const std::vector<BodySpec>& bodies) {
+  std::string types_alternatives;
+  for (const std::string_view name : joint_type_names()) {
+    types_alternatives += (types_alternatives.empty() ? "" : " | ") + std::string(name);
+  }
   const MapReader map(reader, field,
-                      "a joint {type: ball | hinge | prismatic | fixed, bodies: [a, b], at: [x, "
-                      "y, z]}");
+                      "a joint {type: " + types_alternatives + ", bodies: [a, b], at: [x, y, z]}");
   JointSpec joint;
   joint.name = field.key();
   joint.where = reader.location(field.key_mark);
   check_name(reader, field, joint.name, "joint");
   if (joint.name == kGroundName) reader.fail_at_key(field, "ground names the fixed world");
 
-  const Field type_field = map.require("type", "ball, hinge, prismatic or fixed");
+  const Field type_field = map.require("type", joint_types_listed("or"));
   const std::string type = reader.text(type_field);
-  if (std::find(kJointTypes.begin(), kJointTypes.end(), type) == kJointTypes.end()) {
+  if (joint_kind_named(type, &joint.type) == nullptr) {
+    const std::vector<std::string> types = joint_types();
     std::string why = "unknown joint type '" + type + "'";
-    if (const auto match = closest_match(type, kJointTypes))
-      why += "; did you mean '" + *match + "'?";
-    reader.fail_at_value(type_field, why + " (the types are ball, hinge, prismatic and fixed)");
+    if (const auto match = closest_match(type, types)) why += "; did you mean '" + *match + "'?";
+    reader.fail_at_value(type_field, why + " (the types are " + joint_types_listed("and") + ")");
   }
-  joint.type = type == "ball"        ? JointType::Ball
-               : type == "hinge"     ? JointType::Hinge
-               : type == "prismatic" ? JointType::Prismatic
-                                     : JointType::Fixed;
   std::vector<std::string> keys = {"type", "bodies", "body", "at"};
+  const bool universal = joint.type == JointType::Universal;
   if (has_axis(joint.type)) keys.insert(keys.end(), {"axis", "motor", "lock"});
+  if (universal) keys.insert(keys.end(), {"axes", "lock"});
   map.allow_only(keys, "a " + type + " joint", [&](const std::string& key) -> std::string {
-    if (key == "axis" || key == "motor" || key == "lock") {
-      return "only a hinge or a prismatic joint has " + key + " (this joint is a " + type + ")";
+    if (universal && key == "axis") {
+      return "a universal joint has two axes: axes: [[x, y, z], [x, y, z]]";
+    }
+    if (universal && key == "motor") {
+      return "a universal joint takes no motor: drive a shaft it joins (a hinge's motor)";
+    }
+    if (key == "axis" || key == "motor") {
+      return "only a hinge, a prismatic or a cylindrical joint has " + key + " (this joint is a " +
+             type + ")";
+    }
+    if (key == "lock") return "a " + type + " joint has no freedom to lock";
+    if (key == "axes") {
+      return "only a universal joint has axes (this joint is a " + type +
+             (has_axis(joint.type) ? "; give its one axis: axis: [x, y, z])" : ")");
     }
     return "";
   });
@@ -109,12 +175,15 @@ JointSpec read_joint(const Reader& reader, const Field& field,
   }
   joint.at_W =
       reader.point_or_vector(map.require("at", "the joint's point, world coordinates at t = 0"));
-  if (reader.planar() && joint.type == JointType::Ball) {
+  if (reader.planar() && (joint.type == JointType::Ball || joint.type == JointType::Universal ||
+                          joint.type == JointType::Cylindrical)) {
     reader.fail_at_value(field,
                          "a planar scenario's joints are hinges (about z), sliders and "
-                         "welds; a ball joint would let the bodies leave the plane");
+                         "welds; a " +
+                             type + " joint would let the bodies leave the plane");
   }
 
+  if (universal) return read_universal_axes(reader, map, joint);
   if (!has_axis(joint.type)) return joint;
   if (reader.planar() && joint.type == JointType::Hinge) {
     // Its axis is the plane's normal.
@@ -124,13 +193,46 @@ JointSpec read_joint(const Reader& reader, const Field& field,
     joint.axis_W = Vec3::UnitZ();
     return read_drive(reader, map, joint);
   }
-  const Field axis_field =
-      map.require("axis", joint.type == JointType::Hinge
-                              ? "the hinge's direction [x, y, z], world at t = 0"
-                              : "the direction the slider moves along [x, y, z], world at t = 0");
+  const Field axis_field = map.require(
+      "axis", joint.type == JointType::Hinge ? "the hinge's direction [x, y, z], world at t = 0"
+              : joint.type == JointType::Prismatic
+                  ? "the direction the slider moves along [x, y, z], world at t = 0"
+                  : "the direction it turns about and slides along [x, y, z], world at t = 0");
   const Vec3 axis = reader.point_or_vector(axis_field);
   if (!(axis.norm() > 0.0)) reader.fail_at_value(axis_field, "the axis must not be zero");
   joint.axis_W = axis.normalized();
+  return read_drive(reader, map, joint);
+}
+
+JointSpec read_universal_axes(const Reader& reader, const MapReader& map, JointSpec& joint) {
+  const Field axes_field =
+      map.require("axes",
+                  "its two axes [[x, y, z], [x, y, z]], world at t = 0: the first turns in body a, "
+                  "the second in body b, at right angles");
+  const std::vector<Field> items = reader.items(axes_field, "of two axes [[x, y, z], [x, y, z]]");
+  if (items.size() != 2) {
+    reader.fail_at_value(axes_field,
+                         fmt::format("a universal joint has two axes, the first fixed in body a "
+                                     "and the second in body b; got {}",
+                                     items.size()));
+  }
+  std::array<Vec3, 2> axes;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Vec3 axis = reader.point_or_vector(items[i]);
+    if (!(axis.norm() > 0.0)) reader.fail_at_value(items[i], "an axis must not be zero");
+    axes[i] = axis.normalized();
+  }
+  // The cross holds its arms at right angles: two axes that are not would not stay joined.
+  const double cosine = axes[0].dot(axes[1]);
+  if (!(std::abs(cosine) <= 1e-9)) {
+    reader.fail_at_value(
+        axes_field,
+        fmt::format("the two axes of a universal joint are at right angles (its "
+                    "cross holds them so); these are at {:.9g} degrees",
+                    std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi));
+  }
+  joint.first_axis_W = axes[0];
+  joint.axis_W = axes[1];
   return read_drive(reader, map, joint);
 }
 

@@ -92,10 +92,11 @@ inline constexpr const char* kGroundName = "ground";
 
 // `motor:` of a hinge: a prescribed relative speed or a torque, optionally on a schedule.
 struct MotorSpec {
-  // Speed: rad/s about a hinge, m/s along a slider; Effort: `torque:` (N m) about a hinge,
-  // `force:` (N) along a slider.
+  // Speed: rad/s about a hinge, m/s along a slider; Effort: `torque:` (N m) about a hinge's or a
+  // cylindrical joint's axis, `force:` (N) along a slider's or a cylindrical joint's.
   enum class Kind { None, Speed, Effort } kind = Kind::None;
   double value = 0.0;
+  int freedom = 0;  // a cylindrical joint's: 0 its turn (torque:), 1 its slide (force:)
   double from = -std::numeric_limits<double>::infinity();  // s
   double to = std::numeric_limits<double>::infinity();     // s
   SourceLocation where;
@@ -106,10 +107,14 @@ struct JointSpec {
   std::string name;                  // the key under `joints:`
   std::string body_a = kGroundName;  // `bodies: [a, b]`, or `body: b` (then a is ground)
   std::string body_b;
-  Vec3 at_W = Vec3::Zero();     // the joint point, world at t = 0, m
-  Vec3 axis_W = Vec3::UnitZ();  // hinge, prismatic: unit axis, world at t = 0
-  MotorSpec motor;              // hinge, prismatic
-  double lock_at = std::numeric_limits<double>::infinity();  // hinge, prismatic: `lock: {at: t}`
+  Vec3 at_W = Vec3::Zero();  // the joint point, world at t = 0, m
+  // hinge, prismatic, cylindrical: unit axis, world at t = 0; universal: the second axis (fixed
+  // in b), with first_axis_W the first (fixed in a), at right angles
+  Vec3 axis_W = Vec3::UnitZ();
+  Vec3 first_axis_W = Vec3::UnitX();
+  MotorSpec motor;  // hinge, prismatic, cylindrical
+  // hinge, prismatic, cylindrical, universal: `lock: {at: t}`
+  double lock_at = std::numeric_limits<double>::infinity();
   SourceLocation where;
 };
 

@@ -106,10 +106,12 @@ JointModel joint_model(const Scenario& scenario, const JointSpec& spec) {
   const Mat3 R_WB = orientation(scenario, joint.body_b);
   joint.R_AB0 = R_WA.transpose() * R_WB;
   joint.axis_B = R_WB.transpose() * spec.axis_W;
+  joint.axis_A = R_WA.transpose() * spec.first_axis_W;
   joint.motor.kind = spec.motor.kind == MotorSpec::Kind::Speed    ? JointMotor::Kind::Speed
                      : spec.motor.kind == MotorSpec::Kind::Effort ? JointMotor::Kind::Effort
                                                                   : JointMotor::Kind::None;
   joint.motor.value = spec.motor.value;
+  joint.motor.freedom = spec.motor.freedom;
   joint.motor.from = spec.motor.from;
   joint.motor.to = spec.motor.to;
   joint.lock_at = spec.lock_at;

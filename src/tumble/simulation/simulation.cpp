@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "tumble/math/rotation.hpp"
+#include "tumble/multibody/joints/joint_kind.hpp"
 #include "tumble/simulation/exact_integrator.hpp"
 #include "tumble/simulation/make_formulation.hpp"
 #include "tumble/simulation/model_from_scenario.hpp"
@@ -365,7 +366,10 @@ ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulat
   for (const BodySpec& b : scenario.bodies) layout.bodies.push_back(b.name);
   for (const JointSpec& j : scenario.joints) {
     layout.joints.push_back(j.name);
-    layout.joint_types.push_back(j.type);
+    std::vector<std::string>& names = layout.joint_coordinates.emplace_back();
+    for (const CoordinateName& name : joint_kind(j.type).coordinate_columns()) {
+      names.emplace_back(name.suffix);
+    }
   }
   for (const ContactSpec& c : scenario.contacts) layout.contacts.push_back(c.name);
   layout.elements = formulation.element_names();

@@ -201,8 +201,9 @@ RunRecorder::~RunRecorder() = default;
 bool RunRecorder::fits(const ColumnLayout& layout, const Scenario& scenario) const {
   // The same owners give the same columns.
   if (layout.bodies != layout_.bodies || layout.joints != layout_.joints ||
-      layout.joint_types != layout_.joint_types || layout.contacts != layout_.contacts ||
-      layout.elements != layout_.elements || layout.planar != layout_.planar ||
+      layout.joint_coordinates != layout_.joint_coordinates ||
+      layout.contacts != layout_.contacts || layout.elements != layout_.elements ||
+      layout.planar != layout_.planar ||
       scenario.parameters.size() != row_.parameter_names().size()) {
     return false;
   }

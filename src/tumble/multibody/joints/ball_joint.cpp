@@ -1,15 +1,14 @@
 #include "tumble/multibody/joints/ball_joint.hpp"
 
-#include "tumble/math/rotation.hpp"
-
 namespace tumble {
 
-int BallJoint::coordinate_count() const {
-  return 4;
-}
-int BallJoint::speed_count() const {
-  return 3;
-}
+namespace {
+
+constexpr CoordinateName kPositions[] = {{"rx", "rad"}, {"ry", "rad"}, {"rz", "rad"}};
+constexpr CoordinateName kSpeeds[] = {{"wx", "rad/s"}, {"wy", "rad/s"}, {"wz", "rad/s"}};
+constexpr int kBlocks[] = {3};
+
+}  // namespace
 
 void BallJoint::set_motion_subspace(TreeJoint& joint) const {
   joint.S.resize(6, 3);
@@ -20,7 +19,7 @@ void BallJoint::set_motion_subspace(TreeJoint& joint) const {
 void BallJoint::calc_placement(const TreeJoint& joint, const VecX& y, Mat3& R_PC,
                                Vec3& p_PC_P) const {
   R_PC = rotation_at(y, joint.q);
-  p_PC_P = joint.p_PJ_P - R_PC * joint.p_CJ_C;
+  p_PC_P = offset_about_joint_point<double>(joint, R_PC);
 }
 
 void BallJoint::write_coordinate_rates(const TreeJoint& joint, const VecX& y,
@@ -43,5 +42,77 @@ void BallJoint::displace(const TreeJoint& joint, const SpeedStep& move, const Ma
                          VecX& y) const {
   turn_quaternion(y, joint.q, move.head<3>());
 }
+
+std::span<const CoordinateName> BallJoint::coordinate_columns() const {
+  return kPositions;
+}
+
+// R_AB = R_WA^T R_WB, as a rotation vector in A's axes.
+void BallJoint::calc_coordinate_columns(const TreeJoint& /*joint*/, const VecX& /*y*/,
+                                        const BodyState& a, const BodyState& b,
+                                        std::span<double> values) const {
+  const Eigen::AngleAxisd turn(a.R_WB.transpose() * b.R_WB);
+  const Vec3 rotation = turn.angle() * turn.axis();
+  for (int k = 0; k < 3; ++k) values[static_cast<std::size_t>(k)] = rotation(k);
+}
+
+std::span<const CoordinateName> BallJoint::modal_positions() const {
+  return kPositions;
+}
+std::span<const CoordinateName> BallJoint::modal_speeds() const {
+  return kSpeeds;
+}
+std::span<const int> BallJoint::modal_position_blocks() const {
+  return kBlocks;
+}
+
+void BallJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /*sign*/,
+                               VecX& y) const {
+  turn_quaternion(y, joint.q, z_q.head<3>());
+}
+
+template <typename S>
+void BallJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                             JointMotionOf<S>& motion) const {
+  const Mat3 R_PC0 = rotation_at(at.y0, joint.q);
+  motion.R_PC = turned<S>(R_PC0, Vec3Of<S>(at.z_q.template head<3>()));
+  motion.p_PC_P = offset_about_joint_point<S>(joint, motion.R_PC);
+  motion.angles.resize(0);
+  motion.u = at.y0.segment(joint.v, 3).template cast<S>();
+  motion.u += at.z_u;
+  motion.S_C = joint.S.cast<S>();
+}
+
+template <typename S>
+void BallJoint::modal_rates(const TreeJoint& /*joint*/, const ModalJointPoint<S>& at,
+                            const JointMotionOf<S>& motion, const VecXOf<S>& u_dot,
+                            const Vec3Of<S>& /*v_G_W*/, const Vec3Of<S>& /*a_G_W*/,
+                            VecXOf<S>& z_q_rate, VecXOf<S>& z_u_rate) const {
+  z_q_rate = turn_rate<S>(Vec3Of<S>(at.z_q.template head<3>()), Vec3Of<S>(motion.u));
+  z_u_rate = u_dot;
+}
+
+// R -> R exp(beta [e]x): the turn grows along e, the speeds in its axes turn back.
+template <typename S>
+void BallJoint::modal_body_turn(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                                const Vec3& e_C, VecXOf<S>& z_q_field, VecXOf<S>& z_u_field) const {
+  const Vec3Of<S> e = e_C.cast<S>();
+  z_q_field = turn_rate<S>(Vec3Of<S>(at.z_q.template head<3>()), e);
+  const Vec3Of<S> omega =
+      at.y0.template segment<3>(joint.v).template cast<S>() + Vec3Of<S>(at.z_u.template head<3>());
+  z_u_field = -e.cross(omega);
+}
+
+// Hung from ground, R_WC -> exp(beta [k]x) R_WC: in the child's axes a turn about R_WC^T k.
+template <typename S>
+void BallJoint::modal_world_turn(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                                 const Vec3& k_W, VecXOf<S>& z_q_field,
+                                 VecXOf<S>& /*z_u_field*/) const {
+  const Vec3Of<S> r = at.z_q.template head<3>();
+  const Mat3Of<S> R_WC = turned<S>(rotation_at(at.y0, joint.q), r);
+  z_q_field = turn_rate<S>(r, Vec3Of<S>(R_WC.transpose() * k_W.cast<S>()));
+}
+
+template class JointKindOf<BallJoint>;
 
 }  // namespace tumble

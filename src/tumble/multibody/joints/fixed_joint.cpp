@@ -2,13 +2,6 @@
 
 namespace tumble {
 
-int FixedJoint::coordinate_count() const {
-  return 0;
-}
-int FixedJoint::speed_count() const {
-  return 0;
-}
-
 void FixedJoint::set_motion_subspace(TreeJoint& joint) const {
   joint.S.resize(6, 0);
 }
@@ -16,16 +9,19 @@ void FixedJoint::set_motion_subspace(TreeJoint& joint) const {
 void FixedJoint::calc_placement(const TreeJoint& joint, const VecX& /*y*/, Mat3& R_PC,
                                 Vec3& p_PC_P) const {
   R_PC = joint.R_PC0;
-  p_PC_P = joint.p_PJ_P - R_PC * joint.p_CJ_C;
+  p_PC_P = offset_about_joint_point<double>(joint, R_PC);
 }
 
-void FixedJoint::write_coordinate_rates(const TreeJoint& /*joint*/, const VecX& /*y*/,
-                                        const BodyState& /*child*/, VecX& /*dydt*/) const {}
+template <typename S>
+void FixedJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& /*at*/,
+                              JointMotionOf<S>& motion) const {
+  motion.R_PC = joint.R_PC0.cast<S>();
+  motion.p_PC_P = offset_about_joint_point<S>(joint, motion.R_PC);
+  motion.angles.resize(0);
+  motion.u.resize(0);
+  motion.S_C.resize(6, 0);
+}
 
-void FixedJoint::pack(const TreeJoint& /*joint*/, const BodyState& /*parent*/,
-                      const BodyState& /*child*/, VecX& /*y*/) const {}
-
-void FixedJoint::displace(const TreeJoint& /*joint*/, const SpeedStep& /*move*/,
-                          const Mat3& /*R_WC*/, VecX& /*y*/) const {}
+template class JointKindOf<FixedJoint>;
 
 }  // namespace tumble

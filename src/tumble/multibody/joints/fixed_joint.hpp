@@ -1,22 +1,49 @@
 #pragma once
-// A weld: no coordinates, no speeds; the child keeps its placement relative to the parent.
-#include "tumble/multibody/joints/joint_kind.hpp"
+// A weld: no coordinates, no speeds; the child keeps its placement relative to the parent. No
+// columns of its own, nothing in a linearisation.
+#include "tumble/multibody/joints/joint_kind_of.hpp"
 
 namespace tumble {
 
-class FixedJoint final : public JointKind {
+class FixedJoint final : public JointKindOf<FixedJoint> {
  public:
-  int coordinate_count() const override;
-  int speed_count() const override;
+  std::string_view type_name() const override { return "fixed"; }
+  int coordinate_count() const override { return 0; }
+  int speed_count() const override { return 0; }
   void set_motion_subspace(TreeJoint& joint) const override;
   void calc_placement(const TreeJoint& joint, const VecX& y, Mat3& R_PC,
                       Vec3& p_PC_P) const override;
-  void write_coordinate_rates(const TreeJoint& joint, const VecX& y, const BodyState& child,
-                              VecX& dydt) const override;
-  void pack(const TreeJoint& joint, const BodyState& parent, const BodyState& child,
-            VecX& y) const override;
-  void displace(const TreeJoint& joint, const SpeedStep& move, const Mat3& R_WC,
-                VecX& y) const override;
+  void write_coordinate_rates(const TreeJoint& /*joint*/, const VecX& /*y*/,
+                              const BodyState& /*child*/, VecX& /*dydt*/) const override {}
+  void pack(const TreeJoint& /*joint*/, const BodyState& /*parent*/, const BodyState& /*child*/,
+            VecX& /*y*/) const override {}
+  void displace(const TreeJoint& /*joint*/, const SpeedStep& /*move*/, const Mat3& /*R_WC*/,
+                VecX& /*y*/) const override {}
+
+  std::span<const CoordinateName> coordinate_columns() const override { return {}; }
+  void calc_coordinate_columns(const TreeJoint& /*joint*/, const VecX& /*y*/,
+                               const BodyState& /*a*/, const BodyState& /*b*/,
+                               std::span<double> /*values*/) const override {}
+
+  std::span<const CoordinateName> modal_positions() const override { return {}; }
+  std::span<const CoordinateName> modal_speeds() const override { return {}; }
+  std::span<const int> modal_position_blocks() const override { return {}; }
+  void displace_modal(const TreeJoint& /*joint*/, const VecX& /*z_q*/, double /*sign*/,
+                      VecX& /*y*/) const override {}
+  template <typename S>
+  void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                    JointMotionOf<S>& motion) const;
+  template <typename S>
+  void modal_rates(const TreeJoint& /*joint*/, const ModalJointPoint<S>& /*at*/,
+                   const JointMotionOf<S>& /*motion*/, const VecXOf<S>& /*u_dot*/,
+                   const Vec3Of<S>& /*v_G_W*/, const Vec3Of<S>& /*a_G_W*/, VecXOf<S>& /*z_q_rate*/,
+                   VecXOf<S>& /*z_u_rate*/) const {}
+  template <typename S>
+  void modal_world_turn(const TreeJoint& /*joint*/, const ModalJointPoint<S>& /*at*/,
+                        const Vec3& /*k_W*/, VecXOf<S>& /*z_q_field*/,
+                        VecXOf<S>& /*z_u_field*/) const {}
 };
+// Compiled for both scalars in fixed_joint.cpp.
+extern template class JointKindOf<FixedJoint>;
 
 }  // namespace tumble

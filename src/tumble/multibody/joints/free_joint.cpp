@@ -2,12 +2,21 @@
 
 namespace tumble {
 
-int FreeJoint::coordinate_count() const {
-  return 7;
+namespace {
+
+constexpr CoordinateName kPositions[] = {{"x", "m"},    {"y", "m"},    {"z", "m"},
+                                         {"rx", "rad"}, {"ry", "rad"}, {"rz", "rad"}};
+constexpr CoordinateName kSpeeds[] = {{"vx", "m/s"},   {"vy", "m/s"},   {"vz", "m/s"},
+                                      {"wx", "rad/s"}, {"wy", "rad/s"}, {"wz", "rad/s"}};
+// Where its COM is, and how it is turned.
+constexpr int kBlocks[] = {3, 3};
+
+// Its COM's velocity at y0, world.
+Vec3 v_G0_W(const TreeJoint& joint, const VecX& y0) {
+  return rotation_at(y0, joint.q + 3) * y0.segment<3>(joint.v + 3);
 }
-int FreeJoint::speed_count() const {
-  return 6;
-}
+
+}  // namespace
 
 void FreeJoint::set_motion_subspace(TreeJoint& joint) const {
   joint.S = Mat6::Identity();
@@ -42,5 +51,79 @@ void FreeJoint::displace(const TreeJoint& joint, const SpeedStep& move, const Ma
   y.segment<3>(joint.q) += R_WC * move.tail<3>();
   turn_quaternion(y, joint.q + 3, move.head<3>());
 }
+
+std::span<const CoordinateName> FreeJoint::modal_positions() const {
+  return kPositions;
+}
+std::span<const CoordinateName> FreeJoint::modal_speeds() const {
+  return kSpeeds;
+}
+std::span<const int> FreeJoint::modal_position_blocks() const {
+  return kBlocks;
+}
+
+void FreeJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /*sign*/,
+                               VecX& y) const {
+  y.segment<3>(joint.q) += z_q.head<3>();
+  turn_quaternion(y, joint.q + 3, z_q.tail<3>());
+}
+
+template <typename S>
+void FreeJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                             JointMotionOf<S>& motion) const {
+  motion.R_PC = turned<S>(rotation_at(at.y0, joint.q + 3), Vec3Of<S>(at.z_q.template tail<3>()));
+  motion.p_PC_P = at.y0.template segment<3>(joint.q).template cast<S>();
+  motion.p_PC_P += at.z_q.template head<3>();
+  motion.angles.resize(0);
+  // Speeds (omega_C, v_C) in the child's axes; the modal speed is v_G in world axes.
+  motion.u = at.y0.segment(joint.v, 6).template cast<S>();
+  motion.u.template head<3>() += at.z_u.template tail<3>();
+  motion.u.template tail<3>() = motion.R_PC.transpose() * (v_G0_W(joint, at.y0).template cast<S>() +
+                                                           at.z_u.template head<3>());
+  motion.S_C = joint.S.cast<S>();
+}
+
+template <typename S>
+void FreeJoint::modal_rates(const TreeJoint& /*joint*/, const ModalJointPoint<S>& at,
+                            const JointMotionOf<S>& motion, const VecXOf<S>& u_dot,
+                            const Vec3Of<S>& v_G_W, const Vec3Of<S>& a_G_W, VecXOf<S>& z_q_rate,
+                            VecXOf<S>& z_u_rate) const {
+  z_q_rate.template head<3>() = v_G_W;
+  z_q_rate.template tail<3>() =
+      turn_rate<S>(Vec3Of<S>(at.z_q.template tail<3>()), Vec3Of<S>(motion.u.template head<3>()));
+  z_u_rate.template head<3>() = a_G_W;
+  z_u_rate.template tail<3>() = u_dot.template head<3>();
+}
+
+// R -> R exp(beta [e]x): the turn grows along e, the angular velocity in its axes turns back.
+template <typename S>
+void FreeJoint::modal_body_turn(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                                const Vec3& e_C, VecXOf<S>& z_q_field, VecXOf<S>& z_u_field) const {
+  const Vec3Of<S> e = e_C.cast<S>();
+  z_q_field.template tail<3>() = turn_rate<S>(Vec3Of<S>(at.z_q.template tail<3>()), e);
+  const Vec3Of<S> omega =
+      at.y0.template segment<3>(joint.v).template cast<S>() + Vec3Of<S>(at.z_u.template tail<3>());
+  z_u_field.template tail<3>() = -e.cross(omega);
+}
+
+// The whole turned about k: its COM and velocity turn with it (world), and its axes (in them, a
+// turn about R_WC^T k).
+template <typename S>
+void FreeJoint::modal_world_turn(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                                 const Vec3& k_W, VecXOf<S>& z_q_field,
+                                 VecXOf<S>& z_u_field) const {
+  const Vec3Of<S> k = k_W.cast<S>();
+  const Vec3Of<S> r = at.z_q.template tail<3>();
+  const Mat3Of<S> R_WC = turned<S>(rotation_at(at.y0, joint.q + 3), r);
+  z_q_field.template tail<3>() = turn_rate<S>(r, Vec3Of<S>(R_WC.transpose() * k));
+  const Vec3Of<S> r_G =
+      at.y0.template segment<3>(joint.q).template cast<S>() + Vec3Of<S>(at.z_q.template head<3>());
+  z_q_field.template head<3>() = k.cross(r_G);
+  const Vec3Of<S> v_G =
+      v_G0_W(joint, at.y0).template cast<S>() + Vec3Of<S>(at.z_u.template head<3>());
+  z_u_field.template head<3>() = k.cross(v_G);
+}
+
+template class JointKindOf<FreeJoint>;
 
 }  // namespace tumble

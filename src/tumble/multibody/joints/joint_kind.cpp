@@ -1,32 +1,74 @@
 #include "tumble/multibody/joints/joint_kind.hpp"
 
+#include <array>
+#include <stdexcept>
+#include <vector>
+
 #include "tumble/multibody/joints/ball_joint.hpp"
+#include "tumble/multibody/joints/cylindrical_joint.hpp"
 #include "tumble/multibody/joints/fixed_joint.hpp"
 #include "tumble/multibody/joints/free_joint.hpp"
 #include "tumble/multibody/joints/hinge_joint.hpp"
 #include "tumble/multibody/joints/prismatic_joint.hpp"
+#include "tumble/multibody/joints/universal_joint.hpp"
 
 namespace tumble {
 
+namespace {
+
+// Every kind, once; the scenario's names in the order docs/scenario.md lists them.
+struct Registered {
+  JointType type;
+  const JointKind& kind;
+};
+
+template <typename Kind>
+const JointKind& one() {
+  static const Kind kind;
+  return kind;
+}
+
+const std::array<Registered, 7>& registry() {
+  static const std::array<Registered, 7> kinds = {{
+      {JointType::Ball, one<BallJoint>()},
+      {JointType::Hinge, one<HingeJoint>()},
+      {JointType::Prismatic, one<PrismaticJoint>()},
+      {JointType::Fixed, one<FixedJoint>()},
+      {JointType::Cylindrical, one<CylindricalJoint>()},
+      {JointType::Universal, one<UniversalJoint>()},
+      {JointType::Free, one<FreeJoint>()},
+  }};
+  return kinds;
+}
+
+}  // namespace
+
 const JointKind& joint_kind(JointType type) {
-  static const FreeJoint free;
-  static const BallJoint ball;
-  static const HingeJoint hinge;
-  static const PrismaticJoint prismatic;
-  static const FixedJoint fixed;
-  switch (type) {
-    case JointType::Free:
-      return free;
-    case JointType::Ball:
-      return ball;
-    case JointType::Hinge:
-      return hinge;
-    case JointType::Prismatic:
-      return prismatic;
-    case JointType::Fixed:
-      return fixed;
+  for (const Registered& r : registry()) {
+    if (r.type == type) return r.kind;
   }
-  return fixed;
+  throw std::logic_error("a JointType without a kind: register it in joint_kind.cpp");
+}
+
+const JointKind* joint_kind_named(std::string_view name, JointType* type) {
+  for (const Registered& r : registry()) {
+    // A free joint is the tree's, for a body no joint holds: a scenario does not state one.
+    if (r.type == JointType::Free || r.kind.type_name() != name) continue;
+    if (type != nullptr) *type = r.type;
+    return &r.kind;
+  }
+  return nullptr;
+}
+
+std::span<const std::string_view> joint_type_names() {
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> out;
+    for (const Registered& r : registry()) {
+      if (r.type != JointType::Free) out.push_back(r.kind.type_name());
+    }
+    return out;
+  }();
+  return names;
 }
 
 Mat3 rotation_at(const VecX& y, Eigen::Index o) {

@@ -2,12 +2,23 @@
 
 namespace tumble {
 
-int PrismaticJoint::coordinate_count() const {
-  return 1;
+namespace {
+
+constexpr CoordinateName kPositions[] = {{"travel", "m"}};
+constexpr CoordinateName kSpeeds[] = {{"speed", "m/s"}};
+constexpr CoordinateName kColumns[] = {{"travel", "m"}, {"speed", "m/s"}};
+constexpr int kBlocks[] = {1};
+
+// The child's COM from the parent's: out to the parent's joint point, along the axis by the
+// travel d, back from the child's joint point to its COM.
+template <typename S>
+void place(const TreeJoint& joint, const S& travel, Mat3Of<S>& R_PC, Vec3Of<S>& p_PC_P) {
+  R_PC = joint.R_PC0.cast<S>();
+  p_PC_P =
+      joint.p_PJ_P.cast<S>() - R_PC * (joint.p_CJ_C.cast<S>() - travel * joint.axis_C.cast<S>());
 }
-int PrismaticJoint::speed_count() const {
-  return 1;
-}
+
+}  // namespace
 
 void PrismaticJoint::set_motion_subspace(TreeJoint& joint) const {
   joint.S.resize(6, 1);
@@ -15,12 +26,9 @@ void PrismaticJoint::set_motion_subspace(TreeJoint& joint) const {
   joint.S.col(0).tail<3>() = joint.axis_C;
 }
 
-// The child's COM from the parent's: out to the parent's joint point, along the axis by the
-// travel d, back from the child's joint point to its COM.
 void PrismaticJoint::calc_placement(const TreeJoint& joint, const VecX& y, Mat3& R_PC,
                                     Vec3& p_PC_P) const {
-  R_PC = joint.R_PC0;
-  p_PC_P = joint.p_PJ_P - R_PC * (joint.p_CJ_C - y(joint.q) * joint.axis_C);
+  place<double>(joint, y(joint.q), R_PC, p_PC_P);
 }
 
 void PrismaticJoint::write_coordinate_rates(const TreeJoint& joint, const VecX& y,
@@ -41,7 +49,55 @@ void PrismaticJoint::pack(const TreeJoint& joint, const BodyState& parent, const
 
 void PrismaticJoint::displace(const TreeJoint& joint, const SpeedStep& move, const Mat3& /*R_WC*/,
                               VecX& y) const {
-  y(joint.q) += move(0);
+  displace_numbers_by(joint, move, y);
 }
+
+std::span<const CoordinateName> PrismaticJoint::coordinate_columns() const {
+  return kColumns;
+}
+
+void PrismaticJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX& y,
+                                             const BodyState& /*a*/, const BodyState& /*b*/,
+                                             std::span<double> values) const {
+  write_number_columns(joint, y, values);
+}
+
+std::span<const CoordinateName> PrismaticJoint::modal_positions() const {
+  return kPositions;
+}
+std::span<const CoordinateName> PrismaticJoint::modal_speeds() const {
+  return kSpeeds;
+}
+std::span<const int> PrismaticJoint::modal_position_blocks() const {
+  return kBlocks;
+}
+
+void PrismaticJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
+                                    VecX& y) const {
+  displace_numbers(joint, z_q, sign, y);
+}
+
+template <typename S>
+void PrismaticJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                                  JointMotionOf<S>& motion) const {
+  modal_numbers<S>(joint, at, motion);
+  place<S>(joint, motion.angles(0), motion.R_PC, motion.p_PC_P);
+}
+
+template <typename S>
+void PrismaticJoint::modal_rates(const TreeJoint& /*joint*/, const ModalJointPoint<S>& at,
+                                 const JointMotionOf<S>& motion, const VecXOf<S>& u_dot,
+                                 const Vec3Of<S>& /*v_G_W*/, const Vec3Of<S>& /*a_G_W*/,
+                                 VecXOf<S>& z_q_rate, VecXOf<S>& z_u_rate) const {
+  modal_rates_of_numbers<S>(at, motion, u_dot, z_q_rate, z_u_rate);
+}
+
+// A slide does not turn its child.
+template <typename S>
+void PrismaticJoint::modal_world_turn(const TreeJoint& /*joint*/, const ModalJointPoint<S>& /*at*/,
+                                      const Vec3& /*k_W*/, VecXOf<S>& /*z_q_field*/,
+                                      VecXOf<S>& /*z_u_field*/) const {}
+
+template class JointKindOf<PrismaticJoint>;
 
 }  // namespace tumble

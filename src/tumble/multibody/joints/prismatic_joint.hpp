@@ -1,15 +1,17 @@
 #pragma once
 // A slider: q = the travel d of the child's joint point from the parent's along axis_C (0 at
 // t = 0), speed its rate. The child keeps its orientation relative to the parent (R_PC = R_PC0)
-// and moves at d' axis_C.
-#include "tumble/multibody/joints/joint_kind.hpp"
+// and moves at d' axis_C. Columns J.travel J.speed; in a linearisation the same, signed as the
+// scenario states the joint.
+#include "tumble/multibody/joints/joint_kind_of.hpp"
 
 namespace tumble {
 
-class PrismaticJoint final : public JointKind {
+class PrismaticJoint final : public JointKindOf<PrismaticJoint> {
  public:
-  int coordinate_count() const override;
-  int speed_count() const override;
+  std::string_view type_name() const override { return "prismatic"; }
+  int coordinate_count() const override { return 1; }
+  int speed_count() const override { return 1; }
   void set_motion_subspace(TreeJoint& joint) const override;
   void calc_placement(const TreeJoint& joint, const VecX& y, Mat3& R_PC,
                       Vec3& p_PC_P) const override;
@@ -19,6 +21,27 @@ class PrismaticJoint final : public JointKind {
             VecX& y) const override;
   void displace(const TreeJoint& joint, const SpeedStep& move, const Mat3& R_WC,
                 VecX& y) const override;
+
+  std::span<const CoordinateName> coordinate_columns() const override;
+  void calc_coordinate_columns(const TreeJoint& joint, const VecX& y, const BodyState& a,
+                               const BodyState& b, std::span<double> values) const override;
+
+  std::span<const CoordinateName> modal_positions() const override;
+  std::span<const CoordinateName> modal_speeds() const override;
+  std::span<const int> modal_position_blocks() const override;
+  void displace_modal(const TreeJoint& joint, const VecX& z_q, double sign, VecX& y) const override;
+  template <typename S>
+  void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                    JointMotionOf<S>& motion) const;
+  template <typename S>
+  void modal_rates(const TreeJoint& joint, const ModalJointPoint<S>& at,
+                   const JointMotionOf<S>& motion, const VecXOf<S>& u_dot, const Vec3Of<S>& v_G_W,
+                   const Vec3Of<S>& a_G_W, VecXOf<S>& z_q_rate, VecXOf<S>& z_u_rate) const;
+  template <typename S>
+  void modal_world_turn(const TreeJoint& joint, const ModalJointPoint<S>& at, const Vec3& k_W,
+                        VecXOf<S>& z_q_field, VecXOf<S>& z_u_field) const;
 };
+// Compiled for both scalars in prismatic_joint.cpp.
+extern template class JointKindOf<PrismaticJoint>;
 
 }  // namespace tumble

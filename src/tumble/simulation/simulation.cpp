@@ -139,6 +139,13 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
       throw std::invalid_argument(
           "rkmk4 moves orientations on the rotation group and needs formulation: body");
     }
+    // The reader refuses forces and joints with it; this keeps any model it cannot run from a
+    // run (where the integrator would throw).
+    if (sim.integrator == "exact" && !ExactIntegrator::fits(m->formulation->model())) {
+      throw std::invalid_argument(
+          "exact is for free bodies on which no force or torque acts (gravity is allowed); "
+          "remove forces, joints and contacts or choose dopri5");
+    }
     make_run_integrator(*m);  // refuses a control that does not fit, before any run
   } catch (const std::invalid_argument& e) {
     throw ScenarioError(sim.where, "simulate.integrator", e.what());

@@ -63,7 +63,7 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
 // The state vector of the scenario's initial bodies' states, checked as build_simulation_model
 // checks them: its y0. A model built from a scenario that differs only in the bodies' initial
 // velocities runs from this as that scenario's model would (a sweep's shared model). It
-// evaluates the formulation, so give it a run's (prepare_run's), not a shared model's.
+// evaluates the formulation, which writes its scratch: give it the run's own (prepare_run's).
 VecX initial_state_vector(const Scenario& scenario, const Formulation& formulation);
 // A run of the model from its initial state (set y0 for another).
 PreparedSimulation prepare_run(const SimulationModel& model);

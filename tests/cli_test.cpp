@@ -290,6 +290,35 @@ TEST(Cli, ARunStoppedByASignalLeavesNoPartialFile) {
   }
 }
 
+// `integrator: exact` with a scenario event (the prism's flip, on the closed form): the run
+// completes (exit 0), names the event where it happened, writes it to the events CSV and leaves
+// no temporary file.
+TEST(Cli, TheExactIntegratorRunsAScenariosEvents) {
+  const fs::path dir = fresh_dir("exact_event");
+  std::string text = slurp(example("tumbling_prism.yaml"));
+  const std::string dopri5 = "integrator: dopri5";
+  ASSERT_NE(text.find(dopri5), std::string::npos);
+  text.replace(text.find(dopri5), dopri5.size(), "integrator: exact");
+  text.replace(text.find("simulate:"), 0, "events:\n  - {name: flip, when: prism.w3 < 0}\n");
+  const fs::path p = write_file(dir, "exact_flip.yaml", text);
+  const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::size_t flip = r.out.find("event flip");
+  ASSERT_NE(flip, std::string::npos) << r.out;
+  const std::size_t line = r.out.rfind('\n', flip) + 1;
+  EXPECT_EQ(r.out.substr(line, flip - line), "  t = 9.66409483408  ") << r.out;
+  const auto events = read_csv(dir / "exact_flip_events.csv");
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[1][1], "\"event\"");  // texts are quoted
+  EXPECT_NEAR(std::stod(events[1][0]), 9.664094834075236, 1e-9);
+  std::set<std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    files.insert(entry.path().filename().string());
+  }
+  EXPECT_EQ(files, (std::set<std::string>{"exact_flip.yaml", "exact_flip_events.csv",
+                                          "tumbling_prism.csv"}));
+}
+
 TEST(Cli, UnwritableOutputDirectoryExitsFive) {
   const CommandResult r =
       run_tumble("run " + example("tumbling_prism.yaml") + " --out /proc/no_such_dir");

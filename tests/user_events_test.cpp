@@ -2,8 +2,9 @@
 // mode changes, against closed forms: a crate sliding with Coulomb friction stopped where it has
 // slid d, at t = (v0 - sqrt(v0^2 - 2 mu g d)) / (mu g); the half-speed instant v0 / (2 mu g);
 // the chapter's prism's first flip (the body-frame spin about k changing sign) at the 40-digit
-// reference's time. Also: the direction of an expression's crossing, the errors' locations, and
-// a run resumed from a checkpoint finding the same events.
+// reference's time, integrated and in closed form (`integrator: exact`). Also: the direction of an
+// expression's crossing, the errors' locations, and a run resumed from a checkpoint finding the
+// same events.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,8 @@
 
 #include "scenario_run.hpp"
 #include "test_files.hpp"
+#include "tumble/exact/torque_free.hpp"
+#include "tumble/simulation/table_run.hpp"
 #include "tumble/sweep/outcome.hpp"
 #include "tumble/sweep/sweep.hpp"
 
@@ -87,6 +90,50 @@ TEST(UserEvents, ThePrismsFlipAtTheReferencesTime) {
   ASSERT_EQ(run.result.user_events.size(), 2u);  // and again a period later, at 48.3 s
   EXPECT_EQ(run.result.user_events[0].name, "flip");
   EXPECT_NEAR(run.result.user_events[0].t, 9.664094834075236, 1e-9);
+}
+
+// The same flip with `integrator: exact` (examples/tumbling_prism.yaml, whose 20 s see it once):
+// the event is located on the closed form (the Euler-Poinsot solution, whose flip is 1.1e-14 s
+// from the reference's: tests/torque_free_test.cpp), which the exact integrator evaluates through
+// the scenario's events as through the formulation alone. A run stopped before the flip and
+// resumed (the integrator moved onto the new run's events) finds it at the same instant.
+TEST(UserEvents, ThePrismsFlipOnTheClosedForm) {
+  std::string text =
+      test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/tumbling_prism.yaml");
+  const std::string dopri5 = "integrator: dopri5";
+  ASSERT_NE(text.find(dopri5), std::string::npos);
+  text.replace(text.find(dopri5), dopri5.size(), "integrator: exact");
+  text.replace(text.find("simulate:"), 0, "events:\n  - {name: flip, when: prism.w3 < 0}\n");
+  const test::ScenarioRun run = test::run_inline_scenario(text, "exact_flip");
+  ASSERT_EQ(run.result.user_events.size(), 1u);
+  EXPECT_EQ(run.result.user_events[0].name, "flip");
+  EXPECT_NEAR(run.result.user_events[0].t, 9.664094834075236, 1e-9);
+  EXPECT_EQ(run.result.report.t_reached, 20.0);
+
+  // Over 60 s the spin turns back (at 29 s) and flips again a period of omega_B later: the
+  // events are looked for at the ends of steps that turn the prism by an eighth of a turn at
+  // most, not at the end of one step over the run (whose ends see no sign change).
+  std::string longer = text;
+  longer.replace(longer.find("duration: 20"), 12, "duration: 60");
+  const test::ScenarioRun twice = test::run_inline_scenario(longer, "exact_flips");
+  ASSERT_EQ(twice.result.user_events.size(), 2u);
+  EXPECT_EQ(twice.result.user_events[0].t, run.result.user_events[0].t);
+  const double period =
+      TorqueFreeMotion(Vec3(5.0, 20.0, 17.0).asDiagonal(), Mat3::Identity(), Vec3(0.0, 0.01, 1.0))
+          .period();
+  EXPECT_NEAR(twice.result.user_events[1].t, run.result.user_events[0].t + period, 1e-9);
+
+  const std::shared_ptr<const SimulationModel> model = build_simulation_model(run.scenario);
+  TableRunOptions stop;
+  stop.stop_at = 5.0;
+  const TableRun before = run_into_table(run.scenario, *model, stop);
+  ASSERT_TRUE(before.state.has_value());
+  EXPECT_TRUE(before.result.user_events.empty());
+  TableRunOptions resume;
+  resume.start = &*before.state;
+  const TableRun after = run_into_table(run.scenario, *model, resume);
+  ASSERT_EQ(after.result.user_events.size(), 1u);
+  EXPECT_EQ(after.result.user_events[0].t, run.result.user_events[0].t);
 }
 
 TEST(UserEvents, AnUnknownNameOrAMisplacedDirectionIsLocated) {

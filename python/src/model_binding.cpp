@@ -100,7 +100,7 @@ py::dict summary(const LoadedModel& loaded, const SimulationResult& result) {
   s["t_reached"] = report.t_reached;
   s["rows"] = result.rows;
   s["integrator"] = loaded.model->integrator;
-  s["formulation"] = loaded.model->formulation->name();
+  s["formulation"] = loaded.model->formulation.name();
   s["rtol"] = loaded.scenario.simulate.rtol;
   s["atol"] = loaded.scenario.simulate.atol;
   s["accepted_steps"] = report.stats.accepted_steps;
@@ -149,8 +149,7 @@ py::dict run(const LoadedModel& loaded, double stop_at, const SavedState* start)
 }
 
 std::vector<std::string> columns_of(const LoadedModel& loaded) {
-  const PreparedSimulation run = prepare_run(*loaded.model);
-  return column_names(column_layout(loaded.scenario, *run.formulation));
+  return column_names(column_layout(loaded.scenario, *loaded.model));
 }
 
 }  // namespace

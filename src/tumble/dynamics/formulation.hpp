@@ -78,6 +78,8 @@ class Formulation : public OdeSystem {
   double next_breakpoint(double t) const override { return model_.next_load_switch(t); }
   void at_breakpoint(double t, VecX& /*y*/) override { hybrid_.schedule_time = t; }
 
+  const Formulation* rigid_body_formulation() const final { return this; }
+
  protected:
   std::shared_ptr<const Model> shared_model_;
   const Model& model_;  // *shared_model_

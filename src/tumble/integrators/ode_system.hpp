@@ -13,6 +13,8 @@
 
 namespace tumble {
 
+class Formulation;  // dynamics/formulation.hpp
+
 enum class EventDirection { Both, Rising, Falling };  // which sign changes of g count
 
 // What the system asks for after it has seen a located event.
@@ -84,6 +86,12 @@ class OdeSystem {
   // evaluates its last stage AT the breakpoint and must see the mode of the interval before it.
   virtual double next_breakpoint(double t) const;
   virtual void at_breakpoint(double t, VecX& y);
+
+  // The rigid-body formulation whose equations this system is: itself, or the one it runs with
+  // more on top (the scenario's events); null for a system that is none. A method that does not
+  // integrate f but evaluates the bodies' motion in closed form (`integrator: exact`) reads the
+  // model and the state's layout (pack, unpack) from it.
+  virtual const Formulation* rigid_body_formulation() const { return nullptr; }
 };
 
 // Normalises each unit quaternion of y in place.

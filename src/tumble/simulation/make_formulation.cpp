@@ -9,24 +9,47 @@
 
 namespace tumble {
 
-std::unique_ptr<Formulation> make_formulation(std::string_view name,
-                                              std::shared_ptr<const Model> model) {
-  const bool gravity_only = model->bodies_are_free() && model->loads.empty();
+FormulationModel::FormulationModel(std::string_view name, std::shared_ptr<const Model> model)
+    : model_(std::move(model)) {
+  const bool gravity_only = model_->bodies_are_free() && model_->loads.empty();
   if (name == "body") {
-    if (gravity_only) return std::make_unique<BodyFrameFormulation>(std::move(model));
-    return std::make_unique<ArticulatedFormulation>(
-        std::make_shared<const ArticulatedModel>(std::move(model)));
-  }
-  if (name == "textbook") {
-    if (!model->bodies_are_free()) {
+    kind_ = gravity_only ? Kind::BodyFrame : Kind::Articulated;
+    if (kind_ == Kind::Articulated) articulated_ = std::make_shared<const ArticulatedModel>(model_);
+  } else if (name == "textbook") {
+    if (!model_->bodies_are_free()) {
       throw std::invalid_argument(
           "formulation textbook integrates free bodies (the chapter's [R; omega]); joints, "
           "springs and impulses need formulation: body");
     }
-    return std::make_unique<TextbookFormulation>(std::move(model));
+    kind_ = Kind::Textbook;
+  } else {
+    throw std::invalid_argument("unknown formulation '" + std::string(name) +
+                                "'; valid: body, textbook");
   }
-  throw std::invalid_argument("unknown formulation '" + std::string(name) +
-                              "'; valid: body, textbook");
+  // Read once from a run that is then dropped, so that they are the formulation's own answers.
+  const std::unique_ptr<Formulation> run = new_run();
+  name_ = std::string(run->name());
+  element_names_ = run->element_names();
+  keeps_work_ledger_ = run->keeps_work_ledger();
+  dimension_ = run->dimension();
+  has_unit_quaternions_ = !run->unit_quaternion_offsets().empty();
+}
+
+std::unique_ptr<Formulation> FormulationModel::new_run() const {
+  switch (kind_) {
+    case Kind::BodyFrame:
+      return std::make_unique<BodyFrameFormulation>(model_);
+    case Kind::Textbook:
+      return std::make_unique<TextbookFormulation>(model_);
+    case Kind::Articulated:
+      return std::make_unique<ArticulatedFormulation>(articulated_);
+  }
+  throw std::logic_error("FormulationModel: no such kind");
+}
+
+std::unique_ptr<Formulation> make_formulation(std::string_view name,
+                                              std::shared_ptr<const Model> model) {
+  return FormulationModel(name, std::move(model)).new_run();
 }
 
 std::unique_ptr<Formulation> make_formulation(std::string_view name, Model model) {

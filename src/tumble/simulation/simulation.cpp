@@ -121,14 +121,17 @@ std::unique_ptr<Integrator> make_run_integrator(const SimulationModel& model) {
 
 std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& scenario) {
   const SimulateSpec& sim = scenario.simulate;
-  auto m = std::make_shared<SimulationModel>();
   // An error here is the part of the scenario's own that it names: the formulation's (or the
   // model's, which the reader has checked), then the integrator's.
-  try {
-    m->formulation = make_formulation(sim.formulation, build_model(scenario));
-  } catch (const std::invalid_argument& e) {
-    throw ScenarioError(sim.where, "simulate.formulation", e.what());
-  }
+  const auto formulation_model = [&] {
+    try {
+      return FormulationModel(sim.formulation,
+                              std::make_shared<const Model>(build_model(scenario)));
+    } catch (const std::invalid_argument& e) {
+      throw ScenarioError(sim.where, "simulate.formulation", e.what());
+    }
+  };
+  auto m = std::make_shared<SimulationModel>(formulation_model());
   m->integrator = sim.integrator;
   m->control.rtol = sim.rtol;
   m->control.atol = sim.atol;
@@ -136,9 +139,16 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
   m->control.max_step = sim.max_step;
   m->control.initial_step = sim.initial_step;
   try {
-    if (sim.integrator == "rkmk4" && m->formulation->unit_quaternion_offsets().empty()) {
+    if (sim.integrator == "rkmk4" && !m->formulation.has_unit_quaternions()) {
       throw std::invalid_argument(
           "rkmk4 moves orientations on the rotation group and needs formulation: body");
+    }
+    // The reader refuses forces and joints with it; this keeps any model it cannot run from a
+    // run (where the integrator would throw).
+    if (sim.integrator == "exact" && !ExactIntegrator::fits(m->formulation.model())) {
+      throw std::invalid_argument(
+          "exact is for free bodies on which no force or torque acts (gravity is allowed); "
+          "remove forces, joints and contacts or choose dopri5");
     }
     make_run_integrator(*m);  // refuses a control that does not fit, before any run
   } catch (const std::invalid_argument& e) {
@@ -150,12 +160,13 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
   m->t0 = 0.0;
   m->t_end = sim.duration;
   m->planar = scenario.planar;
-  m->y0 = initial_state_vector(scenario, *m->formulation);
+  // The initial state's checks evaluate a formulation: a run's, dropped when the model is built.
+  const std::unique_ptr<Formulation> run = m->formulation.new_run();
+  m->y0 = initial_state_vector(scenario, *run);
   if (!scenario.events.empty()) {
-    m->user_events = std::make_shared<UserEventDefinitions>(UserEventDefinitions{
-        scenario.events, column_layout(scenario, *m->formulation), scenario.parameters});
+    m->user_events = std::make_shared<UserEventDefinitions>(
+        UserEventDefinitions{scenario.events, column_layout(scenario, *m), scenario.parameters});
     // Compiles them, refusing a name that is neither a column nor a parameter, before any run.
-    const std::unique_ptr<Formulation> run = m->formulation->new_run();
     const UserEventSystem check(*run, m->user_events);
   }
   return m;
@@ -176,7 +187,7 @@ VecX initial_state_vector(const Scenario& scenario, const Formulation& formulati
 
 PreparedSimulation prepare_run(const SimulationModel& model) {
   PreparedSimulation p;
-  p.formulation = model.formulation->new_run();
+  p.formulation = model.formulation.new_run();
   if (model.user_events) {
     p.user_events = std::make_unique<UserEventSystem>(*p.formulation, model.user_events);
   }
@@ -361,7 +372,10 @@ SystemQuantities row_quantities(const Model& model, std::span<const BodyState> s
   return q;
 }
 
-ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation) {
+namespace {
+
+ColumnLayout layout_with_elements(const Scenario& scenario,
+                                  std::vector<std::string> element_names) {
   ColumnLayout layout;
   for (const BodySpec& b : scenario.bodies) layout.bodies.push_back(b.name);
   for (const JointSpec& j : scenario.joints) {
@@ -372,9 +386,19 @@ ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulat
     }
   }
   for (const ContactSpec& c : scenario.contacts) layout.contacts.push_back(c.name);
-  layout.elements = formulation.element_names();
+  layout.elements = std::move(element_names);
   layout.planar = scenario.planar;
   return layout;
+}
+
+}  // namespace
+
+ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation) {
+  return layout_with_elements(scenario, formulation.element_names());
+}
+
+ColumnLayout column_layout(const Scenario& scenario, const SimulationModel& model) {
+  return layout_with_elements(scenario, model.formulation.element_names());
 }
 
 SimulationResult resume_simulation(PreparedSimulation& simulation,

@@ -17,6 +17,7 @@
 #include "tumble/output/columns.hpp"
 #include "tumble/output/output_row.hpp"
 #include "tumble/scenario/scenario.hpp"
+#include "tumble/simulation/make_formulation.hpp"
 #include "tumble/simulation/user_events.hpp"
 
 namespace tumble {
@@ -35,12 +36,16 @@ struct PreparedSimulation {
 };
 
 // One problem, built once from a scenario and then run any number of times, on any number of
-// threads at once: the Model is constant and shared by every run's formulation; each run gets its
-// own formulation (scratch and hybrid state) and integrator from prepare_run(), which is safe to
-// call from any thread.
+// threads at once. It is constant data only, no run object: the Model (and, for joints and
+// contacts, the ArticulatedModel) and which formulation runs it, the method's name and settings,
+// the initial state and the events' definitions. Each run gets its own formulation (scratch and
+// hybrid state) and integrator from prepare_run(), which is safe to call from any thread.
 struct SimulationModel {
-  std::unique_ptr<const Formulation> formulation;  // never run itself: runs take new_run()
-  std::string integrator;                          // the scenario's name for the method
+  explicit SimulationModel(FormulationModel formulation_model)
+      : formulation(std::move(formulation_model)) {}
+
+  FormulationModel formulation;  // makes each run's; its name, elements, dimension
+  std::string integrator;        // the scenario's name for the method
   StepControl control;
   DriverOptions options;
   VecX y0;  // the scenario's initial state
@@ -58,7 +63,7 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
 // The state vector of the scenario's initial bodies' states, checked as build_simulation_model
 // checks them: its y0. A model built from a scenario that differs only in the bodies' initial
 // velocities runs from this as that scenario's model would (a sweep's shared model). It
-// evaluates the formulation, so give it a run's (prepare_run's), not a shared model's.
+// evaluates the formulation, which writes its scratch: give it the run's own (prepare_run's).
 VecX initial_state_vector(const Scenario& scenario, const Formulation& formulation);
 // A run of the model from its initial state (set y0 for another).
 PreparedSimulation prepare_run(const SimulationModel& model);
@@ -158,6 +163,8 @@ SystemQuantities row_quantities(const Model& model, std::span<const BodyState> s
 // The columns a run of this scenario writes: its bodies', joints', contacts' and the
 // formulation's elements'.
 ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation);
+// The same for the model built from it (without making a run).
+ColumnLayout column_layout(const Scenario& scenario, const SimulationModel& model);
 // Goes on from a checkpoint of a run of the same model (prepare_run() of it gives `simulation`;
 // its formulation and integrator are replaced by the checkpoint's).
 SimulationResult resume_simulation(PreparedSimulation& simulation,

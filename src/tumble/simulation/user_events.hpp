@@ -59,6 +59,7 @@ class UserEventSystem final : public OdeSystem {
   }
   double next_breakpoint(double t) const override { return formulation_->next_breakpoint(t); }
   void at_breakpoint(double t, VecX& y) override { formulation_->at_breakpoint(t, y); }
+  const Formulation* rigid_body_formulation() const override { return formulation_; }
 
  private:
   Formulation* formulation_;

@@ -98,7 +98,7 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
                             bool scenarios_initial_state, RunRecord& record) {
   PreparedSimulation simulation = prepare_run(model);
   if (scenarios_initial_state) {
-    // On the run's own formulation: the model's is shared by the threads.
+    // On the run's own formulation: an evaluation writes its scratch.
     simulation.y0 = initial_state_vector(scenario, *simulation.formulation);
   }
   const ColumnLayout layout = column_layout(scenario, *simulation.formulation);

@@ -36,8 +36,7 @@ SweepSpec make_sweep_spec(std::string text, std::string path, std::vector<Parame
     spec.varied.push_back(range.name);
   }
   try {
-    const PreparedSimulation run = prepare_run(*model);
-    const RunRecorder compiles(outcomes, column_layout(base, *run.formulation), base);
+    const RunRecorder compiles(outcomes, column_layout(base, *model), base);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("{} {}", names.outcome, e.what()));
   }

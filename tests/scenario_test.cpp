@@ -933,5 +933,27 @@ simulate: {duration: a + 1}
   EXPECT_EQ(scenario.bodies[0].velocity_W, Vec3(1, 3, 2));
 }
 
+// A chain of parameters, each defined from the one above, is followed link by link (the trace
+// looks names up by hash as its list grows: a search of the list would make a long chain
+// quadratic); a parameter off the chain is not.
+TEST(Scenario, ATraceFollowsAChainOfParameters) {
+  constexpr int kCount = 1000;
+  std::string text = "tumble: 1\nparameters:\n  p0: 1\n  q: 2\n";
+  for (int i = 1; i < kCount; ++i) text += fmt::format("  p{}: p{} + 1\n", i, i - 1);
+  text += fmt::format(
+      "bodies:\n  ball: {{shape: sphere, radius: 0.1, mass: q, velocity: [p{}, 0, "
+      "q]}}\nsimulate: {{duration: 1}}\n",
+      kCount - 1);
+  const ScenarioDocument document = ScenarioDocument::from_text(text, "chain.yaml");
+  ParameterTrace trace{{"p0"}, {}};
+  const Scenario scenario = document.read({}, true, &trace);
+  ASSERT_EQ(trace.followed.size(), static_cast<std::size_t>(kCount));
+  for (int i = 0; i < kCount; ++i) EXPECT_EQ(trace.followed[i], fmt::format("p{}", i));
+  ASSERT_EQ(trace.uses.size(), static_cast<std::size_t>(kCount));
+  EXPECT_EQ(trace.uses.back().path, "bodies.ball.velocity[0]");
+  EXPECT_EQ(trace.uses.front().path, "parameters.p1");
+  EXPECT_EQ(scenario.bodies[0].velocity_W, Vec3(kCount, 0, 2));
+}
+
 }  // namespace
 }  // namespace tumble

@@ -4,11 +4,67 @@
 // main and the Python module's `python3 -m tumble` both call run_cli.
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
 
 #include "commands.hpp"
 #include "exit_status.hpp"
 
 namespace tumble::cli {
+namespace {
+
+// A flag's number, read from the whole of its text as strtod would but without its hex floats and
+// leading spaces: nullopt for anything else, an infinity for a number beyond a double's range
+// either way (1e999, 1e-999).
+std::optional<double> flag_number(const std::string& text) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, error] = std::from_chars(text.data(), end, value);
+  if (ptr != end || (error != std::errc() && error != std::errc::result_out_of_range)) {
+    return std::nullopt;
+  }
+  if (error == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
+  return value;
+}
+
+// CLI11 takes any double it can read (nan, inf, a width of -1) and wraps an unsigned integer
+// (--seed -1 becomes 2^64 - 1): these check the text first, and their message follows the flag's
+// name: "--tol: 0 is out of range: expected a finite number > 0 (...)".
+CLI::Validator finite_number(const std::string& range, bool positive) {
+  return CLI::Validator(
+      [range, positive](const std::string& text) {
+        const std::optional<double> value = flag_number(text);
+        if (!value) return fmt::format("'{}' is not a number: expected {}", text, range);
+        if (!std::isfinite(*value) || (positive && !(*value > 0.0))) {
+          return fmt::format("{} is out of range: expected {}", text, range);
+        }
+        return std::string();
+      },
+      "NUMBER");
+}
+
+CLI::Validator seed_value() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        const std::string range =
+            fmt::format("a whole number from 0 to {}", std::numeric_limits<std::uint64_t>::max());
+        std::uint64_t seed = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, error] = std::from_chars(text.data(), end, seed);
+        if (error == std::errc() && ptr == end) return std::string();
+        const std::optional<double> value = flag_number(text);
+        const bool outside = value && !(*value >= 0.0 && *value < 0x1p64);
+        return fmt::format("{} is {}: expected {}", text,
+                           outside ? "out of range" : "not a whole number", range);
+      },
+      "UINT64");
+}
+
+}  // namespace
 
 int run_cli(int argc, const char* const* argv) {
   const std::string version = fmt::format("tumble {}", TUMBLE_VERSION);
@@ -79,8 +135,10 @@ int run_cli(int argc, const char* const* argv) {
       ->add_option("--about", inertia_args.about,
                    "X Y Z: also the inertia about this world point at t = 0 (a pivot O, m): "
                    "I_O = I_G + m (|d|^2 E - d d^T), d from O to the COM (parallel axis "
-                   "theorem), in world and body axes, with its principal moments")
-      ->expected(3);
+                   "theorem), in world and body axes, with its principal moments; each a "
+                   "finite number")
+      ->expected(3)
+      ->check(finite_number("a finite number (m, world)", false));
 
   SweepArguments sweep_args;
   CLI::App* sweep = app.add_subcommand(
@@ -104,15 +162,19 @@ int run_cli(int argc, const char* const* argv) {
       ->add_option("--random", sweep_args.random,
                    "Instead of the grid, this many points drawn uniformly between the bounds")
       ->check(CLI::Range(1L, 10'000'000L));
-  sweep->add_option("--seed", sweep_args.seed, "Seed of the random points")->capture_default_str();
+  sweep
+      ->add_option("--seed", sweep_args.seed,
+                   "Seed of the random points: a whole number from 0 to 2^64 - 1")
+      ->check(seed_value())
+      ->capture_default_str();
   sweep->add_option(
       "--record", sweep_args.record,
       "NAME=REDUCTION: a column of sweep.csv. REDUCTION is an expression over "
       "final(X), max(X), min(X), mean(X), time_of_max(X) (X a column or an "
       "expression of columns and parameters), first(EVENT), count(EVENT) (EVENT: "
       "CONTACT.KIND, event.NAME, impulse.NAME, lock.NAME, motor.NAME), first(CONDITION), "
-      "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0); "
-      "repeatable");
+      "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0), each of one "
+      "argument. Expressions only read: = (assignment) is refused, == compares; repeatable");
   sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");
   sweep->add_option("--threads", sweep_args.threads, "Threads (default: every core)")
       ->check(CLI::Range(1, 1024));
@@ -134,11 +196,13 @@ int run_cli(int argc, const char* const* argv) {
                    "at LO and HI)")
       ->required();
   find->add_option("--when", find_args.when,
-                   "The condition, an expression of reductions as for sweep --record, true where "
-                   "not 0: e.g. \"max(frame.angle) > pi/4\"")
+                   "The condition, an expression of reductions as for sweep --record (read-only: "
+                   "= is refused), true where not 0: e.g. \"max(frame.angle) > pi/4\"")
       ->required();
   find->add_option("--tol", find_args.tol,
-                   "Width of the final bracket (default 1e-9 of the larger bound's magnitude)");
+                   "Width of the final bracket, a finite number > 0 in the parameter's units "
+                   "(default 1e-9 of the larger bound's magnitude)")
+      ->check(finite_number("a finite number > 0 (the final bracket's width)", true));
   find->add_option("--set", find_args.sets, "Fix a parameter: NAME=VALUE");
 
   ModesArguments modes_args;

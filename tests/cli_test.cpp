@@ -431,6 +431,30 @@ TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
   EXPECT_NE(slides.out.find("E is not conserved"), std::string::npos) << slides.out;
 }
 
+// Red-team finding: an event's `when: prism.w3 = -5` wrote -5 into the row the later events read,
+// so that they did not happen. It is refused where it is written, as the reader's other errors.
+TEST(Cli, AnEventThatAssignsIsRefusedWhereItIsWritten) {
+  const fs::path dir = fresh_dir("event_assigns");
+  const fs::path p = write_file(dir, "prism.yaml",
+                                "tumble: 1\n"
+                                "gravity: [0, 0, 0]\n"
+                                "bodies:\n"
+                                "  prism: {shape: box, size: [4, 1, 2], mass: 12, "
+                                "angular_velocity: [0, 0.01, 1]}\n"
+                                "events:\n"
+                                "  - {name: spoil, when: prism.w3 = -5}\n"
+                                "  - {name: flip, when: prism.w3 < 0}\n"
+                                "simulate: {duration: 12, integrator: dop853, rtol: 1e-10}\n");
+  const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.out.find(p.string() +
+                       ":6:25: events[0].when: expression 'prism.w3 = -5': '=' would assign a "
+                       "value; an expression only reads its names"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(dir / "prism.csv"));
+}
+
 TEST(Cli, InertiaAboutAPivotNeedsNoSimulateSection) {
   // A uniform rod of length L hung from its end O: I_O = M L^2/3 (+ M r^2/4 of its thickness)
   // about the axes across it, by the parallel axis theorem from I_G = M (3 r^2 + L^2)/12.
@@ -443,6 +467,19 @@ TEST(Cli, InertiaAboutAPivotNeedsNoSimulateSection) {
   EXPECT_NE(r.out.find("inertia about O = [0 0 0]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("1.000075"), std::string::npos) << r.out;  // 3 (1/3 + 1e-4/4)
   EXPECT_EQ(run_tumble("inertia " + p.string() + " --about 0 0").status, 2);
+  // Each coordinate must be a finite number: --about nan 0 0 printed NaN tensors with exit 0.
+  for (const std::string bad : {"nan", "inf", "1e999"}) {
+    const CommandResult refused = run_tumble("inertia " + p.string() + " --about 0 " + bad + " 0");
+    EXPECT_EQ(refused.status, 2) << refused.out;
+    EXPECT_NE(refused.out.find("--about: " + bad +
+                               " is out of range: expected a finite number (m, world)"),
+              std::string::npos)
+        << refused.out;
+    EXPECT_EQ(refused.out.find("inertia about O"), std::string::npos) << refused.out;
+  }
+  const CommandResult word = run_tumble("inertia " + p.string() + " --about 0 0 north");
+  EXPECT_EQ(word.status, 2) << word.out;
+  EXPECT_NE(word.out.find("--about: 'north' is not a number"), std::string::npos) << word.out;
   // `tumble run` still needs it.
   const CommandResult run = run_tumble("run " + p.string() + " --out " + dir.string());
   EXPECT_EQ(run.status, 3);

@@ -2,6 +2,7 @@
 // and the parameters defined so far.
 #include "tumble/scenario/expression.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,6 +91,96 @@ TEST(Expression, ErrorsCarryTheExpressionAndMuParsersMessage) {
             "expression '1/0' evaluates to inf; a finite number is needed");
   EXPECT_EQ(error_of(evaluator, "sqrt(-1)"),
             "expression 'sqrt(-1)' evaluates to nan; a finite number is needed");
+}
+
+// muParser's `=` assigns; no expression of tumble may (red-team finding: a sweep's
+// `max(prism.w3 = 100)` wrote into the row the other records read). Every form is refused, by
+// name, and the comparisons that look like it keep their meaning.
+TEST(Expression, AnExpressionCannotAssign) {
+  ExpressionEvaluator evaluator;
+  evaluator.define("a", 1.0);
+  const std::string refused = "'=' would assign a value; an expression only reads its names";
+  for (const std::string text :
+       {"a = 5", "x = 5", "1 + (a = 2)", "max(a = 100, 1)", "a += 1", "a -= 1", "a *= 2", "a /= 2",
+        "(a) = 3", "a = a = 3", "0 ? a = 1 : 2"}) {
+    EXPECT_EQ(error_of(evaluator, text),
+              "expression '" + text + "': " + refused + " (a comparison is ==, <, >, <= or >=)");
+  }
+  EXPECT_EQ(evaluator.evaluate("a == 1"), 1.0);
+  EXPECT_EQ(evaluator.evaluate("a == 2"), 0.0);
+  EXPECT_EQ(evaluator.evaluate("a <= 1"), 1.0);
+  EXPECT_EQ(evaluator.evaluate("a >= 2"), 0.0);
+  EXPECT_EQ(evaluator.evaluate("a != 1"), 0.0);
+  EXPECT_EQ(evaluator.evaluate("a"), 1.0);
+}
+
+// A bound expression reads variables through pointers (a row's columns): an assignment would
+// write through them. It is refused before the expression is first evaluated, and the variable
+// keeps its value.
+TEST(Expression, ABoundExpressionCannotWriteItsVariables) {
+  double w3 = 1.0, x = 2.0;
+  const BoundExpression::Variable variables[] = {{"prism.w3", &w3}, {"ball.x", &x}};
+  const auto error_of_bound = [&](const std::string& text) -> std::string {
+    try {
+      BoundExpression expression(text, variables);
+    } catch (const ExpressionError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  for (const std::string text :
+       {"prism.w3 = 100", "max(prism.w3 = 100, 1)", "ball.x + (prism.w3 = -5)",
+        "0 ? prism.w3 = 1 : 2", "unknown = 1", "prism.w3 += 1", "(prism.w3) = 3"}) {
+    EXPECT_NE(error_of_bound(text).find("expression '" + text + "': '=' would assign a value"),
+              std::string::npos)
+        << text << ": " << error_of_bound(text);
+    EXPECT_EQ(w3, 1.0) << text;
+    EXPECT_EQ(x, 2.0) << text;
+  }
+  const BoundExpression equal("prism.w3 == 1", variables);
+  EXPECT_EQ(equal.evaluate(), 1.0);
+  const BoundExpression at_most("ball.x <= prism.w3", variables);
+  EXPECT_EQ(at_most.evaluate(), 0.0);
+  EXPECT_EQ(w3, 1.0);
+  EXPECT_EQ(x, 2.0);
+}
+
+// A comma outside a function's brackets gives muParser several values, of which it would keep the
+// last: "1, 2" is refused, not read as 2 (max(1, 2) is one value).
+TEST(Expression, SeveralValuesAreRefused) {
+  const ExpressionEvaluator evaluator;
+  EXPECT_EQ(error_of(evaluator, "1, 2"),
+            "expression '1, 2' gives 2 values (a comma outside a function's brackets); one value "
+            "is needed");
+  EXPECT_EQ(evaluator.evaluate("max(1, 2)"), 2.0);
+  double a = 1.0, e = 5.0;
+  const BoundExpression::Variable variables[] = {{"a", &a}, {"E", &e}};
+  try {
+    BoundExpression expression("a, E", variables);
+    ADD_FAILURE() << "no error";
+  } catch (const ExpressionError& error) {
+    EXPECT_STREQ(error.what(),
+                 "expression 'a, E' gives 2 values (a comma outside a function's brackets); one "
+                 "value is needed");
+  }
+}
+
+// An unknown name's hint lists the first parameters, not every one of a large scenario's.
+TEST(Expression, TheHintOfManyParametersIsOneLine) {
+  ExpressionEvaluator evaluator;
+  for (int i = 0; i < 1000; ++i) evaluator.define(fmt::format("p{}", i), i);
+  EXPECT_EQ(
+      error_of(evaluator, "2*q"),
+      "expression '2*q': Unexpected token \"q\" found at position 2.; the parameters "
+      "defined here are p0, p1, p2, p3, p4, p5, p6, p7, p8, p9, p10, p11, p12, p13, p14, p15, "
+      "p16, p17, p18, p19, ... (1000 in all) (a parameter may use only those above it)");
+  EXPECT_EQ(evaluator.evaluate("p999 + p0"), 999.0);
+  try {
+    evaluator.define("p500", 1.0);
+    ADD_FAILURE() << "no error";
+  } catch (const ExpressionError& error) {
+    EXPECT_STREQ(error.what(), "parameter 'p500' is defined twice");
+  }
 }
 
 TEST(Expression, NoParametersSaysWhereToDefineThem) {

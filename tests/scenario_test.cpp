@@ -5,6 +5,7 @@
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/scenario/scenario_document.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -643,6 +644,51 @@ TEST(ScenarioError, AnUnknownParameterInAnExpressionListsTheParameters) {
                {3, 6, "parameters.a", "Unexpected token \"b\""});
 }
 
+// Every key that takes an expression refuses an assignment, located at the key (an expression
+// only reads its names: red-team finding).
+TEST(ScenarioError, AnExpressionThatAssignsIsLocated) {
+  const std::string refused = "'=' would assign a value; an expression only reads its names";
+  expect_error(kHead + "parameters:\n  a: 2\n  b: a = 3\n" + kSphere + kSimulate,
+               {4, 6, "parameters.b", "expression 'a = 3': " + refused});
+  expect_error(kHead +
+                   "parameters: {a: 2}\nbodies:\n  b:\n    shape: sphere\n    radius: 1\n"
+                   "    mass: \"1 + (q = 2)\"\n" +
+                   kSimulate,
+               {7, 11, "bodies.b.mass", "expression '1 + (q = 2)': " + refused});
+  expect_error(kHead + kSphere + "simulate: {duration: \"a += 1\"}\n",
+               {4, 22, "simulate.duration", "expression 'a += 1': " + refused});
+  // A comparison with == is a number, 1 or 0, as before.
+  const Scenario scenario =
+      load_text(kHead + "parameters: {a: 2, b: a == 2}\n" + kSphere + kSimulate);
+  EXPECT_EQ(scenario.parameters.at("b"), 1.0);
+}
+
+// A comma outside a function's brackets gives two values, of which muParser would keep the last.
+TEST(ScenarioError, AnExpressionOfTwoValuesIsLocated) {
+  expect_error(
+      kHead + "bodies:\n  b:\n    shape: sphere\n    radius: \"1, 2\"\n    mass: 1\n" + kSimulate,
+      {5, 13, "bodies.b.radius", "expression '1, 2' gives 2 values"});
+}
+
+// A million parameters are read in seconds: each is defined in O(1) (a search of every earlier
+// name took 31 s for 200,000 and would take minutes here, past the test's time limit).
+TEST(ScenarioError, AMillionParametersAreReadInLinearTime) {
+  constexpr int kCount = 1'000'000;
+  std::string text = kHead + "parameters:\n";
+  text.reserve(20 * kCount);
+  for (int i = 0; i < kCount; ++i) {
+    text += i % 1000 == 999 ? fmt::format("  p{}: p{} + 1\n", i, i - 1)
+                            : fmt::format("  p{}: {}\n", i, i);
+  }
+  const Scenario scenario =
+      load_text(text + "bodies:\n  ball: {shape: sphere, radius: 0.1, mass: p999999 - p999997}\n" +
+                kSimulate);
+  EXPECT_EQ(scenario.parameters.size(), static_cast<std::size_t>(kCount));
+  EXPECT_EQ(scenario.parameters.at("p999"), 999.0);
+  EXPECT_EQ(scenario.parameters.at("p999999"), 999999.0);
+  EXPECT_EQ(scenario.bodies[0].mass_properties.mass, 2.0);
+}
+
 TEST(ScenarioError, AReservedParameterNameIsAnError) {
   expect_error(kHead + "parameters: {pi: 3}\n" + kSphere + kSimulate,
                {2, 14, "parameters.pi", "'pi' is reserved"});
@@ -885,6 +931,28 @@ simulate: {duration: a + 1}
                                              "simulate.duration"}));
   EXPECT_EQ(expressions, (std::vector<std::string>{"2 * a", "c - a", "b", "a", "d", "a + 1"}));
   EXPECT_EQ(scenario.bodies[0].velocity_W, Vec3(1, 3, 2));
+}
+
+// A chain of parameters, each defined from the one above, is followed link by link (the trace
+// looks names up by hash as its list grows: a search of the list would make a long chain
+// quadratic); a parameter off the chain is not.
+TEST(Scenario, ATraceFollowsAChainOfParameters) {
+  constexpr int kCount = 1000;
+  std::string text = "tumble: 1\nparameters:\n  p0: 1\n  q: 2\n";
+  for (int i = 1; i < kCount; ++i) text += fmt::format("  p{}: p{} + 1\n", i, i - 1);
+  text += fmt::format(
+      "bodies:\n  ball: {{shape: sphere, radius: 0.1, mass: q, velocity: [p{}, 0, "
+      "q]}}\nsimulate: {{duration: 1}}\n",
+      kCount - 1);
+  const ScenarioDocument document = ScenarioDocument::from_text(text, "chain.yaml");
+  ParameterTrace trace{{"p0"}, {}};
+  const Scenario scenario = document.read({}, true, &trace);
+  ASSERT_EQ(trace.followed.size(), static_cast<std::size_t>(kCount));
+  for (int i = 0; i < kCount; ++i) EXPECT_EQ(trace.followed[i], fmt::format("p{}", i));
+  ASSERT_EQ(trace.uses.size(), static_cast<std::size_t>(kCount));
+  EXPECT_EQ(trace.uses.back().path, "bodies.ball.velocity[0]");
+  EXPECT_EQ(trace.uses.front().path, "parameters.p1");
+  EXPECT_EQ(scenario.bodies[0].velocity_W, Vec3(kCount, 0, 2));
 }
 
 }  // namespace

@@ -2,6 +2,10 @@
 // and each bad argument refused with its exit status and its name.
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "run_tumble.hpp"
 #include "test_files.hpp"
 
@@ -82,6 +86,121 @@ TEST(SweepCommand, ScenarioErrorExitsThree) {
     EXPECT_EQ(result.status, 3) << result.out;
     EXPECT_NE(result.out.find("bad.yaml:4:"), std::string::npos) << result.out;
   }
+}
+
+// Red-team finding: muParser's `=` wrote into the row the sweep's other records read (y came out
+// 100 instead of 1, z nan instead of 9.66, exit 0). An expression that assigns is refused, in any
+// reduction, in the expression over them, and in find's condition, with the flag and the text.
+TEST(SweepCommand, AnExpressionThatAssignsIsRefused) {
+  const std::string prism = kExamples + "tumbling_prism.yaml";
+  const std::string refused = "'=' would assign a value; an expression only reads its names";
+  const struct {
+    std::string arguments, named;
+  } cases[] = {
+      {"sweep " + prism +
+           " --vary a=3:5:2 --record 'x=max(prism.w3 = 100)' --record 'y=final(prism.w3)' "
+           "--record 'z=first(prism.w3 < 0)'",
+       "--record max(prism.w3 = 100): expression 'prism.w3 = 100': " + refused},
+      {"sweep " + prism + " --vary a=3:5:2 --record 'x=first(prism.w3 = 5)'",
+       "--record first(prism.w3 = 5): expression 'prism.w3 = 5': " + refused},
+      {"sweep " + prism + " --vary a=3:5:2 --record 'x=final(prism.w3) + (a = 1)'",
+       "--record final(prism.w3) + (a = 1): expression '__r0 + (a = 1)': " + refused},
+      {"sweep " + prism + " --vary a=3:5:2 --record 'x=min(prism.w1 += 1)'",
+       "--record min(prism.w1 += 1): expression 'prism.w1 += 1': " + refused},
+      {"find " + prism + " --vary a=3:5 --when 'max(prism.w3) = 1'",
+       "--when max(prism.w3) = 1: expression '__r0 = 1': " + refused},
+      {"find " + prism + " --vary a=3:5 --when 'max(prism.w3 = 1) > 0'",
+       "--when max(prism.w3 = 1) > 0: expression 'prism.w3 = 1': " + refused},
+      {"sweep " + prism + " --vary 'a=3:b=5:2' --record 'x=max(prism.w3)'",
+       "--vary a=3:b=5:2: STOP: expression 'b=5': " + refused},
+      {"sweep " + prism + " --vary a=3:5:2 --set 'b=c=1' --record 'x=max(prism.w3)'",
+       "--set b=c=1: expression 'c=1': " + refused},
+  };
+  for (const auto& c : cases) {
+    const auto result = run_tumble(c.arguments);
+    EXPECT_EQ(result.status, 2) << c.arguments << "\n" << result.out;
+    EXPECT_NE(result.out.find(c.named), std::string::npos) << c.arguments << "\n" << result.out;
+  }
+  // == still compares, as it did.
+  const auto dir = test::fresh_test_dir("SweepCommand", "equals");
+  const auto equal = run_tumble("sweep " + prism +
+                                " --vary a=4:4:1 --record 'same=final(prism.w3) == "
+                                "final(prism.w3)' --record 'w=final(prism.w3)' --out " +
+                                dir.string());
+  ASSERT_EQ(equal.status, 0) << equal.out;
+  const std::string csv = test::read_file(dir / "sweep.csv");
+  ASSERT_EQ(csv.substr(0, csv.find('\n')), "run,a,status,steps,E_drift,L_drift,same,w,message");
+  std::vector<std::string> cells;
+  std::stringstream row(csv.substr(csv.find('\n') + 1));
+  for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+  ASSERT_GE(cells.size(), 8u) << csv;
+  EXPECT_EQ(cells[2], "ok") << csv;
+  EXPECT_EQ(cells[6], "1") << csv;
+}
+
+// A reduction takes one argument: final(a, E) was read as final(E), muParser keeping the last of
+// its values.
+TEST(SweepCommand, AReductionOfTwoArgumentsIsRefused) {
+  const std::string prism = kExamples + "tumbling_prism.yaml";
+  const struct {
+    std::string arguments, named;
+  } cases[] = {
+      {"sweep " + prism + " --vary a=3:5:2 --record 'x=final(a, E)'",
+       "--record 'final(a, E)': final() takes one argument (a column or an expression of "
+       "columns), got 2: 'a, E'"},
+      {"sweep " + prism + " --vary a=3:5:2 --record 'x=max(prism.w1, max(E, KE), 2)'",
+       "max() takes one argument (a column or an expression of columns), got 3"},
+      {"sweep " + prism + " --vary a=3:5:2 --record 'x=first(prism.w3 < 0, 1)'",
+       "first() takes one argument (an event or a condition), got 2"},
+      {"find " + prism + " --vary a=3:5 --when 'count(prism.w3 < 0, E) > 0'",
+       "--when 'count(prism.w3 < 0, E) > 0': count() takes one argument"},
+      {"sweep " + prism + " --vary a=3:5:2 --record 'x=final(prism.w3), 2'",
+       "gives 2 values (a comma outside a function's brackets)"},
+  };
+  for (const auto& c : cases) {
+    const auto result = run_tumble(c.arguments);
+    EXPECT_EQ(result.status, 2) << c.arguments << "\n" << result.out;
+    EXPECT_NE(result.out.find(c.named), std::string::npos) << c.arguments << "\n" << result.out;
+  }
+}
+
+// Numbers on the command line are checked, not replaced: find --tol 0, -1 or nan took the default
+// width, sweep --seed -1 or 2^64 became 2^64 - 1.
+TEST(SweepCommand, NumericFlagsOutOfRangeAreRefused) {
+  const std::string prism = kExamples + "tumbling_prism.yaml";
+  const std::string find = "find " + prism + " --vary a=3:5 --when 'min(prism.w3) > 2' --tol ";
+  const std::string tol_range = "expected a finite number > 0 (the final bracket's width)";
+  const std::string sweep = "sweep " + prism + " --vary a=3:5 --random 2 --seed ";
+  const std::string seed_range = "expected a whole number from 0 to 18446744073709551615";
+  const struct {
+    std::string arguments, named;
+  } cases[] = {
+      {find + "0", "--tol: 0 is out of range: " + tol_range},
+      {find + "-1", "--tol: -1 is out of range: " + tol_range},
+      {find + "nan", "--tol: nan is out of range: " + tol_range},
+      {find + "inf", "--tol: inf is out of range: " + tol_range},
+      {find + "-0", "--tol: -0 is out of range: " + tol_range},
+      {find + "1e-400", "--tol: 1e-400 is out of range: " + tol_range},
+      {find + "wide", "--tol: 'wide' is not a number: " + tol_range},
+      {find + "0x10", "--tol: '0x10' is not a number: " + tol_range},
+      {sweep + "-1", "--seed: -1 is out of range: " + seed_range},
+      {sweep + "18446744073709551616",
+       "--seed: 18446744073709551616 is out of range: " + seed_range},
+      {sweep + "1.5", "--seed: 1.5 is not a whole number: " + seed_range},
+      {sweep + "seven", "--seed: seven is not a whole number: " + seed_range},
+  };
+  for (const auto& c : cases) {
+    const auto result = run_tumble(c.arguments);
+    EXPECT_EQ(result.status, 2) << c.arguments << "\n" << result.out;
+    EXPECT_NE(result.out.find(c.named), std::string::npos) << c.arguments << "\n" << result.out;
+  }
+  // The largest seed is one.
+  const auto dir = test::fresh_test_dir("SweepCommand", "largest_seed");
+  const auto largest =
+      run_tumble(sweep + "18446744073709551615 --record 'w=final(E)' --out " + dir.string());
+  EXPECT_EQ(largest.status, 0) << largest.out;
+  EXPECT_NE(largest.out.find("random points, seed 18446744073709551615"), std::string::npos)
+      << largest.out;
 }
 
 TEST(FindCommand, PrintsTheBracketAndTheRuns) {

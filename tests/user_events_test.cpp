@@ -149,6 +149,27 @@ TEST(UserEvents, AnUnknownNameOrAMisplacedDirectionIsLocated) {
                      "names a contact");
 }
 
+// An event's condition only reads: `crate.x = -5` wrote into the row that the later events read
+// (red-team finding: slid_d then never happened). Every form of assignment is refused at its
+// `when:`; == is refused as before.
+TEST(UserEvents, AConditionThatAssignsIsLocated) {
+  const std::string refused = "'=' would assign a value; an expression only reads its names";
+  test::expect_error(crate("1",
+                           "  - {name: spoil, when: crate.x = -5}\n"
+                           "  - {name: slid_d, when: crate.x > d, stop: true}"),
+                     9, 25, "events[0].when", "expression 'crate.x = -5': " + refused);
+  test::expect_error(crate("1",
+                           "  - {name: slid_d, when: crate.x > d, stop: true}\n"
+                           "  - {name: spoil, when: crate.vx - (crate.x = 0)}"),
+                     10, 25, "events[1].when", "expression 'crate.vx - (crate.x = 0)': " + refused);
+  test::expect_error(crate("1", "  - {name: e1, when: crate.x > (d = 0)}"), 9, 22, "events[0].when",
+                     "expression 'crate.x > (d = 0)': " + refused);
+  test::expect_error(crate("1", "  - {name: e1, when: crate.x += 1}"), 9, 22, "events[0].when",
+                     refused);
+  test::expect_error(crate("1", "  - {name: e1, when: crate.x == d}"), 9, 22, "events[0].when",
+                     "not ==");
+}
+
 }  // namespace
 }  // namespace tumble
 

@@ -3,7 +3,10 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
 #include <optional>
+#include <stdexcept>
 
 #include "bindings.hpp"
 #include "tumble/inertia/mass_properties.hpp"
@@ -42,6 +45,13 @@ void bind_inertia(py::module_& m) {
       "inertia",
       [](const std::string& source, bool is_text, const std::string& name,
          const Overrides& overrides, std::optional<Vec3> about) {
+        // As `tumble inertia --about` does: a point of NaN or infinite coordinates is refused,
+        // not printed as NaN tensors.
+        if (about && !about->allFinite()) {
+          throw std::invalid_argument(
+              fmt::format("about [{}, {}, {}]: expected three finite numbers (m, world)",
+                          (*about)(0), (*about)(1), (*about)(2)));
+        }
         const std::vector<ParameterOverride> sets = to_overrides(overrides);
         const Scenario scenario = is_text ? load_scenario_text(source, name, sets, false)
                                           : load_scenario(source, sets, false);

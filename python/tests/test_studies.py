@@ -86,6 +86,13 @@ def test_inertia_is_the_chapters_box_and_the_parallel_axis_theorem():
     np.testing.assert_allclose(printed, I_O, rtol=1e-8)
 
 
+def test_inertia_about_a_point_that_is_not_finite_is_refused():
+    # As the command line refuses --about nan 0 0 (it printed NaN tensors with exit status 0).
+    for bad in (math.nan, math.inf, -math.inf):
+        with pytest.raises(ValueError, match=r"expected three finite numbers \(m, world\)"):
+            tumble.inertia(EXAMPLES / "tumbling_prism.yaml", about=[0.0, bad, 0.0])
+
+
 def test_a_sweep_releases_the_gil_while_it_runs():
     # With a switch interval of 100 s, a thread that holds the GIL is never made to drop it:
     # the main thread gets to count only where the sweep releases it while it runs.

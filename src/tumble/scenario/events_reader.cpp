@@ -4,6 +4,7 @@
 //     - {name: flip, when: prism.w3, direction: down}
 #include <algorithm>
 
+#include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/readers.hpp"
 
 namespace tumble::scenario_reading {
@@ -38,6 +39,13 @@ std::vector<UserEventSpec> read_events(const Reader& reader, const Field& field,
     event.when_where = reader.location(when.value_mark());
     // Its parameters are read when the run compiles it: a trace must see them here.
     if (ParameterTrace* trace = reader.trace()) trace->note(when.path, event.when);
+    // An event's condition only reads the row: refused here, in the user's words, for every
+    // command that reads the scenario (the run compiles it only when it starts).
+    try {
+      check_read_only(event.when);
+    } catch (const ExpressionError& error) {
+      reader.fail_at_value(when, error.what());
+    }
     for (const char* op : {"&&", "||", "==", "!="}) {
       if (event.when.find(op) == std::string::npos) continue;
       reader.fail_at_value(when, std::string("an event is where one quantity crosses another: "

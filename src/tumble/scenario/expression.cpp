@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <string_view>
@@ -75,9 +76,60 @@ bool is_identifier(std::string_view name) {
 
 std::string names_hint(const std::vector<std::string>& names) {
   if (names.empty()) return "no parameters are defined here; add them under `parameters:`";
-  return "the parameters defined here are " + fmt::format("{}", fmt::join(names, ", ")) +
+  return "the parameters defined here are " + listed_names(names) +
          " (a parameter may use only those above it)";
 }
+
+// muParser's `=` writes into the variable on its left (a row's column, a reduction's value): the
+// one operator of its language with a side effect (2.3 has no +=, -=, *=, /=; it reads them as an
+// unexpected '='). Every expression of tumble only reads, so an assignment is refused before the
+// expression is first evaluated, by the compiled bytecode (where `==`, `<=` and `>=` are
+// comparisons of their own, never an assignment).
+bool assigns(const mu::ParserBase& parser) {
+  const mu::ParserByteCode& code = parser.GetByteCode();
+  if (code.GetSize() == 0) return false;
+  const mu::SToken* tokens = code.GetBase();
+  return std::any_of(tokens, tokens + code.GetSize(),
+                     [](const mu::SToken& token) { return token.Cmd == mu::cmASSIGN; });
+}
+
+// An '=' that muParser refused before it could assign: to a constant or a parameter (they are
+// folded into numbers), to a bracket, a second '=' in a row, or `+=` and its kin.
+bool refused_assignment(const mu::ParserError& error) {
+  return error.GetCode() == mu::ecUNEXPECTED_OPERATOR && error.GetToken() == "=";
+}
+
+// `x = 1` and `x += 1` with x unknown are refused by muParser for the name, before it reaches the
+// '=': compiled again with unknown names allowed (GetUsedVar does), the assignment shows.
+bool assigns_with_unknown_names(mu::ParserBase& parser) {
+  try {
+    parser.GetUsedVar();
+    return assigns(parser);
+  } catch (const mu::ParserError& error) {
+    return refused_assignment(error);
+  }
+}
+
+ExpressionError assignment_error(const std::string& text) {
+  return ExpressionError("expression '" + text +
+                             "': '=' would assign a value; an expression only reads its names "
+                             "(a comparison is ==, <, >, <= or >=)",
+                         "");
+}
+
+// A comma outside a function's brackets makes muParser give several values, of which Eval returns
+// the last: "1, 2" would silently be 2.
+ExpressionError several_values_error(const std::string& text, int count) {
+  return ExpressionError(fmt::format("expression '{}' gives {} values (a comma outside a "
+                                     "function's brackets); one value is needed",
+                                     text, count),
+                         "");
+}
+
+// The characters of a bound expression's names: columns are named owner.field ("ball.vx"), so the
+// dot is part of a name.
+constexpr const char* kNameChars =
+    "0123456789_.abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ";
 
 // The language's constants and units, on a parser of its own.
 void define_constants_and_units(mu::Parser& parser) {
@@ -134,7 +186,8 @@ void ExpressionEvaluator::define(const std::string& name, double value) {
     throw ExpressionError(
         "'" + name + "' is a function of the expression language; rename the " + "parameter", "");
   }
-  if (std::find(names_.begin(), names_.end(), name) != names_.end()) {
+  // By the values' hash: a scenario's parameters are defined in O(1) each.
+  if (impl_->values.contains(name)) {
     throw ExpressionError("parameter '" + name + "' is defined twice", "");
   }
   try {
@@ -171,8 +224,17 @@ double ExpressionEvaluator::evaluate(const std::string& expression) const {
     try {
       mu::Parser& parser = impl_->expression_parser();
       parser.SetExpr(std::string(text));
+      // The parser has constants only, no variable that `=` could write (assigns() is false for
+      // any expression that evaluates): an assignment is a compile error, told apart below.
       value = parser.Eval();
+      if (parser.GetNumResults() != 1) {
+        throw several_values_error(expression, parser.GetNumResults());
+      }
     } catch (const mu::Parser::exception_type& error) {
+      if (refused_assignment(error) ||
+          (impl_->parser && assigns_with_unknown_names(*impl_->parser))) {
+        throw assignment_error(expression);
+      }
       const bool unknown = error.GetCode() == mu::ecUNASSIGNABLE_TOKEN;
       std::string what = "expression '" + expression + "': " + error.GetMsg();
       if (unknown) what += "; " + names_hint(names_);
@@ -186,6 +248,26 @@ double ExpressionEvaluator::evaluate(const std::string& expression) const {
         "");
   }
   return *value;
+}
+
+std::string listed_names(const std::vector<std::string>& names) {
+  constexpr std::size_t kShown = 20;
+  if (names.size() <= kShown) return fmt::format("{}", fmt::join(names, ", "));
+  return fmt::format("{}, ... ({} in all)", fmt::join(names.begin(), names.begin() + kShown, ", "),
+                     names.size());
+}
+
+void check_read_only(const std::string& expression) {
+  // One parser per thread (a sweep reads scenarios on every thread), made at its first use.
+  thread_local mu::Parser parser;
+  thread_local bool made = false;
+  if (!made) {
+    parser.DefineNameChars(kNameChars);
+    define_constants_and_units(parser);
+    made = true;
+  }
+  parser.SetExpr(expression);
+  if (assigns_with_unknown_names(parser)) throw assignment_error(expression);
 }
 
 std::vector<std::string_view> expression_names(std::string_view expression) {
@@ -250,34 +332,43 @@ BoundExpression::BoundExpression(std::string text, std::span<const Variable> var
     : impl_(std::make_unique<Impl>()), text_(std::move(text)) {
   mu::Parser& parser = impl_->parser;
   try {
-    // Columns are named owner.field ("ball.vx"): the dot is part of a name.
-    parser.DefineNameChars("0123456789_.abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ");
+    parser.DefineNameChars(kNameChars);
     define_constants_and_units(parser);
-    for (const Variable& variable : variables) {
-      // muParser reads the value through the pointer at each evaluation and never writes it.
-      parser.DefineVar(variable.name, const_cast<double*>(variable.value));
-    }
     parser.SetExpr(text_);
-    // Compiles it (a syntax error throws here) and lists its names, known or not.
-    for (const auto& used : parser.GetUsedVar()) {
-      const std::string& name = used.first;
-      const bool known = std::any_of(variables.begin(), variables.end(),
-                                     [&](const Variable& v) { return v.name == name; });
-      if (!known) {
+    // Compiled before any variable is defined, it lists the names it uses (unknown names allowed
+    // here; a syntax error throws), and its bytecode, not yet evaluated, shows whether it would
+    // assign. Only the variables it names are then defined: a scenario may have a million
+    // parameters, and each expression over a row costs one pass over their names, not a million
+    // definitions.
+    const mu::varmap_type used = parser.GetUsedVar();
+    if (assigns(parser)) throw assignment_error(text_);
+    std::map<std::string, const double*> found;
+    for (const Variable& variable : variables) {
+      // The last of a name wins, as a second DefineVar of it would.
+      if (used.contains(variable.name)) found.insert_or_assign(variable.name, variable.value);
+    }
+    for (const auto& [name, unused] : used) {
+      const auto variable = found.find(name);
+      if (variable == found.end()) {
         throw ExpressionError("expression '" + text_ + "': unknown name '" + name + "'", name);
       }
+      // muParser reads the value through the pointer at each evaluation and never writes it (an
+      // expression that assigns was refused above).
+      parser.DefineVar(name, const_cast<double*>(variable->second));
       used_names_.push_back(name);
     }
-    // Listing the names leaves muParser to compile the expression again at its next evaluation,
-    // with allocations: done here, so that evaluating never allocates (an event's function is
-    // evaluated inside a run's steps).
+    // Defining the variables leaves muParser to compile the expression again at its next
+    // evaluation, with allocations: done here, so that evaluating never allocates (an event's
+    // function is evaluated inside a run's steps).
     parser.Eval();
+    if (parser.GetNumResults() != 1) throw several_values_error(text_, parser.GetNumResults());
     // A lone variable ("ball.vx", a sweep's usual record) is read without muParser's evaluation:
     // the same double, a sixth of the cost.
-    for (const Variable& variable : variables) {
-      if (variable.name == trim(text_)) direct_ = variable.value;
+    if (used_names_.size() == 1 && trim(text_) == used_names_[0]) {
+      direct_ = found.at(used_names_[0]);
     }
   } catch (const mu::Parser::exception_type& error) {
+    if (refused_assignment(error)) throw assignment_error(text_);
     const bool unknown = error.GetCode() == mu::ecUNASSIGNABLE_TOKEN;
     throw ExpressionError("expression '" + text_ + "': " + error.GetMsg(),
                           unknown ? error.GetToken() : "");

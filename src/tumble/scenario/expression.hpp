@@ -54,6 +54,17 @@ class ExpressionEvaluator {
   std::vector<std::string> names_;
 };
 
+// Names for a message: "a, b, c", or the first 20 and how many there are ("p0, p1, ..., p19, ...
+// (1000000 in all)"), so that the message of a scenario of a million parameters stays a line.
+std::string listed_names(const std::vector<std::string>& names);
+
+// Throws ExpressionError if the expression would assign (muParser's `=`, which writes into a
+// variable), whatever names it uses: every expression of tumble only reads. An expression that is
+// wrong otherwise passes here, for the error where it is evaluated. BoundExpression and
+// ExpressionEvaluator::evaluate refuse assignments themselves; this lets a reader refuse one where
+// it reads the text (an event's condition, compiled only when a run starts).
+void check_read_only(const std::string& expression);
+
 // The names an expression may use: each identifier outside its numbers ("2e3*a + sin(b)" gives
 // a, sin, b). A superset of the parameters it reads, never missing one, so a name not listed is
 // a name the expression's value cannot depend on.

@@ -12,6 +12,8 @@
 #include <optional>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/readers.hpp"
@@ -197,24 +199,32 @@ std::map<std::string, double> read_parameters(const Reader& reader,
     fields = MapReader(reader, *field, "a mapping of parameters {name: value, ...}").fields();
   }
   std::vector<std::string> names;
+  names.reserve(fields.size());
   for (const Field& f : fields) names.push_back(f.key());
-  for (const ParameterOverride& o : overrides) {
-    if (std::find(names.begin(), names.end(), o.name) == names.end()) {
-      throw std::invalid_argument(
-          "--set " + o.name + ": no parameter " + o.name + " in " + reader.file() +
-          (names.empty() ? "; it has no parameters"
-                         : "; its parameters are " + scenario_reading::join(names)));
+  // Each --set found by its name's hash (a file may hold a million parameters); the last --set of
+  // a name wins.
+  std::unordered_map<std::string_view, const ParameterOverride*> override_of;
+  if (!overrides.empty()) {
+    const std::unordered_set<std::string_view> defined(names.begin(), names.end());
+    for (const ParameterOverride& o : overrides) {
+      if (!defined.contains(o.name)) {
+        throw std::invalid_argument(
+            "--set " + o.name + ": no parameter " + o.name + " in " + reader.file() +
+            (names.empty() ? "; it has no parameters"
+                           : "; its parameters are " + listed_names(names)));
+      }
+      override_of[o.name] = &o;
     }
   }
   std::map<std::string, double> values;
-  for (const Field& f : fields) {
-    // The last --set of a name wins.
-    const auto o = std::find_if(overrides.rbegin(), overrides.rend(),
-                                [&](const ParameterOverride& p) { return p.name == f.key(); });
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const Field& f = fields[i];
+    const auto set = override_of.find(names[i]);
+    const ParameterOverride* o = set != override_of.end() ? set->second : nullptr;
     double value = 0.0;
     ParameterTrace* trace = reader.trace();
     const std::size_t uses_before = trace != nullptr ? trace->uses.size() : 0;
-    if (o != overrides.rend()) {
+    if (o != nullptr) {
       try {
         value = expressions.evaluate(o->value);
       } catch (const ExpressionError& error) {
@@ -225,13 +235,13 @@ std::map<std::string, double> read_parameters(const Reader& reader,
       value = reader.number(f);
     }
     // A parameter defined from a followed one is followed too.
-    if (trace != nullptr && trace->uses.size() > uses_before) trace->followed.push_back(f.key());
+    if (trace != nullptr && trace->uses.size() > uses_before) trace->followed.push_back(names[i]);
     try {
-      expressions.define(f.key(), value);
+      expressions.define(names[i], value);
     } catch (const ExpressionError& error) {
       reader.fail_at_key(f, error.what());
     }
-    values[f.key()] = value;
+    values.emplace(names[i], value);
   }
   return values;
 }

@@ -39,6 +39,19 @@ std::string event_kind(const std::string& what) {
   return word == "slip" ? "stops" : word;
 }
 
+// How many arguments a reduction's brackets hold: its commas outside inner brackets, plus one
+// ("abs(a), max(b, c)" holds two).
+std::size_t top_level_arguments(std::string_view argument) {
+  std::size_t count = 1;
+  int depth = 0;
+  for (const char c : argument) {
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if (c == ',' && depth == 0) ++count;
+  }
+  return count;
+}
+
 }  // namespace
 
 bool is_row_condition(const std::string& argument) {
@@ -90,6 +103,15 @@ Outcome parse_outcome(std::string name, const std::string& text) {
           known->kind == ReductionKind::First || known->kind == ReductionKind::Count
               ? "an event (e.g. ball.rolls, impulse.kick) or a condition (e.g. ball.vx < 0)"
               : "a column or an expression of columns, e.g. ball.vx"));
+    }
+    // One argument each: muParser would read "a, E" as two values and keep the last.
+    if (const std::size_t count = top_level_arguments(argument); count != 1) {
+      throw std::invalid_argument(
+          fmt::format("'{}': {}() takes one argument ({}), got {}: '{}'", text, word,
+                      known->kind == ReductionKind::First || known->kind == ReductionKind::Count
+                          ? "an event or a condition"
+                          : "a column or an expression of columns",
+                      count, argument));
     }
     outcome.expression += fmt::format("__r{}", outcome.reductions.size());
     outcome.reductions.push_back({known->kind, argument});

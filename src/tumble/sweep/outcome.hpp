@@ -39,7 +39,7 @@ struct Outcome {
 };
 
 // Throws std::invalid_argument, naming the text, when it has no reduction, a reduction without
-// its closing parenthesis or with nothing inside it.
+// its closing parenthesis, with nothing inside it, or with more than one argument (final(a, E)).
 Outcome parse_outcome(std::string name, const std::string& text);
 // "NAME=REDUCTION" (a --record argument); NAME must be an identifier.
 Outcome parse_record(const std::string& argument);

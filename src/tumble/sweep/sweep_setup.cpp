@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/scenario_document.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "tumble/sweep/run_recorder.hpp"
@@ -20,14 +21,14 @@ SweepSpec make_sweep_spec(std::string text, std::string path, std::vector<Parame
   spec.fixed = std::move(fixed);
   const Scenario base = ScenarioDocument::from_text(spec.text, spec.path).read(spec.fixed);
   const std::shared_ptr<const SimulationModel> model = build_simulation_model(base);
-  std::vector<std::string> parameters;
-  for (const auto& [name, value] : base.parameters) parameters.push_back(name);
   for (const VaryRange& range : ranges) {
-    if (std::find(parameters.begin(), parameters.end(), range.name) == parameters.end()) {
+    if (!base.parameters.contains(range.name)) {
+      std::vector<std::string> parameters;
+      for (const auto& [name, value] : base.parameters) parameters.push_back(name);
       throw std::invalid_argument(fmt::format(
           "{} {}: no parameter {} in {}; {}", names.vary, range.argument, range.name, spec.path,
           parameters.empty() ? "it has no parameters: add them under `parameters:` and use them"
-                             : fmt::format("its parameters are {}", fmt::join(parameters, ", "))));
+                             : "its parameters are " + listed_names(parameters)));
     }
     if (std::find(spec.varied.begin(), spec.varied.end(), range.name) != spec.varied.end()) {
       throw std::invalid_argument(

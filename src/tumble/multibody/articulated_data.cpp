@@ -14,8 +14,10 @@ ArticulatedData::ArticulatedData(const ArticulatedModel& model) {
     w.u.resize(nv);
     w.tau.resize(nv);
     w.qdd.resize(nv);
-    w.S_moves = model.tree[k].kind->moving_subspace();
-    w.S_moving = model.tree[k].S;
+    if (model.tree[k].kind->moving_subspace()) {
+      w.moving = static_cast<int>(moving.size());
+      moving.push_back({model.tree[k].S, Vec6::Zero()});
+    }
   }
   states.resize(model.body_count());
   rates.resize(model.dimension - model.ledger);

@@ -34,17 +34,24 @@ struct ArticulatedData {
     SpeedVector qdd;                   // joint accelerations (or speed jumps)
     Vec6 acceleration = Vec6::Zero();  // spatial acceleration (with -g at ground)
     bool known = false;                // prescribed: qdd is given, tau follows
-    // Where the joint's motion subspace turns with its coordinates (JointKind::moving_subspace),
-    // S there, which calc_kinematics sets (with its (dS/dt) u in bias); else the tree's S holds.
-    bool S_moves = false;
-    MotionSubspace S_moving;
+    // Where the joint's motion subspace turns with its coordinates (JointKind::moving_subspace):
+    // its entry in `moving`; -1 where the tree's S holds.
+    int moving = -1;
     Vec6 applied = Vec6::Zero();  // the loads in `external` before contact forces join them
   };
+  // A motion subspace that turns with the joint's coordinates, at the state last evaluated
+  // (calc_kinematics sets it, with (dS/dt) u, which joins the joint's velocity terms). Kept apart
+  // from the workspaces, which stay small for the joints whose S is constant.
+  struct MovingSubspace {
+    MotionSubspace S;
+    Vec6 S_rate_u = Vec6::Zero();
+  };
   // The joint's motion subspace at the state last evaluated.
-  static const MotionSubspace& S_of(const TreeJoint& joint, const Workspace& w) {
-    return w.S_moves ? w.S_moving : joint.S;
+  const MotionSubspace& S_of(const TreeJoint& joint, const Workspace& w) const {
+    return w.moving < 0 ? joint.S : moving[static_cast<std::size_t>(w.moving)].S;
   }
-  std::vector<Workspace> work;    // per tree joint
+  std::vector<Workspace> work;  // per tree joint
+  std::vector<MovingSubspace> moving;
   std::vector<BodyState> states;  // per body, from the last calc_kinematics
   VecX rates;                     // the ledger's rates (calc_row_extras)
 };

@@ -129,15 +129,16 @@ void ArticulatedFormulation::calc_kinematics(const VecX& y, bool with_velocities
     BodyState& s = d_.states[joint.child];
     s.r_G = w.r_G_W;
     s.R_WB = w.R_WC;
-    Vec6 S_rate_u = Vec6::Zero();
-    if (w.S_moves) joint.kind->calc_motion_subspace(joint, y, w.S_moving, S_rate_u);
+    if (w.moving >= 0) {
+      ArticulatedData::MovingSubspace& m = d_.moving[static_cast<std::size_t>(w.moving)];
+      joint.kind->calc_motion_subspace(joint, y, m.S, m.S_rate_u);
+    }
     if (!with_velocities) continue;
     Vec6 v_joint = Vec6::Zero();
-    if (joint.nv > 0)
-      v_joint.noalias() = ArticulatedData::S_of(joint, w) * y.segment(joint.v, joint.nv);
+    if (joint.nv > 0) v_joint.noalias() = d_.S_of(joint, w) * y.segment(joint.v, joint.nv);
     w.velocity = w.X.apply_motion(v_P) + v_joint;
     w.bias = cross_motion(w.velocity, v_joint);
-    if (w.S_moves) w.bias += S_rate_u;
+    if (w.moving >= 0) w.bias += d_.moving[static_cast<std::size_t>(w.moving)].S_rate_u;
     s.omega_W = w.R_WC * w.velocity.head<3>();
     s.v_G = w.R_WC * w.velocity.tail<3>();
   }
@@ -243,7 +244,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
       w.u = w.tau - w.pA;
       continue;
     }
-    const MotionSubspace& S = ArticulatedData::S_of(joint, w);
+    const MotionSubspace& S = d_.S_of(joint, w);
     if (w.known) {
       Vec6 a_joint = c;
       if (joint.nv > 0) a_joint.noalias() += S * w.qdd;
@@ -284,7 +285,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
             : d_.work[m_.slot_of_body[static_cast<std::size_t>(joint.parent)]].acceleration;
     Vec6 a = w.X.apply_motion(a_P);
     if (!impulsive) a += w.bias;
-    const MotionSubspace& S = ArticulatedData::S_of(joint, w);
+    const MotionSubspace& S = d_.S_of(joint, w);
     if (w.known) {
       if (joint.nv > 0) {
         a.noalias() += S * w.qdd;

@@ -109,7 +109,7 @@ simulate: {{duration: {}, integrator: dop853, rtol: 1e-12, atol: 1e-15, output_e
   }
 }
 
-TEST(SlenderBody, AFreeRodOrOneOnABallJointOrOnAHingeAlongItIsRefusedAtItsShape) {
+TEST(SlenderBody, AFreeRodOrOneOnABallJointOrTurnedAboutItsOwnLineIsRefusedAtItsShape) {
   const std::string head =
       "tumble: 1\nbodies:\n  rod: {shape: rod, length: 1, mass: 2, position: [0.5, 0, 0]}\n";
   const std::string simulate = "simulate: {duration: 1}\n";
@@ -122,6 +122,17 @@ TEST(SlenderBody, AFreeRodOrOneOnABallJointOrOnAHingeAlongItIsRefusedAtItsShape)
       head + "joints:\n  pin: {type: hinge, body: rod, at: [0, 0, 0], axis: [1, 0, 0]}\n" +
           simulate,
       3, 16, "bodies.rod.shape", "the hinge 'pin' turns it about an axis it has no inertia");
+  // A shaft along it, and a Hooke joint whose second axis lies along it.
+  test::expect_error(
+      head + "joints:\n  pin: {type: cylindrical, body: rod, at: [0, 0, 0], axis: [1, 0, 0]}\n" +
+          simulate,
+      3, 16, "bodies.rod.shape", "the cylindrical joint 'pin' turns it about an axis it has no");
+  test::expect_error(head +
+                         "joints:\n  pin: {type: universal, body: rod, at: [0, 0, 0], axes: [[0, "
+                         "0, 1], [1, 0, 0]]}\n" +
+                         simulate,
+                     3, 16, "bodies.rod.shape",
+                     "the universal joint 'pin' turns it about an axis it has no");
   // A point on a hinge through it.
   test::expect_error(
       "tumble: 1\nbodies:\n  bob: {shape: point, mass: 1}\njoints:\n  pin: {type: hinge, body: "

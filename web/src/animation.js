@@ -175,8 +175,11 @@ const joints = (data.joints ?? []).map((spec) => {
   const holder = new THREE.Group();
   holder.position.copy(point);
   holder.add(new THREE.Mesh(new THREE.SphereGeometry(r, 16, 8), jointMaterial));
-  if (spec.type === 'hinge' || spec.type === 'prismatic') {
-    const length = spec.type === 'hinge' ? 5 * r : 12 * r;
+  // An axle along the axis the body turns about (a universal joint's: its own, the second) or
+  // slides along (a slider's, a cylindrical joint's: longer).
+  if (['hinge', 'prismatic', 'cylindrical', 'universal'].includes(spec.type)) {
+    const slides = spec.type === 'prismatic' || spec.type === 'cylindrical';
+    const length = slides ? 12 * r : 5 * r;
     const rod = new THREE.Mesh(
       new THREE.CylinderGeometry(0.35 * r, 0.35 * r, length, 16), jointMaterial);
     rod.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), axis);  // three's along y

@@ -8,6 +8,7 @@
 
 #include "tumble/inertia/mesh.hpp"
 #include "tumble/math/rotation.hpp"
+#include "tumble/multibody/joints/joint_kind.hpp"
 #include "tumble/scenario/readers.hpp"
 
 namespace tumble::scenario_reading {
@@ -281,18 +282,28 @@ void check_slender_bodies(const Scenario& scenario) {
                         "through it with nothing to say how; hinge it, or give `inertia:`",
                         joint.name));
       }
-      if (joint.type != JointType::Hinge) continue;
-      // Its inertia about the hinge's axis n through the joint point: n.I_G.n + m |n x d|^2.
-      const Vec3& n = joint.axis_W;
-      const Vec3 d = r_G_W - joint.at_W;
-      const double about_axis = n.dot(I_G_W * n) + mp.mass * n.cross(d).squaredNorm();
-      const double scale = I_G_W.trace() / 2.0 + mp.mass * d.squaredNorm();
-      if (!(about_axis > 1e-9 * scale)) {
-        fail(
-            fmt::format("the hinge '{}' turns it about an axis it has no inertia about (along "
-                        "it, through it), so nothing says how fast; hinge it across that line, "
-                        "or give `inertia:`",
-                        joint.name));
+      // The axes the joint turns it about: a hinge's or a cylindrical joint's one, a universal
+      // joint's two (the first as it is at t = 0).
+      std::vector<Vec3> axes;
+      if (joint.type == JointType::Hinge || joint.type == JointType::Cylindrical) {
+        axes = {joint.axis_W};
+      } else if (joint.type == JointType::Universal) {
+        axes = {joint.first_axis_W, joint.axis_W};
+      }
+      for (const Vec3& n : axes) {
+        // Its inertia about the axis n through the joint point: n.I_G.n + m |n x d|^2.
+        const Vec3 d = r_G_W - joint.at_W;
+        const double about_axis = n.dot(I_G_W * n) + mp.mass * n.cross(d).squaredNorm();
+        const double scale = I_G_W.trace() / 2.0 + mp.mass * d.squaredNorm();
+        if (!(about_axis > 1e-9 * scale)) {
+          fail(fmt::format(
+              "the {} '{}' turns it about an axis it has no inertia about (along it, through "
+              "it), so nothing says how fast; hinge it across that line, or give `inertia:`",
+              joint.type == JointType::Hinge
+                  ? "hinge"
+                  : std::string(joint_kind(joint.type).type_name()) + " joint",
+              joint.name));
+        }
       }
     }
   }

@@ -115,6 +115,34 @@ TEST(UniversalJoint, TheJointStatedFromTheBoxsSideMovesItTheSameWay) {
   }
 }
 
+// Without gravity, a torque T about the second axis turns the box about it alone, from rest:
+// I_2,O theta_2'' = T (theta_1 stays 0: with theta_1' = 0 nothing drives it), and the motor's
+// work T theta_2 is the kinetic energy.
+TEST(UniversalJoint, ATorqueAboutTheSecondAxisTurnsTheBoxAboutItAlone) {
+  constexpr double T = 0.7;
+  std::string yaml = hung_box(0, 0, kFromGround, kAxesFromGround);
+  const auto change = [&yaml](const std::string& from, const std::string& to) {
+    yaml.replace(yaml.find(from), from.size(), to);
+  };
+  change("gravity: [0, 0, -9.81]", "gravity: [0, 0, 0]");
+  change("axes: [[1, 0, 0], [0, 1, 0]]}",
+         fmt::format("axes: [[1, 0, 0], [0, 1, 0]], motor: {{torque2: {}}}}}", T));
+  const test::ScenarioRun run = run_inline_scenario(yaml, "driven_box");
+  ASSERT_EQ(run.rows.size(), 501U);
+  for (const Row& row : run.rows) {
+    const double t = row.t;
+    const double angle2 = T * t * t / (2 * Box::I_2O);
+    const auto& q = row.extras.coordinates[0].values;  // angle1, rate1, angle2, rate2
+    EXPECT_NEAR(q[0], 0.0, 1e-12) << "t " << t;
+    EXPECT_NEAR(q[2], angle2, 1e-10 * std::max(1.0, angle2)) << "t " << t;
+    EXPECT_NEAR(q[3], T * t / Box::I_2O, 1e-10 * std::max(1.0, q[3])) << "t " << t;
+    // The motor's work (the ledger's last entry) is the kinetic energy it gave.
+    const double work = row.extras.elements.back().work;
+    EXPECT_NEAR(work, T * q[2], 1e-10 * std::max(1.0, work)) << "t " << t;
+    EXPECT_NEAR(row.quantities.kinetic_energy, work, 1e-10 * std::max(1.0, work)) << "t " << t;
+  }
+}
+
 TEST(UniversalJoint, AxesNotAtRightAnglesAreRefusedWhereTheyAre) {
   test::expect_error(hung_box(0, 0, kFromGround, "[[1, 0, 0], [0.1, 1, 0]]"), 13, 72,
                      "joints.cross.axes", "at right angles");

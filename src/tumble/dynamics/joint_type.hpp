@@ -19,6 +19,11 @@ enum class JointType {
 constexpr bool has_axis(JointType type) {
   return type == JointType::Hinge || type == JointType::Prismatic || type == JointType::Cylindrical;
 }
+// Whether a motor can drive it (`motor:`): the kinds with an axis, and a universal joint (a torque
+// about either of its axes).
+constexpr bool takes_motor(JointType type) {
+  return has_axis(type) || type == JointType::Universal;
+}
 // Whether a lock can make it rigid (`lock: {at: t}`): every kind with freedoms a scenario states.
 constexpr bool can_lock(JointType type) {
   return has_axis(type) || type == JointType::Universal;

@@ -27,8 +27,8 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
     const JointModel& joint = model.joints[j];
     if (joint.motor.kind != JointMotor::Kind::None) {
-      if (!has_axis(joint.type)) {
-        throw std::logic_error("a motor needs a joint with an axis; the reader checks this");
+      if (!takes_motor(joint.type)) {
+        throw std::logic_error("a motor needs a joint it can drive; the reader checks this");
       }
       motor_joints.push_back(j);
     }

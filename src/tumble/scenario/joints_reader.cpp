@@ -1,6 +1,6 @@
 // `joints:`: a mapping from each joint's name to {type: ball | hinge | prismatic | fixed |
 // cylindrical | universal, bodies: [a, b] (or body: b, held by ground), at: world point at t = 0,
-// axis:, motor: (hinge, prismatic, cylindrical), axes: (universal), lock: (all but ball and
+// axis: (hinge, prismatic, cylindrical), axes: (universal), motor:, lock: (all but ball and
 // fixed)}.
 #include <fmt/format.h>
 #include <algorithm>
@@ -70,8 +70,40 @@ MotorSpec read_cylindrical_motor(const Reader& reader, const Field& field) {
   return motor;
 }
 
+// A universal joint's torque1: (N m, about its first axis) or torque2: (about its second).
+MotorSpec read_universal_motor(const Reader& reader, const Field& field) {
+  const MapReader map(reader, field, "a motor {torque1: N m} or {torque2: N m}, with from:, to:");
+  map.allow_only({"torque1", "torque2", "from", "to"}, "a universal joint's motor",
+                 [](const std::string& key) -> std::string {
+                   if (key == "speed") {
+                     return "a universal joint's motor gives a torque about one of its axes "
+                            "(torque1: or torque2:); a speed is prescribed on a hinge or a slider";
+                   }
+                   if (key == "torque") return "say which axis: torque1: or torque2:";
+                   return "";
+                 });
+  MotorSpec motor;
+  motor.where = reader.location(field.key_mark);
+  const auto first = map.find("torque1");
+  const auto second = map.find("torque2");
+  if (first && second) {
+    reader.fail_at_key(*second, "a motor drives one freedom: torque1 or torque2, not both");
+  }
+  if (!first && !second) {
+    reader.fail_at_value(field,
+                         "give the motor's torque1: (N m, about the first axis) or "
+                         "torque2: (about the second)");
+  }
+  motor.kind = MotorSpec::Kind::Effort;
+  motor.freedom = second ? 1 : 0;
+  motor.value = reader.number(second ? *second : *first);
+  read_motor_schedule(reader, map, motor);
+  return motor;
+}
+
 MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
   if (type == JointType::Cylindrical) return read_cylindrical_motor(reader, field);
+  if (type == JointType::Universal) return read_universal_motor(reader, field);
   const bool slider = type == JointType::Prismatic;
   const std::string effort_key = slider ? "force" : "torque";
   const std::string speed_unit = slider ? "m/s" : "rad/s";
@@ -101,7 +133,7 @@ MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
 // A hinge's, a slider's or a cylindrical joint's motor and lock, after its axis.
 JointSpec read_drive(const Reader& reader, const MapReader& map, JointSpec& joint);
 // A universal joint's two axes (the first fixed in body a, the second in body b, at right
-// angles), and its lock.
+// angles), its motor and its lock.
 JointSpec read_universal_axes(const Reader& reader, const MapReader& map, JointSpec& joint);
 
 JointSpec read_joint(const Reader& reader, const Field& field,
@@ -129,17 +161,19 @@ JointSpec read_joint(const Reader& reader, const Field& field,
   std::vector<std::string> keys = {"type", "bodies", "body", "at"};
   const bool universal = joint.type == JointType::Universal;
   if (has_axis(joint.type)) keys.insert(keys.end(), {"axis", "motor", "lock"});
-  if (universal) keys.insert(keys.end(), {"axes", "lock"});
+  if (universal) keys.insert(keys.end(), {"axes", "motor", "lock"});
   map.allow_only(keys, "a " + type + " joint", [&](const std::string& key) -> std::string {
     if (universal && key == "axis") {
       return "a universal joint has two axes: axes: [[x, y, z], [x, y, z]]";
     }
-    if (universal && key == "motor") {
-      return "a universal joint takes no motor: drive a shaft it joins (a hinge's motor)";
+    if (key == "axis") {
+      return "only a hinge, a prismatic or a cylindrical joint has axis (this joint is a " + type +
+             ")";
     }
-    if (key == "axis" || key == "motor") {
-      return "only a hinge, a prismatic or a cylindrical joint has " + key + " (this joint is a " +
-             type + ")";
+    if (key == "motor") {
+      return "a " + type +
+             " joint takes no motor (a hinge, a prismatic, a cylindrical or a "
+             "universal joint does)";
     }
     if (key == "lock") return "a " + type + " joint has no freedom to lock";
     if (key == "axes") {

@@ -7,12 +7,16 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <new>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "tumble/sweep/sweep.hpp"
 
 namespace tumble::cli {
 namespace {
@@ -64,13 +68,49 @@ CLI::Validator seed_value() {
       "UINT64");
 }
 
+// --threads: a whole number from 1 to kMaxSweepThreads, the limit named in the message.
+CLI::Validator thread_count() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        int threads = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, error] = std::from_chars(text.data(), end, threads);
+        if (error == std::errc() && ptr == end && threads >= 1 && threads <= kMaxSweepThreads) {
+          return std::string();
+        }
+        const std::optional<double> value = flag_number(text);
+        const bool whole = value && std::isfinite(*value) && *value == std::floor(*value);
+        return fmt::format(
+            "{} is {}: expected a whole number from 1 to {} (the limit on a sweep's threads)", text,
+            whole ? "out of range" : "not a whole number", kMaxSweepThreads);
+      },
+      "INT");
+}
+
+// Runs a command; running out of memory (std::bad_alloc) or of a system resource such as
+// threads (std::system_error) anywhere in it ends the command with a line and exit status 5, not
+// an abort.
+int run_guarded(const char* command, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "tumble {}: out of memory\n", command);
+  } catch (const std::system_error& e) {
+    fmt::print(stderr, "tumble {}: {}\n", command, e.what());
+  }
+  return kOutputError;
+}
+
 }  // namespace
 
 int run_cli(int argc, const char* const* argv) {
   const std::string version = fmt::format("tumble {}", TUMBLE_VERSION);
 
-  CLI::App app{"tumble: rigid-body dynamics you can check. Scenario format: docs/scenario.md",
-               "tumble"};
+  CLI::App app{
+      "tumble: rigid-body dynamics you can check. Scenario format: docs/scenario.md (files read "
+      "have size limits, raised by TUMBLE_MAX_SCENARIO_MIB and TUMBLE_MAX_MESH_MIB: its \"Limits "
+      "on input\"). Any command out of memory or threads exits 5.",
+      "tumble"};
   app.set_version_flag("--version", version);
   app.require_subcommand(1);
 
@@ -83,9 +123,11 @@ int run_cli(int argc, const char* const* argv) {
       "--video an .mp4 or .gif of that page's 3D view) and print a summary (steps, "
       "evaluations, wall time, drift of E and |L|, largest |R^T R - I|, the events).\nExit "
       "status: 0 done, "
-      "2 bad command line, 3 invalid scenario (FILE:LINE:COL: KEY: why), 4 integration failed "
-      "(the rows so far stay a valid CSV), 5 output not writable (or the video could not be "
-      "made: node, Chromium or ffmpeg missing or failing; no partial video is left).");
+      "2 bad command line, 3 invalid scenario (FILE:LINE:COL: KEY: why; a scenario file over "
+      "64 MiB or a mesh over 1 GiB: TUMBLE_MAX_SCENARIO_MIB and TUMBLE_MAX_MESH_MIB raise the "
+      "limits, docs/scenario.md), 4 integration failed (the rows so far stay a valid CSV), 5 "
+      "output not writable (or the video could not be made: node, Chromium or ffmpeg missing or "
+      "failing; no partial video is left), or out of memory or threads.");
   run->set_version_flag("--version", version);
   run->add_option("scenario", run_args.scenario, "Scenario file (YAML)")->required();
   run->add_option("--out", run_args.out_dir, "Directory for the output files (created if missing)")
@@ -127,7 +169,8 @@ int run_cli(int argc, const char* const* argv) {
       "inertia",
       "Print each body's mass, COM, inertia about the COM, principal moments and axes (and with\n"
       "--about, its inertia about that point). The scenario needs no simulate: section.\nExit "
-      "status: 0 done, 2 bad command line (or no such body), 3 invalid scenario.");
+      "status: 0 done, 2 bad command line (or no such body), 3 invalid scenario, 5 out of "
+      "memory.");
   inertia->set_version_flag("--version", version);
   inertia->add_option("scenario", inertia_args.scenario, "Scenario file (YAML)")->required();
   inertia->add_option("body", inertia_args.body, "Only this body");
@@ -149,7 +192,9 @@ int run_cli(int argc, const char* const* argv) {
       "its parameter values, status (ok, failed, invalid), accepted steps, E and |L| drift, the "
       "recorded values and, for a run that did not finish, its message (docs/sweeps.md).\nExit "
       "status: 0 done (runs that failed are rows), 2 bad command line (an unknown parameter, an "
-      "empty range, a malformed record), 3 invalid scenario, 5 output not writable.");
+      "empty range, a malformed record, --threads over 256), 3 invalid scenario (a scenario file "
+      "over 64 MiB: TUMBLE_MAX_SCENARIO_MIB raises the limit), 5 output not writable (--out is "
+      "checked before the first run) or out of memory or threads.");
   sweep->set_version_flag("--version", version);
   sweep->add_option("scenario", sweep_args.scenario, "Scenario file (YAML)")->required();
   sweep
@@ -176,8 +221,11 @@ int run_cli(int argc, const char* const* argv) {
       "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0), each of one "
       "argument. Expressions only read: = (assignment) is refused, == compares; repeatable");
   sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");
-  sweep->add_option("--threads", sweep_args.threads, "Threads (default: every core)")
-      ->check(CLI::Range(1, 1024));
+  sweep
+      ->add_option("--threads", sweep_args.threads,
+                   fmt::format("Threads, 1 to {} (default: every core, at most {})",
+                               kMaxSweepThreads, kMaxSweepThreads))
+      ->check(thread_count());
   sweep->add_option("--out", sweep_args.out_dir, "Directory for sweep.csv (created if missing)")
       ->capture_default_str();
 
@@ -188,7 +236,7 @@ int run_cli(int argc, const char* const* argv) {
       "friction, speed or stiffness), by bisection to --tol, and print the bracket and the runs "
       "it took (docs/sweeps.md).\nExit status: 0 found, 2 bad command line (an unknown "
       "parameter, an empty range, a malformed condition, or the same outcome at both ends), 3 "
-      "invalid scenario, 4 a run failed.");
+      "invalid scenario, 4 a run failed, 5 out of memory or threads.");
   find->set_version_flag("--version", version);
   find->add_option("scenario", find_args.scenario, "Scenario file (YAML)")->required();
   find->add_option("--vary", find_args.vary,
@@ -266,12 +314,12 @@ int run_cli(int argc, const char* const* argv) {
     app.exit(e);
     return kBadCommandLine;
   }
-  if (run->parsed()) return run_command(run_args);
-  if (plot->parsed()) return plot_command(plot_args);
-  if (sweep->parsed()) return sweep_command(sweep_args);
-  if (find->parsed()) return find_command(find_args);
-  if (modes->parsed()) return modes_command(modes_args);
-  return inertia_command(inertia_args);
+  if (run->parsed()) return run_guarded("run", [&] { return run_command(run_args); });
+  if (plot->parsed()) return run_guarded("plot", [&] { return plot_command(plot_args); });
+  if (sweep->parsed()) return run_guarded("sweep", [&] { return sweep_command(sweep_args); });
+  if (find->parsed()) return run_guarded("find", [&] { return find_command(find_args); });
+  if (modes->parsed()) return run_guarded("modes", [&] { return modes_command(modes_args); });
+  return run_guarded("inertia", [&] { return inertia_command(inertia_args); });
 }
 
 }  // namespace tumble::cli

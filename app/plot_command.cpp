@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "child_process.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "tumble/input/bounded_read.hpp"
 
 namespace tumble::cli {
 namespace {
@@ -65,8 +67,22 @@ std::vector<std::string> read_header(const fs::path& csv) {
   if (!in) {
     throw PlotError(kBadCommandLine, fmt::format("cannot read {}: {}", csv.string(), errno_text()));
   }
+  // Read up to the first newline, and no further than the limit: /dev/zero has none.
   std::string line;
-  if (!std::getline(in, line) || line.empty() || line == "\r") {
+  std::uint64_t limit = 0;
+  try {
+    limit = limit_bytes(kCsvHeaderReadLimit);
+  } catch (const ReadLimitError& e) {
+    throw PlotError(kBadCommandLine, fmt::format("{}: {}", csv.string(), e.what()));
+  }
+  for (char c = 0; in.get(c) && c != '\n';) {
+    line += c;
+    if (line.size() > limit) {
+      throw PlotError(kBadCommandLine, fmt::format("{}: its header row {}", csv.string(),
+                                                   too_large_message(kCsvHeaderReadLimit, 0)));
+    }
+  }
+  if (in.bad() || line.empty() || line == "\r") {
     throw PlotError(kBadCommandLine,
                     fmt::format("{}: no header row (expected column names: t,...)", csv.string()));
   }

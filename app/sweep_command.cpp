@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>
@@ -85,6 +86,23 @@ int sweep_command(const SweepArguments& args) {
     return bad_argument(e.what());
   }
 
+  // sweep.csv is written after every run: its directory is made and a file created and removed
+  // in it first, so that an --out that cannot be written is said at once, not after the runs.
+  // Every process checks (they see one file system), so that all stop together.
+  const std::filesystem::path path = std::filesystem::path(args.out_dir) / "sweep.csv";
+  try {
+    std::error_code error;
+    std::filesystem::create_directories(path.parent_path(), error);
+    if (error) {
+      throw std::runtime_error(fmt::format("cannot create the directory {}: {}",
+                                           path.parent_path().string(), error.message()));
+    }
+    const AtomicFile probe(path);  // destroyed unfinished: removed, and sweep.csv untouched
+  } catch (const std::exception& e) {
+    if (lead) fmt::print(stderr, "tumble sweep: --out {}: {}\n", args.out_dir, e.what());
+    return kOutputError;
+  }
+
   // Rank r runs the points r, r + size, r + 2 size, ...: neighbours on a grid cost alike, so
   // each rank gets a like share of cheap and dear runs.
   const auto size = static_cast<std::size_t>(processes.size());
@@ -93,8 +111,9 @@ int sweep_command(const SweepArguments& args) {
   for (std::size_t i = rank; i < points.size(); i += size) mine.push_back(points[i]);
   const int threads = args.threads > 0
                           ? args.threads
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) /
-                                            std::max(1, processes.local_size()));
+                          : std::clamp(static_cast<int>(std::thread::hardware_concurrency()) /
+                                           std::max(1, processes.local_size()),
+                                       1, kMaxSweepThreads);
   const auto start = std::chrono::steady_clock::now();
   std::vector<RunRecord> records;
   {
@@ -130,7 +149,6 @@ int sweep_command(const SweepArguments& args) {
     }
     if (line.substr(cell, 3) != "ok,") ++not_ok;
   }
-  const std::filesystem::path path = std::filesystem::path(args.out_dir) / "sweep.csv";
   try {
     std::filesystem::create_directories(path.parent_path());
     AtomicFile file(path);

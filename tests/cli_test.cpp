@@ -486,5 +486,60 @@ TEST(Cli, InertiaAboutAPivotNeedsNoSimulateSection) {
   EXPECT_NE(run.out.find("missing required key 'simulate'"), std::string::npos) << run.out;
 }
 
+// The red team's `tumble run /dev/zero` read until memory ran out (an abort, or the OOM killer):
+// now each file read has a limit (docs/scenario.md, "Limits on input"), refused at once, and a
+// command that runs out of memory all the same says so with exit 5, not an abort.
+TEST(Cli, AFileWithoutEndOrTooLargeIsRefusedAtItsLimit) {
+  const std::string limit =
+      "the limit of 64 MiB (67108864 bytes) for a scenario file (set TUMBLE_MAX_SCENARIO_MIB to "
+      "a larger number of MiB to raise it)";
+  // /dev/zero under a limit lowered to 1 MiB, so that the test reads little (the default's read
+  // is the same, 64 times longer).
+  const std::string out = " --out " + fresh_dir("dev_zero").string();
+  for (const std::string& command :
+       {"run /dev/zero" + out, std::string("inertia /dev/zero"), "modes /dev/zero" + out}) {
+    const CommandResult r = run_tumble(command, "TUMBLE_MAX_SCENARIO_MIB=1 ");
+    EXPECT_EQ(r.status, 3) << command << "\n" << r.out;
+    EXPECT_EQ(r.out,
+              "/dev/zero:0:0: goes on past the limit of 1 MiB (1048576 bytes) for a scenario file "
+              "(set TUMBLE_MAX_SCENARIO_MIB to a larger number of MiB to raise it)\n")
+        << command;
+  }
+  const fs::path dir = fresh_dir("huge_scenario");
+  const fs::path huge = dir / "huge.yaml";
+  std::ofstream(huge) << "tumble: 1\n";
+  fs::resize_file(huge, std::uintmax_t{64} << 30);  // sparse: 64 GiB that use no disk
+  const CommandResult r = run_tumble("run " + huge.string() + " --out " + dir.string());
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_EQ(r.out, huge.string() + ":0:0: is 68719476736 bytes, larger than " + limit + "\n");
+  const CommandResult sweep =
+      run_tumble("sweep " + huge.string() + " --vary a=1:2:2 --out " + dir.string());
+  EXPECT_EQ(sweep.status, 3) << sweep.out;
+  EXPECT_NE(sweep.out.find("is 68719476736 bytes, larger than"), std::string::npos) << sweep.out;
+  // tumble plot reads a CSV's header row, which /dev/zero never ends.
+  const CommandResult plot =
+      run_tumble("plot /dev/zero --columns a -o " + (dir / "zero.svg").string());
+  EXPECT_EQ(plot.status, 2) << plot.out;
+  EXPECT_NE(plot.out.find("/dev/zero: its header row goes on past the limit of 1 MiB (1048576 "
+                          "bytes) for a CSV header row (set TUMBLE_MAX_CSV_HEADER_MIB"),
+            std::string::npos)
+      << plot.out;
+}
+
+TEST(Cli, RunningOutOfMemoryIsExitFiveWithOneLine) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "a sanitizer's shadow memory does not fit under ulimit -v";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+  GTEST_SKIP() << "a sanitizer's shadow memory does not fit under ulimit -v";
+#endif
+#endif
+  // The limit raised past the memory there is: /dev/zero is read until an allocation fails.
+  const CommandResult r = run_tumble("run /dev/zero --out " + fresh_dir("oom").string(),
+                                     "ulimit -v 60000; TUMBLE_MAX_SCENARIO_MIB=1000000 ");
+  EXPECT_EQ(r.status, 5) << r.out;
+  EXPECT_EQ(r.out, "tumble run: out of memory\n");
+}
+
 }  // namespace
 }  // namespace tumble

@@ -2,6 +2,7 @@
 // and each bad argument refused with its exit status and its name.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -201,6 +202,40 @@ TEST(SweepCommand, NumericFlagsOutOfRangeAreRefused) {
   EXPECT_EQ(largest.status, 0) << largest.out;
   EXPECT_NE(largest.out.find("random points, seed 18446744073709551615"), std::string::npos)
       << largest.out;
+}
+
+// --threads 1024 under a memory limit aborted (an uncaught std::system_error, exit 134); a count
+// over the limit is refused before any run. 256 itself is taken (a sweep of two points runs on
+// two of them).
+TEST(SweepCommand, ThreadsOverTheLimitAreRefused) {
+  const std::string sweep =
+      "sweep " + kExamples + "tumbling_prism.yaml --vary a=3:5:2 --record 'w=final(E)' --threads ";
+  for (const std::string threads : {"257", "1024", "10000", "0", "-1", "2.5"}) {
+    const auto result = run_tumble(sweep + threads);
+    EXPECT_EQ(result.status, 2) << threads << "\n" << result.out;
+    EXPECT_NE(result.out.find("--threads: " + threads + " is "), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find(": expected a whole number from 1 to 256 (the limit on a sweep's "
+                              "threads)"),
+              std::string::npos)
+        << result.out;
+  }
+  const auto dir = test::fresh_test_dir("SweepCommand", "threads_256");
+  const auto largest = run_tumble(sweep + "256 --out " + dir.string());
+  EXPECT_EQ(largest.status, 0) << largest.out;
+}
+
+// A sweep whose --out could not be written ran every point, then exited 5 with the results lost:
+// --out is checked before the first run. Under a regular file, so that root cannot write it.
+TEST(SweepCommand, AnOutThatCannotBeWrittenIsRefusedBeforeTheRuns) {
+  const auto dir = test::fresh_test_dir("SweepCommand", "unwritable_out");
+  const std::string file = (dir / "a_file").string();
+  std::ofstream(file) << "not a directory\n";
+  const auto result =
+      run_tumble("sweep " + kExamples +
+                 "tumbling_prism.yaml --vary a=3:5:4 --record 'w=final(E)' --out " + file + "/sub");
+  EXPECT_EQ(result.status, 5) << result.out;
+  EXPECT_EQ(result.out, "tumble sweep: --out " + file + "/sub: cannot create the directory " +
+                            file + "/sub: Not a directory\n");
 }
 
 TEST(FindCommand, PrintsTheBracketAndTheRuns) {

@@ -1,5 +1,6 @@
 // tumble.sweep and tumble.find: the command line's sweep and find (the same arguments, checks,
 // runs and sweep.csv), with the GIL released while they run.
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -43,8 +44,16 @@ py::dict sweep(const ScenarioSource& source, const Overrides& overrides,
   const std::vector<std::vector<double>> points =
       random > 0 ? random_points(ranges, static_cast<std::size_t>(random), seed)
                  : grid_points(ranges, kMaxRuns);
+  if (threads > kMaxSweepThreads) {
+    throw std::invalid_argument(fmt::format(
+        "threads: {} is out of range: expected 0 (every core) or 1 to {} (the limit on a "
+        "sweep's threads)",
+        threads, kMaxSweepThreads));
+  }
   const int thread_count =
-      threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+      threads > 0
+          ? threads
+          : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxSweepThreads);
   std::vector<RunRecord> records_done;
   std::string csv = sweep_csv_header(spec);
   {

@@ -96,3 +96,24 @@ def test_sweep_arguments_that_do_not_fit_the_scenario_are_value_errors():
         tumble.sweep(prism, {"a": (3, 4, 2)}, {"w": "final(nosuch.w1)"})
     with pytest.raises(ValueError, match="is varied twice"):
         tumble.sweep(prism, ["a=3:4:2", "a=3:4:2"], {"w": "final(prism.w1)"})
+
+
+def test_a_file_without_end_is_refused_at_the_scenario_limit():
+    # The red team's tumble.load('/dev/zero') read until memory ran out.
+    with pytest.raises(tumble.ScenarioError) as raised:
+        tumble.load("/dev/zero")
+    assert str(raised.value) == (
+        "/dev/zero:0:0: goes on past the limit of 64 MiB (67108864 bytes) for a scenario file "
+        "(set TUMBLE_MAX_SCENARIO_MIB to a larger number of MiB to raise it)")
+    assert raised.value.file == "/dev/zero"
+
+
+def test_a_sweep_of_more_threads_than_the_limit_is_a_value_error():
+    # threads=10000 aborted the interpreter (an uncaught std::system_error) under a memory limit.
+    for threads in (257, 10000):
+        with pytest.raises(ValueError) as raised:
+            tumble.sweep(EXAMPLES / "tumbling_prism.yaml", "a=3:5:2", ["w=final(E)"],
+                         threads=threads)
+        assert str(raised.value) == (
+            f"threads: {threads} is out of range: expected 0 (every core) or 1 to 256 (the limit "
+            "on a sweep's threads)")

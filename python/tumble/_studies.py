@@ -96,7 +96,8 @@ def sweep(
         final, max, min, mean, time_of_max, first, count).
     set: parameters fixed for every run. random: instead of the grid, this many points drawn
         uniformly in [lo, hi) of each range (vary as {name: (lo, hi)}), seeded by seed.
-    threads: threads to run on (0: every core). The GIL is released while the runs go on.
+    threads: threads to run on, 1 to 256 (0: every core, at most 256; more is a ValueError). The
+        GIL is released while the runs go on.
 
     Raises tumble.ScenarioError where the scenario is invalid at its own values, ValueError for a
     range, a set= or a record that does not fit it. A run that fails or is invalid is a row.

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "tumble/inertia/mesh.hpp"
+#include "tumble/input/bounded_read.hpp"
 
 namespace tumble {
 namespace {
@@ -33,9 +34,13 @@ std::string read_whole_file(const std::string& path) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot be opened for reading");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) fail(path, "read error");
-  return bytes;
+  try {
+    return read_bounded(path, in, kMeshReadLimit);
+  } catch (const ReadLimitError& e) {
+    fail(path, e.what());
+  } catch (const std::runtime_error&) {
+    fail(path, "read error");
+  }
 }
 
 std::string lower_extension(const std::string& path) {

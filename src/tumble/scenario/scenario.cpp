@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "tumble/input/bounded_read.hpp"
 #include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/readers.hpp"
 #include "tumble/scenario/scenario_document.hpp"
@@ -85,10 +86,13 @@ std::string read_scenario_file(const std::string& path) {
                             : "cannot be read: no such file (check the path)");
   }
   std::ifstream in(path, std::ios::binary);
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  if (!in.good() && !in.eof()) throw ScenarioError(nowhere, "", "cannot be read");
-  return contents.str();
+  try {
+    return read_bounded(path, in, kScenarioReadLimit);
+  } catch (const ReadLimitError& e) {
+    throw ScenarioError(nowhere, "", e.what());
+  } catch (const std::runtime_error&) {
+    throw ScenarioError(nowhere, "", "cannot be read");
+  }
 }
 
 namespace {

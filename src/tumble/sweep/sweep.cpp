@@ -7,6 +7,7 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 
 #include "tumble/output/csv_text.hpp"
@@ -125,6 +126,10 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
 std::vector<RunRecord> run_points(const SweepSpec& spec,
                                   std::span<const std::vector<double>> points, int threads,
                                   const SweepProgress& progress) {
+  if (threads < 1 || threads > kMaxSweepThreads) {
+    throw std::invalid_argument(
+        fmt::format("threads: {} is out of range: expected 1 to {}", threads, kMaxSweepThreads));
+  }
   std::vector<RunRecord> records(points.size());
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> done{0};
@@ -148,12 +153,23 @@ std::vector<RunRecord> run_points(const SweepSpec& spec,
     finished.notify_all();
   };
   const std::size_t count = std::max<std::size_t>(
-      1, std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), points.size()));
+      1, std::min<std::size_t>(static_cast<std::size_t>(threads), points.size()));
   std::vector<std::thread> workers;
-  for (std::size_t k = 1; k < count; ++k) workers.emplace_back(work);
+  // A thread that cannot be started (out of memory or of the process's thread limit) stops the
+  // others after their current run: a joinable std::thread destroyed unjoined would abort.
+  const auto start_worker = [&] {
+    try {
+      workers.emplace_back(work);
+    } catch (...) {
+      next = points.size();
+      for (std::thread& worker : workers) worker.join();
+      throw;
+    }
+  };
+  for (std::size_t k = 1; k < count; ++k) start_worker();
   if (progress) {
     // This thread reports; the others run.
-    workers.emplace_back(work);
+    start_worker();
     std::unique_lock<std::mutex> lock(mutex);
     while (done < points.size() && !failure) {
       finished.wait_for(lock, std::chrono::milliseconds(100));

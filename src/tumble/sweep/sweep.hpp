@@ -106,7 +106,14 @@ class SweepRunner {
 // Called on the calling thread about ten times a second while the runs go on.
 using SweepProgress = std::function<void(std::size_t done, std::size_t total)>;
 
-// Runs every point on `threads` threads (at least 1); the records are in the points' order.
+// The most threads a sweep runs on (tumble sweep --threads, Python's threads=): each thread
+// holds a run's state and its stack, and a thousand of them under a memory limit cannot all be
+// started. Larger counts are refused before any run (docs/sweeps.md).
+inline constexpr int kMaxSweepThreads = 256;
+
+// Runs every point on `threads` threads (1 to kMaxSweepThreads, else std::invalid_argument); the
+// records are in the points' order. A thread that cannot be started (std::system_error) stops
+// the sweep: the threads started finish their runs and the error is thrown.
 std::vector<RunRecord> run_points(const SweepSpec& spec,
                                   std::span<const std::vector<double>> points, int threads,
                                   const SweepProgress& progress = {});

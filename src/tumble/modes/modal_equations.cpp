@@ -220,7 +220,7 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
       const auto k =
           static_cast<std::size_t>(m.slot_of_joint[static_cast<std::size_t>(spring.hinge)]);
       const TreeJoint& joint = m.tree[k];
-      angle = kin[k].joint.angles(0);
+      angle = kin[k].joint.coordinates(0);
       rate = kin[k].joint.u(0);
       axis_W = kin[k].R_WC * joint.axis_C.cast<S>();
       if (joint.reversed) axis_W = -axis_W;

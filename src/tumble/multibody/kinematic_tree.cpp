@@ -28,24 +28,15 @@ TreeJoint from_model_joint(const JointModel& joint, int index, bool reversed) {
     t.p_PJ_P = joint.p_AJ_A;
     t.p_CJ_C = joint.p_BJ_B;
     t.R_PC0 = joint.R_AB0;
-    t.axis_C = joint.axis_B;
   } else {
-    // B is the parent: A turns relative to B by -theta about the same line, so about -axis in A's
-    // axes by +theta, and theta keeps the sign the scenario gave it; a slider's A moves relative to
-    // B by -d along the axis, so by +d along -axis.
+    // B is the parent.
     t.parent = joint.body_b;
     t.child = static_cast<std::size_t>(joint.body_a);
     t.p_PJ_P = joint.p_BJ_B;
     t.p_CJ_C = joint.p_AJ_A;
     t.R_PC0 = joint.R_AB0.transpose();
-    t.axis_C = -(joint.R_AB0 * joint.axis_B);
   }
-  // A universal joint's axes are fixed one in each body: the parent holds the first (or, from
-  // the second body, the second, each turned the other way so that the angles keep their sign).
-  if (joint.type == JointType::Universal) {
-    t.axis_P = reversed ? Vec3(-joint.axis_B) : joint.axis_A;
-    t.axis_C = reversed ? Vec3(-joint.axis_A) : joint.axis_B;
-  }
+  joint_kind(joint.type).set_axes(t, joint);
   set_subspace(t);
   return t;
 }

@@ -77,7 +77,7 @@ void BallJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& a
   const Mat3 R_PC0 = rotation_at(at.y0, joint.q);
   motion.R_PC = turned<S>(R_PC0, Vec3Of<S>(at.z_q.template head<3>()));
   motion.p_PC_P = offset_about_joint_point<S>(joint, motion.R_PC);
-  motion.angles.resize(0);
+  motion.coordinates.resize(0);
   motion.u = at.y0.segment(joint.v, 3).template cast<S>();
   motion.u += at.z_u;
   motion.S_C = joint.S.cast<S>();

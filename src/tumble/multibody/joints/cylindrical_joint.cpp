@@ -91,7 +91,7 @@ template <typename S>
 void CylindricalJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                                     JointMotionOf<S>& motion) const {
   modal_numbers<S>(joint, at, motion);
-  place<S>(joint, motion.angles(0), motion.angles(1), motion.R_PC, motion.p_PC_P);
+  place<S>(joint, motion.coordinates(0), motion.coordinates(1), motion.R_PC, motion.p_PC_P);
 }
 
 template <typename S>

@@ -17,7 +17,7 @@ void FixedJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& 
                               JointMotionOf<S>& motion) const {
   motion.R_PC = joint.R_PC0.cast<S>();
   motion.p_PC_P = offset_about_joint_point<S>(joint, motion.R_PC);
-  motion.angles.resize(0);
+  motion.coordinates.resize(0);
   motion.u.resize(0);
   motion.S_C.resize(6, 0);
 }

@@ -74,7 +74,7 @@ void FreeJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& a
   motion.R_PC = turned<S>(rotation_at(at.y0, joint.q + 3), Vec3Of<S>(at.z_q.template tail<3>()));
   motion.p_PC_P = at.y0.template segment<3>(joint.q).template cast<S>();
   motion.p_PC_P += at.z_q.template head<3>();
-  motion.angles.resize(0);
+  motion.coordinates.resize(0);
   // Speeds (omega_C, v_C) in the child's axes; the modal speed is v_G in world axes.
   motion.u = at.y0.segment(joint.v, 6).template cast<S>();
   motion.u.template head<3>() += at.z_u.template tail<3>();

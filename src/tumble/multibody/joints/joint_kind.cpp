@@ -71,6 +71,11 @@ std::span<const std::string_view> joint_type_names() {
   return names;
 }
 
+void JointKind::set_axes(TreeJoint& joint, const JointModel& model_joint) const {
+  joint.axis_C =
+      joint.reversed ? Vec3(-(model_joint.R_AB0 * model_joint.axis_B)) : model_joint.axis_B;
+}
+
 Mat3 rotation_at(const VecX& y, Eigen::Index o) {
   return Quat(y(o), y(o + 1), y(o + 2), y(o + 3)).normalized().toRotationMatrix();
 }

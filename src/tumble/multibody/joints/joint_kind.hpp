@@ -37,8 +37,10 @@ template <typename S>
 struct JointMotionOf {
   Mat3Of<S> R_PC = Mat3Of<S>::Identity();  // the child's axes relative to the parent's
   Vec3Of<S> p_PC_P = Vec3Of<S>::Zero();    // the child's COM from the parent's, parent axes
-  VecXOf<S> angles;  // its coordinates that are numbers (a hinge's angle, a slider's travel)
-  VecXOf<S> u;       // its speeds
+  // Its coordinates that are numbers (a hinge's angle, a slider's travel; none for a turn held
+  // as a rotation).
+  VecXOf<S> coordinates;
+  VecXOf<S> u;  // its speeds
   // S (6 x nv, child axes at the child's COM) there, and (dS/dt) u, the part of the child's
   // acceleration relative to the parent that comes from S turning in the child's axes (zero
   // where S is constant there).
@@ -66,6 +68,13 @@ class JointKind {
   virtual std::string_view type_name() const = 0;
   virtual int coordinate_count() const = 0;  // nq
   virtual int speed_count() const = 0;       // nv
+  // The joint's axes in the tree's bodies' axes (axis_C, axis_P), from the scenario's
+  // (JointModel), the tree's parent and child being its bodies in either order (reversed). By
+  // default its one axis in the child's axes, turned the other way where the tree holds it from
+  // its second body: the first body turns relative to the second by -theta about the same line,
+  // so about -axis by +theta, and theta keeps the sign the scenario gave it (a slider's travel
+  // likewise).
+  virtual void set_axes(TreeJoint& joint, const JointModel& model_joint) const;
   // S (6 x nv): the child's spatial velocity (omega; v_G), child axes, per unit of each speed,
   // where it does not change with the coordinates (the tree keeps it).
   virtual void set_motion_subspace(TreeJoint& joint) const = 0;

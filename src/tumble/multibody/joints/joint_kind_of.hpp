@@ -89,11 +89,11 @@ class JointKindOf : public JointKind {
 
 // Kinds whose coordinates are numbers (angles, travels: hinge, slider, cylindrical, universal),
 // one per speed: their modal positions and speeds are departures of those numbers from y0,
-// signed as the scenario states the joint. motion's angles, u and (constant) S from them.
+// signed as the scenario states the joint. motion's coordinates, u and (constant) S from them.
 template <typename S>
 void modal_numbers(const TreeJoint& joint, const ModalJointPoint<S>& at, JointMotionOf<S>& motion) {
   const S sign(at.sign);
-  motion.angles = at.y0.segment(joint.q, joint.nq).template cast<S>() + sign * at.z_q;
+  motion.coordinates = at.y0.segment(joint.q, joint.nq).template cast<S>() + sign * at.z_q;
   motion.u = at.y0.segment(joint.v, joint.nv).template cast<S>() + sign * at.z_u;
   motion.S_C = joint.S.cast<S>();
 }

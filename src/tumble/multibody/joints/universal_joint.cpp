@@ -49,6 +49,13 @@ void subspace(const TreeJoint& joint, const Vec3Of<S>& b_P, const S& rate_P, con
 
 }  // namespace
 
+// Its axes are fixed one in each body: the parent holds the first (or, from the second body, the
+// second, each turned the other way so that the angles keep their sign).
+void UniversalJoint::set_axes(TreeJoint& joint, const JointModel& model_joint) const {
+  joint.axis_P = joint.reversed ? Vec3(-model_joint.axis_B) : model_joint.axis_A;
+  joint.axis_C = joint.reversed ? Vec3(-model_joint.axis_A) : model_joint.axis_B;
+}
+
 // At zero the parent's axis is R_PC0^T axis_P in the child's axes (the tree keeps S for nothing:
 // calc_motion_subspace gives it at each configuration).
 void UniversalJoint::set_motion_subspace(TreeJoint& joint) const {
@@ -139,7 +146,7 @@ void UniversalJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<
   const Order o = order(joint);
   modal_numbers<S>(joint, at, motion);
   Vec3Of<S> b_P;
-  turns<S>(joint, motion.angles(o.parent), motion.angles(o.child), motion.R_PC, b_P);
+  turns<S>(joint, motion.coordinates(o.parent), motion.coordinates(o.child), motion.R_PC, b_P);
   motion.p_PC_P = offset_about_joint_point<S>(joint, motion.R_PC);
   subspace<S>(joint, b_P, motion.u(o.parent), motion.u(o.child), motion.S_C, motion.S_rate_u);
   motion.S_moves = true;

@@ -20,6 +20,7 @@ class UniversalJoint final : public JointKindOf<UniversalJoint> {
   std::string_view type_name() const override { return "universal"; }
   int coordinate_count() const override { return 2; }
   int speed_count() const override { return 2; }
+  void set_axes(TreeJoint& joint, const JointModel& model_joint) const override;
   void set_motion_subspace(TreeJoint& joint) const override;
   bool moving_subspace() const override { return true; }
   void calc_motion_subspace(const TreeJoint& joint, const VecX& y, MotionSubspace& S,

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 
@@ -41,58 +42,30 @@ void read_motor_schedule(const Reader& reader, const MapReader& map, MotorSpec& 
   }
 }
 
-// A hinge's motor gives speed: (rad/s) or torque: (N m); a slider's speed: (m/s) or force: (N);
-// a cylindrical joint's torque: (N m, its turn) or force: (N, its slide).
-MotorSpec read_cylindrical_motor(const Reader& reader, const Field& field) {
-  const MapReader map(reader, field, "a motor {torque: N m} or {force: N}, with from:, to:");
-  map.allow_only({"torque", "force", "from", "to"}, "a cylindrical joint's motor",
-                 [](const std::string& key) -> std::string {
-                   if (key != "speed") return "";
-                   return "a cylindrical joint's motor gives a torque: about its axis or a "
-                          "force: along it; a speed is prescribed on a hinge or a slider";
-                 });
+// A motor on a joint of two freedoms: an effort on one of them, named by its key (keys[0] drives
+// the first freedom, keys[1] the second); `explain` says why another known key is out of place.
+struct EffortKey {
+  const char* key;
+  const char* meaning;  // "N m, about the axis"
+};
+MotorSpec read_effort_motor(const Reader& reader, const Field& field,
+                            const std::array<EffortKey, 2>& keys, const std::string& what,
+                            const std::function<std::string(const std::string&)>& explain) {
+  const MapReader map(
+      reader, field,
+      fmt::format("a motor {{{}: ...}} or {{{}: ...}}, with from:, to:", keys[0].key, keys[1].key));
+  map.allow_only({keys[0].key, keys[1].key, "from", "to"}, what, explain);
   MotorSpec motor;
   motor.where = reader.location(field.key_mark);
-  const auto torque = map.find("torque");
-  const auto force = map.find("force");
-  if (torque && force) {
-    reader.fail_at_key(*force, "a motor drives one freedom: the torque or the force, not both");
-  }
-  if (!torque && !force) {
-    reader.fail_at_value(field,
-                         "give the motor's torque: (N m, about the axis) or force: (N, "
-                         "along it)");
-  }
-  motor.kind = MotorSpec::Kind::Effort;
-  motor.freedom = force ? 1 : 0;
-  motor.value = reader.number(force ? *force : *torque);
-  read_motor_schedule(reader, map, motor);
-  return motor;
-}
-
-// A universal joint's torque1: (N m, about its first axis) or torque2: (about its second).
-MotorSpec read_universal_motor(const Reader& reader, const Field& field) {
-  const MapReader map(reader, field, "a motor {torque1: N m} or {torque2: N m}, with from:, to:");
-  map.allow_only({"torque1", "torque2", "from", "to"}, "a universal joint's motor",
-                 [](const std::string& key) -> std::string {
-                   if (key == "speed") {
-                     return "a universal joint's motor gives a torque about one of its axes "
-                            "(torque1: or torque2:); a speed is prescribed on a hinge or a slider";
-                   }
-                   if (key == "torque") return "say which axis: torque1: or torque2:";
-                   return "";
-                 });
-  MotorSpec motor;
-  motor.where = reader.location(field.key_mark);
-  const auto first = map.find("torque1");
-  const auto second = map.find("torque2");
+  const auto first = map.find(keys[0].key);
+  const auto second = map.find(keys[1].key);
   if (first && second) {
-    reader.fail_at_key(*second, "a motor drives one freedom: torque1 or torque2, not both");
+    reader.fail_at_key(*second, fmt::format("a motor drives one freedom: {} or {}, not both",
+                                            keys[0].key, keys[1].key));
   }
   if (!first && !second) {
-    reader.fail_at_value(field,
-                         "give the motor's torque1: (N m, about the first axis) or "
-                         "torque2: (about the second)");
+    reader.fail_at_value(field, fmt::format("give the motor's {}: ({}) or {}: ({})", keys[0].key,
+                                            keys[0].meaning, keys[1].key, keys[1].meaning));
   }
   motor.kind = MotorSpec::Kind::Effort;
   motor.freedom = second ? 1 : 0;
@@ -101,6 +74,33 @@ MotorSpec read_universal_motor(const Reader& reader, const Field& field) {
   return motor;
 }
 
+// A cylindrical joint's torque: (N m, its turn) or force: (N, its slide).
+MotorSpec read_cylindrical_motor(const Reader& reader, const Field& field) {
+  return read_effort_motor(
+      reader, field, {{{"torque", "N m, about the axis"}, {"force", "N, along it"}}},
+      "a cylindrical joint's motor", [](const std::string& key) -> std::string {
+        if (key != "speed") return "";
+        return "a cylindrical joint's motor gives a torque: about its axis or a force: along it; "
+               "a speed is prescribed on a hinge or a slider";
+      });
+}
+
+// A universal joint's torque1: (N m, about its first axis) or torque2: (about its second).
+MotorSpec read_universal_motor(const Reader& reader, const Field& field) {
+  return read_effort_motor(
+      reader, field,
+      {{{"torque1", "N m, about the first axis"}, {"torque2", "N m, about the second"}}},
+      "a universal joint's motor", [](const std::string& key) -> std::string {
+        if (key == "speed") {
+          return "a universal joint's motor gives a torque about one of its axes (torque1: or "
+                 "torque2:); a speed is prescribed on a hinge or a slider";
+        }
+        if (key == "torque") return "say which axis: torque1: or torque2:";
+        return "";
+      });
+}
+
+// A hinge's motor gives speed: (rad/s) or torque: (N m); a slider's speed: (m/s) or force: (N).
 MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
   if (type == JointType::Cylindrical) return read_cylindrical_motor(reader, field);
   if (type == JointType::Universal) return read_universal_motor(reader, field);

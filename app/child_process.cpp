@@ -136,6 +136,23 @@ void end_by_signal(int signal_number) {
   std::_Exit(128 + signal_number);  // not reached: the default action of these signals ends us
 }
 
+TemporaryDirectory::TemporaryDirectory(std::string_view prefix) {
+  std::error_code error;
+  std::string name =
+      (std::filesystem::temp_directory_path(error) / (std::string(prefix) + "-XXXXXX")).string();
+  if (error || ::mkdtemp(name.data()) == nullptr) {
+    throw std::runtime_error(
+        fmt::format("cannot make a temporary directory: {}",
+                    error ? error.message() : std::generic_category().message(errno)));
+  }
+  path_ = name;
+}
+
+TemporaryDirectory::~TemporaryDirectory() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
 std::string lowercase_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tumble::cli {
@@ -54,6 +55,23 @@ struct ChildOutcome {
 // ending tumble at once, so the program cleans up after itself and tumble then removes its own
 // temporary files; ChildProcessError says the run was interrupted.
 ChildOutcome run_child(std::vector<std::string> args, ChildOutput output);
+
+// A fresh directory of tumble's own (mode 0700) under the system's temporary directory, removed
+// with all it holds when this goes out of scope: where a helper program writes (a page, a
+// figure, a video) before tumble installs the result (install_copy). No one else can plant a file
+// or a link in it. Throws std::runtime_error if it cannot be made.
+class TemporaryDirectory {
+ public:
+  // `prefix` starts its name: "tumble-video".
+  explicit TemporaryDirectory(std::string_view prefix);
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  ~TemporaryDirectory();
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
 
 // The file's extension in lower case: ".png" for "Figure.PNG".
 std::string lowercase_extension(const std::filesystem::path& path);

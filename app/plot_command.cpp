@@ -23,6 +23,7 @@
 #include "commands.hpp"
 #include "exit_status.hpp"
 #include "tumble/input/bounded_read.hpp"
+#include "tumble/output/atomic_file.hpp"
 
 namespace tumble::cli {
 namespace {
@@ -43,23 +44,6 @@ class PlotError : public std::runtime_error {
 std::string errno_text() {
   return std::generic_category().message(errno);
 }
-
-// Removes a file when it goes out of scope unless released: no partial output on any failure.
-class RemoveOnExit {
- public:
-  explicit RemoveOnExit(fs::path path) : path_(std::move(path)) {}
-  RemoveOnExit(const RemoveOnExit&) = delete;
-  RemoveOnExit& operator=(const RemoveOnExit&) = delete;
-  ~RemoveOnExit() {
-    if (path_.empty()) return;
-    std::error_code ignored;
-    fs::remove(path_, ignored);
-  }
-  void release() { path_.clear(); }
-
- private:
-  fs::path path_;
-};
 
 // The header row, split on commas (the trajectory CSV's names never contain one or a quote).
 std::vector<std::string> read_header(const fs::path& csv) {
@@ -231,8 +215,6 @@ int plot(const PlotArguments& args) {
                     "`apt-get install gnuplot-nox` (Debian) or run scripts/setup.sh");
   }
 
-  // The figure is drawn under a name unique to this process beside the destination: rename()
-  // then stays on one file system and is atomic.
   std::error_code error;
   const fs::path destination = fs::absolute(output, error);
   if (error)
@@ -242,22 +224,22 @@ int plot(const PlotArguments& args) {
     throw PlotError(kOutputError, fmt::format("cannot write {}: {}: {}", args.output,
                                               destination.parent_path().string(), error.message()));
   }
-  fs::path partial = destination;
-  partial += fmt::format(".partial-{}", static_cast<long>(::getpid()));
-  const int partial_fd = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (partial_fd < 0) {
-    throw PlotError(kOutputError, fmt::format("cannot write {}: {}", args.output, errno_text()));
+  // gnuplot draws into a directory of tumble's own, and the finished figure is installed through
+  // an AtomicFile: nothing planted beside the destination is ever written through.
+  std::optional<TemporaryDirectory> scratch;
+  try {
+    scratch.emplace("tumble-plot");
+  } catch (const std::runtime_error& e) {
+    throw PlotError(kOutputError, fmt::format("cannot write {}: {}", args.output, e.what()));
   }
-  ::close(partial_fd);
-  RemoveOnExit remove_partial(partial);
-
-  std::string script_name = (fs::temp_directory_path(error) / "tumble-plot-XXXXXX").string();
-  const int script_fd = ::mkstemp(script_name.data());
+  const fs::path figure = scratch->path() / ("figure" + extension);
+  const std::string script_name = (scratch->path() / "figure.gp").string();
+  const int script_fd =
+      ::open(script_name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
   if (script_fd < 0) {
     throw PlotError(kOutputError, fmt::format("cannot write the gnuplot script {}: {}", script_name,
                                               errno_text()));
   }
-  RemoveOnExit remove_script(script_name);
   const std::string script = gnuplot_script(args, extension == ".svg", x_number, y_numbers);
   const bool script_written =
       ::write(script_fd, script.data(), script.size()) == static_cast<ssize_t>(script.size());
@@ -271,7 +253,7 @@ int plot(const PlotArguments& args) {
   ChildOutcome gnuplot_run;
   try {
     gnuplot_run = run_child({gnuplot->string(), "--default-settings", "-c", script_name,
-                             partial.string(), absolute_csv.string()},
+                             figure.string(), absolute_csv.string()},
                             ChildOutput::Inherit);
   } catch (const ChildProcessError& e) {
     throw PlotError(kOutputError,
@@ -281,15 +263,15 @@ int plot(const PlotArguments& args) {
     throw PlotError(kOutputError, fmt::format("gnuplot failed ({}); nothing was written to {}",
                                               gnuplot_run.how_it_ended(), args.output));
   }
-  if (fs::file_size(partial, error) == 0 || error) {
+  if (fs::file_size(figure, error) == 0 || error) {
     throw PlotError(kOutputError,
                     fmt::format("gnuplot drew nothing; nothing was written to {}", args.output));
   }
-  fs::rename(partial, destination, error);
-  if (error) {
-    throw PlotError(kOutputError, fmt::format("cannot write {}: {}", args.output, error.message()));
+  try {
+    install_copy(figure, destination);
+  } catch (const std::runtime_error& e) {
+    throw PlotError(kOutputError, e.what());
   }
-  remove_partial.release();
   return kDone;
 }
 

@@ -6,6 +6,7 @@
 #include "child_process.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "output_files.hpp"
 #include "system_summary.hpp"
 #include "tumble/output/animation_html.hpp"
 #include "tumble/output/events_csv.hpp"
@@ -133,7 +134,7 @@ std::string make_video(const VideoRequest& video, const std::optional<std::files
   if (page) {
     render_video(*page, video, frames);
   } else {
-    const TemporaryDirectory scratch;
+    const TemporaryDirectory scratch("tumble-page");
     std::filesystem::path temporary_page = scratch.path() / trajectory.filename();
     temporary_page.replace_extension(".html");
     write_animation_html(temporary_page, make_animation_scene(scenario), recorded);
@@ -182,22 +183,32 @@ int run_command(const RunArguments& args) {
 
   const std::filesystem::path out_dir(args.out_dir);
   const std::filesystem::path trajectory = out_dir / scenario.output.trajectory;
-  // --animate names the page after the trajectory, with .html: a trajectory named .html is the
-  // page's own name, and one would overwrite the other.
-  if (const auto page = animation_path(args, scenario, trajectory);
-      page && page->lexically_normal() == trajectory.lexically_normal()) {
-    const SourceLocation where = scenario.output.trajectory_where.line > 0
-                                     ? scenario.output.trajectory_where
-                                     : SourceLocation{scenario.file, 0, 0};
-    fmt::print(stderr, "{}\n",
-               ScenarioError(where, "output.trajectory",
-                             fmt::format("'{}' is also the animation page's name (--animate "
-                                         "writes it beside the trajectory with .html): give the "
-                                         "trajectory a .csv name",
-                                         scenario.output.trajectory))
-                   .what());
-    return kInvalidScenario;
+  // Every file the run may write, before it starts: the events file's name counts even when the
+  // run may have no events to write.
+  std::vector<OutputFile> outputs = {
+      {"output.trajectory", scenario.output.trajectory, "the trajectory's file", trajectory,
+       scenario.output.trajectory_where},
+      {"output.events", scenario.output.events,
+       scenario.output.events_given ? "the events file"
+                                    : "the events file's name (by default FILE_events.csv)",
+       out_dir / scenario.output.events, scenario.output.events_where},
+  };
+  if (const auto page = animation_path(args, scenario, trajectory)) {
+    if (!scenario.output.animation.empty()) {
+      outputs.push_back({"output.animation", scenario.output.animation, "the animation page", *page,
+                         scenario.output.animation_where});
+    } else {
+      outputs.push_back({"--animate",
+                         page->filename().string(),
+                         "the animation page's name (--animate writes it beside the trajectory "
+                         "with .html)",
+                         *page,
+                         {}});
+    }
   }
+  if (video)
+    outputs.push_back({"--video", video->path.string(), "the video's file", video->path, {}});
+  if (const int shared = refuse_shared_outputs(outputs, scenario); shared != kDone) return shared;
   std::optional<TrajectoryCsvWriter> writer;
   try {
     std::filesystem::create_directories(trajectory.parent_path());

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -86,10 +87,13 @@ int sweep_command(const SweepArguments& args) {
     return bad_argument(e.what());
   }
 
-  // sweep.csv is written after every run: its directory is made and a file created and removed
-  // in it first, so that an --out that cannot be written is said at once, not after the runs.
-  // Every process checks (they see one file system), so that all stop together.
+  // sweep.csv is made before the first run, so that an --out that cannot be written is said at
+  // once, not after the runs. Every process checks (they see one file system), so that all stop
+  // together. In one process the file is put in place with its header at once and each run's row
+  // is added as it and every run before it finish: a sweep stopped at any point (Ctrl-C, a kill,
+  // a failure) leaves a valid sweep.csv of the runs so far, in order.
   const std::filesystem::path path = std::filesystem::path(args.out_dir) / "sweep.csv";
+  std::optional<AtomicFile> file;
   try {
     std::error_code error;
     std::filesystem::create_directories(path.parent_path(), error);
@@ -97,11 +101,16 @@ int sweep_command(const SweepArguments& args) {
       throw std::runtime_error(fmt::format("cannot create the directory {}: {}",
                                            path.parent_path().string(), error.message()));
     }
-    const AtomicFile probe(path);  // destroyed unfinished: removed, and sweep.csv untouched
+    file.emplace(path);  // destroyed unpublished: removed, and sweep.csv untouched
+    if (lead) {
+      file->write(sweep_csv_header(spec));
+      if (processes.size() == 1) file->publish();
+    }
   } catch (const std::exception& e) {
     if (lead) fmt::print(stderr, "tumble sweep: --out {}: {}\n", args.out_dir, e.what());
     return kOutputError;
   }
+  if (!lead) file.reset();
 
   // Rank r runs the points r, r + size, r + 2 size, ...: neighbours on a grid cost alike, so
   // each rank gets a like share of cheap and dear runs.
@@ -115,49 +124,65 @@ int sweep_command(const SweepArguments& args) {
                                            std::max(1, processes.local_size()),
                                        1, kMaxSweepThreads);
   const auto start = std::chrono::steady_clock::now();
+  std::size_t not_ok = 0;
+  const auto count = [&](const RunRecord& record) {
+    if (record.status != RunStatus::Ok) ++not_ok;
+  };
+  // One process: each row to the file as it comes.
+  const SweepRunsDone write_row = [&](std::size_t k, const RunRecord& record) {
+    file->write(sweep_csv_line(k, mine[k], record, spec.outcomes.size()));
+    file->flush();
+    count(record);
+  };
   std::vector<RunRecord> records;
-  {
+  try {
     ProgressBar bar;
     records = run_points(
         spec, mine, threads,
         lead ? SweepProgress([&](std::size_t done, std::size_t total) { bar.show(done, total); })
-             : SweepProgress());
-  }
-  std::string lines;
-  for (std::size_t k = 0; k < mine.size(); ++k) {
-    lines += sweep_csv_line(rank + k * size, mine[k], records[k], spec.outcomes.size());
-  }
-  const std::vector<std::string> texts = processes.gather(lines);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!lead) return kDone;
-
-  // Each rank's lines are in its runs' order; run i is rank i mod size's next.
-  std::string csv = sweep_csv_header(spec);
-  std::vector<std::size_t> at(texts.size(), 0);
-  std::size_t not_ok = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::size_t r = i % size;
-    const std::size_t end = texts[r].find('\n', at[r]);
-    const std::string_view line = std::string_view(texts[r]).substr(at[r], end + 1 - at[r]);
-    csv += line;
-    at[r] = end + 1;
-    // The status follows the run's number and its values, which hold no commas.
-    std::size_t cell = 0;
-    for (std::size_t commas = 0; commas <= spec.varied.size(); ++commas) {
-      cell = line.find(',', cell) + 1;
-    }
-    if (line.substr(cell, 3) != "ok,") ++not_ok;
-  }
-  try {
-    std::filesystem::create_directories(path.parent_path());
-    AtomicFile file(path);
-    file.write(csv);
-    file.finish();
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "tumble sweep: {}\n", e.what());
+             : SweepProgress(),
+        size == 1 ? write_row : SweepRunsDone());
+  } catch (const std::runtime_error& e) {  // sweep.csv cannot be written, or a thread started
+    fmt::print(stderr, "tumble sweep: {}\n", e.what());  // the rows so far stay
     return kOutputError;
   }
+  if (size == 1) {
+    try {
+      file->finish();
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "tumble sweep: {}\n", e.what());
+      return kOutputError;
+    }
+  } else {
+    std::string lines;
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+      lines += sweep_csv_line(rank + k * size, mine[k], records[k], spec.outcomes.size());
+      count(records[k]);
+    }
+    // Each rank's lines are in its runs' order; run i is rank i mod size's next. The counts of
+    // runs not ok are summed the same way.
+    const std::vector<std::string> texts = processes.gather(lines + fmt::format("{}\n", not_ok));
+    if (!lead) return kDone;
+    not_ok = 0;
+    std::vector<std::size_t> at(texts.size(), 0);
+    std::string csv;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const std::size_t r = i % size;
+      const std::size_t end = texts[r].find('\n', at[r]);
+      csv += std::string_view(texts[r]).substr(at[r], end + 1 - at[r]);
+      at[r] = end + 1;
+    }
+    for (std::size_t r = 0; r < texts.size(); ++r) not_ok += std::stoul(texts[r].substr(at[r]));
+    try {
+      file->write(csv);
+      file->finish();
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "tumble sweep: {}\n", e.what());
+      return kOutputError;
+    }
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fmt::print("sweep of {} over {}\n", args.scenario, fmt::join(spec.varied, ", "));
   fmt::print(
       "  runs           {} ({}), {}\n", points.size(),

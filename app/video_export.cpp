@@ -8,11 +8,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string_view>
 #include <system_error>
 #include <vector>
 
 #include "child_process.hpp"
+#include "tumble/output/atomic_file.hpp"
 
 namespace tumble::cli {
 namespace {
@@ -49,21 +51,6 @@ std::string last_line(std::string text) {
 }
 
 }  // namespace
-
-TemporaryDirectory::TemporaryDirectory() {
-  std::error_code error;
-  std::string name = (fs::temp_directory_path(error) / "tumble-video-XXXXXX").string();
-  if (error || ::mkdtemp(name.data()) == nullptr) {
-    throw VideoError(fmt::format("cannot make a temporary directory for the page: {}",
-                                 error ? error.message() : std::generic_category().message(errno)));
-  }
-  path_ = name;
-}
-
-TemporaryDirectory::~TemporaryDirectory() {
-  std::error_code ignored;
-  fs::remove_all(path_, ignored);
-}
 
 VideoRequest parse_video_request(const RunArguments& args) {
   VideoRequest video;
@@ -123,9 +110,18 @@ long video_frame_count(double t0, double t_end, const VideoRequest& video) {
 
 void render_video(const fs::path& page, const VideoRequest& video, long frames) {
   std::error_code error;
-  const fs::path output = fs::absolute(video.path, error);
-  if (!error) fs::create_directories(output.parent_path(), error);
+  const fs::path destination = fs::absolute(video.path, error);
+  if (!error) fs::create_directories(destination.parent_path(), error);
   if (error) throw VideoError(fmt::format("cannot write it: {}", error.message()));
+  // The renderer writes into a directory of tumble's own; the finished video is then installed
+  // through an AtomicFile, so nothing planted beside the destination is ever written through.
+  std::optional<TemporaryDirectory> scratch;
+  try {
+    scratch.emplace("tumble-video");
+  } catch (const std::runtime_error& e) {
+    throw VideoError(e.what());
+  }
+  const fs::path output = scratch->path() / ("video" + lowercase_extension(video.path));
 
   const std::string node = getenv_or("TUMBLE_NODE", "node");
   ChildOutcome result;
@@ -160,6 +156,11 @@ void render_video(const fs::path& page, const VideoRequest& video, long frames) 
   }
   if (fs::file_size(output, error) == 0 || error) {
     throw VideoError("the renderer reported success but wrote nothing");
+  }
+  try {
+    install_copy(output, destination);
+  } catch (const std::runtime_error& e) {
+    throw VideoError(e.what());
   }
 }
 

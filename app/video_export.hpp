@@ -42,21 +42,6 @@ class VideoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// A fresh directory under the system's temporary directory, removed with all it holds when this
-// goes out of scope: for the page of a video that was not asked to be kept. Throws VideoError if
-// it cannot be made.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory();
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-  ~TemporaryDirectory();
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 // Renders `page` into video.path with web/render_video.mjs, run by node without a shell.
 // Throws VideoError naming the cause (node, Chromium or ffmpeg missing, or the page failing).
 void render_video(const std::filesystem::path& page, const VideoRequest& video, long frames);

@@ -9,8 +9,11 @@ case "$kind" in
   debug) flags=(-DCMAKE_BUILD_TYPE=Debug) ;;
   # The sanitizer builds are made without MPI: Open MPI's own allocations would be reported, and
   # they show that a build without MPI works (a sweep then runs in one process).
-  sanitize) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUMBLE_SANITIZE=ON -DTUMBLE_MPI=OFF) ;;
-  tsan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUMBLE_THREAD_SANITIZE=ON -DTUMBLE_MPI=OFF) ;;
+  # Nor do they build the benchmarks, whose timings under a sanitizer would mean nothing.
+  sanitize) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUMBLE_SANITIZE=ON -DTUMBLE_MPI=OFF
+                   -DTUMBLE_BUILD_BENCH=OFF) ;;
+  tsan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUMBLE_THREAD_SANITIZE=ON -DTUMBLE_MPI=OFF
+               -DTUMBLE_BUILD_BENCH=OFF) ;;
   *) echo "usage: scripts/build.sh [release|debug|sanitize|tsan] [TARGET...]" >&2; exit 2 ;;
 esac
 cmake -S . -B "build/$kind" -G Ninja "${flags[@]}" >/dev/null

@@ -182,6 +182,45 @@ TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
   EXPECT_FALSE(fs::exists(dir / "out" / "run.html"));
 }
 
+// Outputs that met only once the run knew its paths were written over each other with exit 0:
+// the events file named as the page --animate derives (the events lost), a page named as the
+// default events file, events written through a linked folder onto the trajectory. Each is now
+// refused before the run, at the scenario's key, and nothing is written.
+TEST(Cli, OutputsThatAreOneFileOnlyOnceResolvedAreRefusedBeforeTheRun) {
+  const fs::path dir = fresh_dir("collide_resolved");
+  const std::string ball =
+      "tumble: 1\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 1}\n"
+      "simulate: {duration: 0.1}\n";
+  fs::create_directories(dir / "out");
+  fs::create_directory_symlink(".", dir / "out" / "here");
+  const struct {
+    std::string output, flags, expected;
+  } cases[] = {
+      {"output: {trajectory: run.csv, events: run.html}\n", " --animate",
+       ":5:39: output.events: 'run.html' is also the animation page's name (--animate"},
+      {"output: {animation: a_events.csv}\n", "",
+       ":5:21: output.animation: 'a_events.csv' is also the events file's name (by default "
+       "FILE_events.csv)"},
+      {"output: {trajectory: run.csv, events: here/run.csv}\n", "",
+       ":5:39: output.events: 'here/run.csv' is also the trajectory's file"},
+      {"output: {trajectory: Run.csv, events: run.CSV}\n", "",
+       ":5:39: output.events: 'run.CSV' is also the trajectory's file"},
+  };
+  for (const auto& c : cases) {
+    std::ofstream(dir / "a.yaml") << ball + c.output;
+    const CommandResult r = run_tumble("run " + (dir / "a.yaml").string() + c.flags + " --out " +
+                                       (dir / "out").string());
+    EXPECT_EQ(r.status, 3) << c.output << r.out;
+    EXPECT_NE(r.out.find((dir / "a.yaml").string() + c.expected), std::string::npos)
+        << c.output << r.out;
+    std::set<std::string> written;
+    for (const auto& entry : fs::directory_iterator(dir / "out")) {
+      written.insert(entry.path().filename());
+    }
+    EXPECT_EQ(written, std::set<std::string>{"here"}) << c.output;
+  }
+}
+
 // The chapter's prism end to end: the contract's columns, one row per output_every, the state
 // at t = 20 within the tolerance the free-body tests establish (30 rtol), and a summary with
 // every figure the contract lists.
@@ -272,6 +311,28 @@ TEST(Cli, FailedIntegrationLeavesAValidPartialCsvAndExitsFour) {
   ASSERT_GE(rows.size(), 2u);
   for (const auto& row : rows) EXPECT_EQ(row.size(), rows[0].size());
   EXPECT_LT(std::stod(rows.back()[0]), 20.0);
+}
+
+// The prism spun 1e100 times faster turns in 1e-100 s: its steps are of that size, and before it
+// took them until simulate.max_steps (10 million: minutes) with exit 0 in the end. A thousand
+// steps each under 1e-12 of the run's span end it at once, with exit 4, saying where and why, and
+// with the rows it reached.
+TEST(Cli, AStepSizeThatCollapsesEndsTheRunWithExitFour) {
+  const fs::path dir = fresh_dir("collapsed");
+  std::string text = slurp(example("tumbling_prism.yaml"));
+  const std::string spin = "angular_velocity: [0, 0.01, 1]";
+  ASSERT_NE(text.find(spin), std::string::npos);
+  text.replace(text.find(spin), spin.size(), "angular_velocity: [0, 1e98, 1e100]");
+  const fs::path p = write_file(dir, "extreme.yaml", text);
+  const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
+  EXPECT_EQ(r.status, 4) << r.out;
+  EXPECT_NE(r.out.find("the step size collapsed at t = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the last 1000 steps were each shorter than 1e-12 of the run's 20 s"),
+            std::string::npos)
+      << r.out;
+  const auto rows = read_csv(dir / "tumbling_prism.csv");
+  ASSERT_GE(rows.size(), 2u);
+  EXPECT_LT(std::stod(rows.back()[0]), 1e-9);
 }
 
 TEST(Cli, ARunStoppedByASignalLeavesNoPartialFile) {

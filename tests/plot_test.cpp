@@ -207,6 +207,33 @@ TEST_F(Plot, FailureLeavesNoPartialFile) {
   EXPECT_EQ(files_in(dir_), (std::set<std::string>{"words.csv"}));
 }
 
+// gnuplot drew into <dest>.partial-<pid> opened without O_EXCL: a link planted there beforehand
+// (the pids come in order) was written through, its target truncated and overwritten with the
+// PNG. Links are planted at the names of the next hundred pids, each to a file of its own; none is
+// written through, and the figure arrives as a file, not a link.
+TEST_F(Plot, LinksPlantedBesideTheFigureAreNotWrittenThrough) {
+  const fs::path csv = prism_csv();
+  const fs::path png = dir_ / "E.png";
+  long last_pid = 0;
+  std::ifstream("/proc/sys/kernel/ns_last_pid") >> last_pid;
+  ASSERT_GT(last_pid, 0);
+  const fs::path targets = dir_ / "targets";
+  fs::create_directories(targets);
+  for (long pid = last_pid + 1; pid <= last_pid + 100; ++pid) {
+    const fs::path target = targets / std::to_string(pid);
+    std::ofstream(target) << "kept";
+    fs::create_symlink(target, dir_ / ("E.png.partial-" + std::to_string(pid)));
+  }
+  const CommandResult r = run_tumble("plot " + quote_for_shell(csv.string()) + " --columns E -o " +
+                                     quote_for_shell(png.string()));
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const auto& entry : fs::directory_iterator(targets)) {
+    EXPECT_EQ(slurp(entry.path()), "kept") << entry.path() << " was written through";
+  }
+  EXPECT_FALSE(fs::is_symlink(png));
+  EXPECT_EQ(slurp(png).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
 TEST_F(Plot, MissingGnuplotExitsFiveAndSaysHowToInstallIt) {
   const fs::path csv = prism_csv();
   const CommandResult r =

@@ -901,6 +901,48 @@ TEST(ScenarioError, DuplicateKeysAreErrors) {
                {3, 42, "bodies.b.mass", "duplicate key 'mass' (first given on line 3)"});
 }
 
+// A force and a contact both named floor would both write floor.P and floor.W: two columns of one
+// name, of which a plot or an expression could only ever find the first.
+TEST(ScenarioError, BodiesJointsForcesAndContactsShareOneSetOfNames) {
+  const std::string crate =
+      "bodies:\n  crate: {shape: box, size: [0.4, 0.3, 0.2], mass: 2, position: [0, 0, 0.1]}\n";
+  const std::string spring =
+      "  - {type: spring, name: floor, bodies: [ground, crate], stiffness: 1, "
+      "at: [[0, 0, 0], [0, 0, 0]]}\n";
+  expect_error(kHead + crate + "forces:\n" + spring +
+                   "contacts:\n  - {name: floor, type: plane, body: crate, "
+                   "plane: {point: [0, 0, 0], normal: [0, 0, 1]}}\n" +
+                   kSimulate,
+               {7, 6, "contacts[0].name", "'floor' already names a spring (line 5, column 5)"});
+  expect_error(kHead + crate +
+                   "forces:\n  - {type: torque, name: crate, body: crate, value: [0, "
+                   "0, 1]}\n" +
+                   kSimulate,
+               {5, 20, "forces[0].name", "'crate' already names a body (line 3, column 3)"});
+  // A default name counts too: the second force's "force2" is taken by the first's own name.
+  expect_error(kHead + crate +
+                   "forces:\n  - {type: force, name: force2, body: crate, value: [1, 0, 0]}\n"
+                   "  - {type: force, body: crate, value: [1, 0, 0]}\n" +
+                   kSimulate,
+               {6, 5, "forces[1]", "'force2' already names a force (line 5, column 5)"});
+  expect_error(
+      kHead + crate + "joints:\n  crate: {type: ball, body: crate, at: [0, 0, 0]}\n" + kSimulate,
+      {5, 3, "joints.crate", "'crate' already names a body (line 3, column 3)"});
+}
+
+// A name heads CSV columns and shows in messages and on the animation page: a NUL byte or a
+// terminal's escape in it would cut the header short or rewrite the user's screen.
+TEST(ScenarioError, AControlCharacterInANameIsRefusedAndShownEscaped) {
+  expect_error(
+      kHead + "bodies:\n  \"ba\\0ll\": {shape: sphere, radius: 0.1, mass: 2}\n" + kSimulate,
+      {3, 3, "bodies.ba\\x00ll", "body name 'ba\\x00ll' holds a control character"});
+  expect_error(kHead + kSphere +
+                   "forces:\n  - {type: force, name: \"f\\e[2J\", body: ball, "
+                   "value: [1, 0, 0]}\n" +
+                   kSimulate,
+               {5, 19, "forces[0].name", "force name 'f\\x1B[2J' holds a control character"});
+}
+
 }  // namespace
 }  // namespace tumble
 

@@ -60,6 +60,15 @@ TEST(SweepCommand, BadArgumentsExitTwoAndNameThem) {
       {"sweep " + prism + " --vary a=1:2:3 --record 'x=max(prism.w9)'", "prism.w9"},
       {"sweep " + prism + " --vary a=1:2:3 --record 'x=first(floor.rolls)'", "floor.rolls"},
       {"sweep " + prism + " --vary a=1:2:3 --record 'max(prism.w3)'", "NAME=REDUCTION"},
+      // A record named like a column of sweep.csv, a parameter or another record gave two
+      // columns of one name (exit 0), of which Python and `tumble plot` picked different ones.
+      {"sweep " + prism + " --vary a=1:2:3 --record 'a=max(prism.w3)'",
+       "--record a=max(prism.w3): 'a' is a parameter of"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'b=max(prism.w3)'", "'b' is a parameter"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'status=max(prism.w3)'",
+       "'status' heads one of sweep.csv's own columns"},
+      {"sweep " + prism + " --vary a=1:2:3 --record 'x=max(E)' --record 'x=min(E)'",
+       "--record x=min(E): 'x' is given twice"},
       {"sweep " + prism + " --vary a=1:3:2 --out ''", "--out"},
       {"find " + prism + " --vary a=1:2:3 --when 'max(prism.w3) > 0'", "NAME=LO:HI"},
       {"find " + prism + " --vary a=3:5 --when 'prism.w3 > 0'", "--when"},

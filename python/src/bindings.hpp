@@ -3,6 +3,9 @@
 // public API, with its docstrings and type hints, is python/tumble/__init__.py, which calls these.
 #include <pybind11/pybind11.h>
 
+#include <chrono>
+#include <optional>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,5 +38,27 @@ struct ScenarioSource {
 // Python's set={name: value} as the command line's --set: each value is an expression's text.
 using Overrides = std::vector<std::pair<std::string, std::string>>;
 std::vector<ParameterOverride> to_overrides(const Overrides& overrides);
+
+// Python's signals while a run or a sweep holds no GIL: called often (after each step, or ten
+// times a second), at most every 50 ms of wall time it takes the GIL and lets Python run its
+// handlers (Ctrl-C's raises KeyboardInterrupt). True when a handler raised: the caller stops,
+// and raises the exception kept here once it holds the GIL again.
+class SignalWatch {
+ public:
+  bool operator()() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now < next_check_) return false;
+    next_check_ = now + std::chrono::milliseconds(50);
+    const py::gil_scoped_acquire held;
+    if (PyErr_CheckSignals() == 0) return false;
+    raised_.emplace();  // takes the pending exception
+    return true;
+  }
+  std::optional<py::error_already_set>& raised() { return raised_; }
+
+ private:
+  std::chrono::steady_clock::time_point next_check_ = std::chrono::steady_clock::now();
+  std::optional<py::error_already_set> raised_;
+};
 
 }  // namespace tumble::python

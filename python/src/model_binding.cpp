@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <tuple>
@@ -129,6 +130,8 @@ py::dict run(const LoadedModel& loaded, double stop_at, const SavedState* start)
   TableRunOptions options;
   options.stop_at = stop_at;
   options.start = start != nullptr ? &start->checkpoint : nullptr;
+  SignalWatch signals;
+  options.stop_requested = std::ref(signals);
   std::optional<TableRun> done;
   {
     const py::gil_scoped_release unlocked;
@@ -144,6 +147,11 @@ py::dict run(const LoadedModel& loaded, double stop_at, const SavedState* start)
     out["state"] = SavedState{loaded.model, std::move(*done->state)};
   } else {
     out["state"] = py::none();
+  }
+  if (signals.raised()) {
+    // The rows so far go with the exception (tumble.Model.run makes them its .result).
+    signals.raised()->value().attr("_tumble_partial") = out;
+    throw *signals.raised();
   }
   return out;
 }

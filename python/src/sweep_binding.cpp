@@ -56,12 +56,19 @@ py::dict sweep(const ScenarioSource& source, const Overrides& overrides,
           : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxSweepThreads);
   std::vector<RunRecord> records_done;
   std::string csv = sweep_csv_header(spec);
-  {
+  // Ctrl-C stops the sweep after the runs going on (SignalWatch); its exception is raised here.
+  SignalWatch signals;
+  struct Interrupted {};
+  try {
     const py::gil_scoped_release unlocked;
-    records_done = run_points(spec, points, thread_count);
+    records_done = run_points(spec, points, thread_count, [&](std::size_t, std::size_t) {
+      if (signals()) throw Interrupted{};
+    });
     for (std::size_t i = 0; i < points.size(); ++i) {
       csv += sweep_csv_line(i, points[i], records_done[i], spec.outcomes.size());
     }
+  } catch (const Interrupted&) {
+    throw *signals.raised();
   }
 
   // sweep.csv's columns, each a numpy array (the status and message as lists of str).

@@ -4,6 +4,7 @@ run, so Python threads run them side by side."""
 
 from __future__ import annotations
 
+import _thread
 import math
 import re
 import sys
@@ -120,6 +121,19 @@ def test_a_sweep_releases_the_gil_while_it_runs():
         sys.setswitchinterval(interval)
     assert swept[0]["status"] == ["ok"] * 200  # about 0.2 s of runs
     assert counted >= 10
+
+
+def test_ctrl_c_stops_a_sweep():
+    # Twenty thousand runs (tens of seconds) interrupted as Ctrl-C would, 0.3 s in: the sweep
+    # held no GIL, so before, the KeyboardInterrupt came only once every run was done.
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            tumble.sweep(FLIP, {"decades": (2, 8, 20000)}, {"flip": "first(prism.w3 < 0)"},
+                         threads=2)
+    finally:
+        timer.cancel()
 
 
 def test_sweeps_in_two_python_threads_give_each_its_own_rows():

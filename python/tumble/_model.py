@@ -131,12 +131,22 @@ class Model:
             after it, and rows before + rows after are the uninterrupted run's, bit for bit.
 
         Raises tumble.IntegrationError (with the rows so far as ``.result``) where the
-        integration fails.
+        integration fails. Ctrl-C (or any signal handler's exception) stops a long run within
+        about 0.05 s and raises KeyboardInterrupt (the handler's exception), with the rows so far
+        as its ``.result``.
         """
         stop = math.inf if stop_at is None else float(stop_at)
         if math.isnan(stop):
             raise ValueError("stop_at: give a time, s")
-        result = Result(self._loaded.run(stop, start))
+        try:
+            output = self._loaded.run(stop, start)
+        except BaseException as stopped:
+            partial = getattr(stopped, "_tumble_partial", None)
+            if partial is not None:
+                del stopped._tumble_partial
+                stopped.result = Result(partial)  # type: ignore[attr-defined]
+            raise
+        result = Result(output)
         if not result.completed:
             raise IntegrationError(f"integration failed: {result.summary['failure']}", result)
         return result

@@ -8,10 +8,6 @@
 
 namespace tumble {
 
-namespace {
-constexpr double kPi = std::numbers::pi;
-}  // namespace
-
 // AGM of 1 and k' (A&S 17.6.1-17.6.2):
 //   a_{n+1} = (a_n + b_n) / 2,  b_{n+1} = sqrt(a_n b_n),  c_{n+1} = (a_n - b_n) / 2,
 // with c_{n+1} evaluated as c_n^2 / (4 a_{n+1}) (equal in exact arithmetic, free of the
@@ -37,7 +33,7 @@ JacobiElliptic::JacobiElliptic(double k2, double kp2) : k2_(k2), kp2_(kp2) {
   // accurate where c_n / a_n is within round-off of 1 (k' -> 0).
   for (int i = 0; i <= n; ++i) one_minus_ratio_[i] = b_[i] * b_[i] / (a_[i] * (a_[i] + c_[i]));
   steps_ = n;
-  quarter_period_ = kPi / (2.0 * a_[n]);
+  quarter_period_ = std::numbers::pi / (2.0 * a_[n]);
 }
 
 // Descending AGM scale (A&S 16.4.3): phi_N = 2^N a_N u, then for n = N, ..., 1
@@ -63,7 +59,8 @@ JacobiValues JacobiElliptic::calc(double u) const {
       const double c = std::cos(phi);
       const double one_minus_abs_y =
           one_minus_ratio_[n] * std::abs(s) + c * c / (1.0 + std::abs(s));
-      asin_y = std::copysign(0.5 * kPi - 2.0 * std::asin(std::sqrt(0.5 * one_minus_abs_y)), y);
+      asin_y = std::copysign(
+          0.5 * std::numbers::pi - 2.0 * std::asin(std::sqrt(0.5 * one_minus_abs_y)), y);
     }
     phi = 0.5 * (phi + asin_y);
   }
@@ -71,7 +68,7 @@ JacobiValues JacobiElliptic::calc(double u) const {
   v.sn = std::sin(phi);
   v.cn = std::cos(phi);
   v.dn = std::sqrt(kp2_ + k2_ * v.cn * v.cn);
-  v.am = phi + 2.0 * kPi * m;
+  v.am = phi + 2.0 * std::numbers::pi * m;
   return v;
 }
 
@@ -81,13 +78,13 @@ JacobiValues JacobiElliptic::calc(double u) const {
 // F(phi | k) = phi_N / (2^N a_N). It inverts the descending recursion of calc step by step.
 // phi is first reduced to |phi| <= pi with F(phi + 2 pi m) = F(phi) + 4 K m.
 double JacobiElliptic::calc_inverse_amplitude(double phi) const {
-  const double m = std::nearbyint(phi / (2.0 * kPi));
-  double phi_n = phi - 2.0 * kPi * m;
+  const double m = std::nearbyint(phi / (2.0 * std::numbers::pi));
+  double phi_n = phi - 2.0 * std::numbers::pi * m;
   for (int n = 0; n < steps_; ++n) {
     double delta = std::atan2(b_[n] * std::sin(phi_n), a_[n] * std::cos(phi_n));
     // atan2 returns (-pi, pi]; shift by whole turns to the branch nearest phi_n, where the
     // increment lies (it has the quadrant of phi_n).
-    delta += 2.0 * kPi * std::nearbyint((phi_n - delta) / (2.0 * kPi));
+    delta += 2.0 * std::numbers::pi * std::nearbyint((phi_n - delta) / (2.0 * std::numbers::pi));
     phi_n += delta;
   }
   return std::ldexp(phi_n, -steps_) / a_[steps_] + 4.0 * quarter_period_ * m;

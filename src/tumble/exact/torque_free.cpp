@@ -66,13 +66,14 @@
 
 namespace tumble {
 
-namespace {
-
-enum class MotionKind {
+// Outside the anonymous namespace: Impl, declared in the header, holds one.
+enum class TorqueFreeMotionKind {
   kSteady,      // omega_B constant: at rest, spherical body, or spin about a principal axis
   kPeriodic,    // off the separatrix: elliptic functions with 0 <= k < 1
   kSeparatrix,  // D = 0 exactly: sech / tanh
 };
+
+namespace {
 
 // Panel width (in tau) of the psi table. psi' is a rational function of dn(tau), analytic in a
 // strip about the real axis (dn has its poles at i K', K' >= pi/2), and varies on a scale >= 1
@@ -114,7 +115,7 @@ std::string format_matrix(const Mat3& M) {
 }  // namespace
 
 struct TorqueFreeMotion::Impl {
-  MotionKind kind = MotionKind::kSteady;
+  TorqueFreeMotionKind kind = TorqueFreeMotionKind::kSteady;
   Mat3 R_WB0;
   Vec3 omega_B0;
   Vec3 omega_W0;
@@ -142,7 +143,7 @@ struct TorqueFreeMotion::Impl {
 
   // Angular velocity in working axes at elliptic argument tau.
   Vec3 calc_omega_K(double tau) const {
-    if (kind == MotionKind::kSeparatrix) {
+    if (kind == TorqueFreeMotionKind::kSeparatrix) {
       const double sech = 1.0 / std::cosh(tau);
       return Vec3(amplitude.x() * sech, amplitude.y() * std::tanh(tau), amplitude.z() * sech);
     }
@@ -152,8 +153,9 @@ struct TorqueFreeMotion::Impl {
 
   // psi' = (2E + L w_3) / (L + J_3 w_3), as a function of tau (rad/s).
   double calc_psi_rate(double tau) const {
-    const double w3 = kind == MotionKind::kSeparatrix ? amplitude.z() / std::cosh(tau)
-                                                      : amplitude.z() * jacobi->calc(tau).dn;
+    const double w3 = kind == TorqueFreeMotionKind::kSeparatrix
+                          ? amplitude.z() / std::cosh(tau)
+                          : amplitude.z() * jacobi->calc(tau).dn;
     return (2.0 * energy_K + L_norm * w3) / (L_norm + J.z() * w3);
   }
 
@@ -164,7 +166,7 @@ struct TorqueFreeMotion::Impl {
     const auto rate = [this](double s) { return calc_psi_rate(s); };
     double offset = 0;
     double r = tau - table_begin;
-    if (kind == MotionKind::kPeriodic) {
+    if (kind == TorqueFreeMotionKind::kPeriodic) {
       const double turns = std::floor(r / span);
       offset = turns * G_table.back();
       r -= turns * span;
@@ -268,7 +270,7 @@ TorqueFreeMotion::TorqueFreeMotion(const Mat3& I_G_B, const Mat3& R_WB0, const V
     }
   }
   if (steady) {
-    impl->kind = MotionKind::kSteady;
+    impl->kind = TorqueFreeMotionKind::kSteady;
     impl_ = std::move(impl);
     return;
   }
@@ -313,12 +315,12 @@ TorqueFreeMotion::TorqueFreeMotion(const Mat3& I_G_B, const Mat3& R_WB0, const V
   impl->amplitude = Vec3(a1, a2, a3);
 
   if (on_separatrix) {
-    impl->kind = MotionKind::kSeparatrix;
+    impl->kind = TorqueFreeMotionKind::kSeparatrix;
     // sinh(tau_0) = sn / cn = (w_2 / a_2) / (w_1 / a_1).
     impl->tau0 = std::asinh((w.y() / a2) / (w.x() / a1));
     impl->build_psi_table(-kSeparatrixHalfRange, 2.0 * kSeparatrixHalfRange);
   } else {
-    impl->kind = MotionKind::kPeriodic;
+    impl->kind = TorqueFreeMotionKind::kPeriodic;
     impl->jacobi.emplace(k2, kp2);
     impl->tau0 = impl->jacobi->calc_inverse_amplitude(std::atan2(w.y() / a2, w.x() / a1));
     const double K = impl->jacobi->quarter_period();
@@ -336,20 +338,20 @@ TorqueFreeMotion::TorqueFreeMotion(const Mat3& I_G_B, const Mat3& R_WB0, const V
 
 Vec3 TorqueFreeMotion::omega_B(double t) const {
   const Impl& m = *impl_;
-  if (m.kind == MotionKind::kSteady) return m.omega_B0;
+  if (m.kind == TorqueFreeMotionKind::kSteady) return m.omega_B0;
   return m.S_KB.transpose() * m.calc_omega_K(m.tau0 + m.lambda * t);
 }
 
 Mat3 TorqueFreeMotion::R_WB(double t) const {
   const Impl& m = *impl_;
-  if (m.kind == MotionKind::kSteady) return exp_so3(t * m.omega_W0) * m.R_WB0;
+  if (m.kind == TorqueFreeMotionKind::kSteady) return exp_so3(t * m.omega_W0) * m.R_WB0;
   const Vec3 L_K = m.J.cwiseProduct(m.calc_omega_K(m.tau0 + m.lambda * t));
   return m.R_WL * rotation_about_z(m.calc_psi(t)) * rotation_to_e3(L_K.normalized()) * m.S_KB;
 }
 
 Vec3 TorqueFreeMotion::omega_W(double t) const {
   const Impl& m = *impl_;
-  if (m.kind == MotionKind::kSteady) return m.omega_W0;
+  if (m.kind == TorqueFreeMotionKind::kSteady) return m.omega_W0;
   return R_WB(t) * omega_B(t);
 }
 

@@ -9,8 +9,6 @@
 namespace tumble {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 using inertia_detail::format_number;
 
 // "1 edge belongs" / "4 edges belong"
@@ -79,7 +77,7 @@ void check_indices(const TriangleMesh& mesh) {
 int add_ring(TriangleMesh& mesh, int n, double r, double z) {
   const int first = static_cast<int>(mesh.vertices.size());
   for (int k = 0; k < n; ++k) {
-    const double angle = 2.0 * kPi * k / n;
+    const double angle = 2.0 * std::numbers::pi * k / n;
     mesh.vertices.emplace_back(r * std::cos(angle), r * std::sin(angle), z);
   }
   return first;
@@ -184,7 +182,7 @@ TriangleMesh tessellate_sphere(double radius, int n) {
   const int north = add_vertex(mesh, Vec3(0.0, 0.0, radius));
   std::vector<int> rings;
   for (int j = 1; j < stacks; ++j) {
-    const double polar = kPi * j / stacks;
+    const double polar = std::numbers::pi * j / stacks;
     rings.push_back(add_ring(mesh, n, radius * std::sin(polar), radius * std::cos(polar)));
   }
   const int south = add_vertex(mesh, Vec3(0.0, 0.0, -radius));

@@ -11,8 +11,6 @@
 namespace tumble {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 constexpr std::array<std::pair<ShapeKind, std::string_view>, 12> kShapeNames = {{
     {ShapeKind::Point, "point"},
     {ShapeKind::Rod, "rod"},
@@ -135,23 +133,23 @@ double shape_measure(const Shape& shape) {
     case ShapeKind::Rod:
       return shape.length;
     case ShapeKind::Ring:
-      return 2.0 * kPi * R;
+      return 2.0 * std::numbers::pi * R;
     case ShapeKind::Disk:
-      return kPi * R * R;
+      return std::numbers::pi * R * R;
     case ShapeKind::Cylinder:
-      return kPi * R * R * shape.length;
+      return std::numbers::pi * R * R * shape.length;
     case ShapeKind::Tube: {
       const double a = shape.inner_radius, b = shape.outer_radius;
-      return kPi * (b * b - a * a) * shape.length;
+      return std::numbers::pi * (b * b - a * a) * shape.length;
     }
     case ShapeKind::Sphere:
-      return 4.0 / 3.0 * kPi * R * R * R;
+      return 4.0 / 3.0 * std::numbers::pi * R * R * R;
     case ShapeKind::Shell:
-      return 4.0 * kPi * R * R;
+      return 4.0 * std::numbers::pi * R * R;
     case ShapeKind::Box:
       return shape.size.prod();
     case ShapeKind::Cone:
-      return kPi * R * R * shape.height / 3.0;
+      return std::numbers::pi * R * R * shape.height / 3.0;
     case ShapeKind::Plate:
       return shape.size.x() * shape.size.y();
     case ShapeKind::Mesh:

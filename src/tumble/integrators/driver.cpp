@@ -49,6 +49,11 @@ class OutputClock {
 
 namespace {
 
+// A step shorter than this fraction of the run's span, kCollapsedSteps times in a row, ends the
+// run: its step size has collapsed.
+constexpr double kCollapsedStep = 1e-12;
+constexpr long kCollapsedSteps = 1000;
+
 // The steps from where `position` says the run stands (after start, or at a checkpoint) to
 // t_end.
 void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, double t_end,
@@ -131,6 +136,28 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
                     integrator.t())
               : fmt::format("the state became non-finite (NaN or infinity) after t = {:.17g} s",
                             integrator.t());
+      break;
+    }
+    // A run whose steps have shrunk to nothing beside its span would take them until max_steps
+    // (10 million by default: minutes) and get nowhere: values so extreme (x1e100) or a solution
+    // so singular that no step of a sensible size meets rtol/atol. A thousand such steps in a row
+    // are no transient: an impact or a breakpoint costs a few.
+    if (integrator.t() - integrator.t_previous() < kCollapsedStep * (t_end - position.t0)) {
+      if (++position.short_steps >= kCollapsedSteps) {
+        report.failure = fmt::format(
+            "the step size collapsed at t = {:.17g} s: the last {} steps were each shorter than "
+            "{:g} of the run's {:g} s (the last {:.3g} s); the values are too extreme or the "
+            "solution too stiff or singular there for rtol/atol",
+            integrator.t(), kCollapsedSteps, kCollapsedStep, t_end - position.t0,
+            integrator.t() - integrator.t_previous());
+        break;
+      }
+    } else {
+      position.short_steps = 0;
+    }
+    if (options.stop_requested && options.stop_requested()) {
+      report.failure = fmt::format("interrupted at t = {:.17g} s", integrator.t());
+      report.interrupted = true;
       break;
     }
     if (++steps > options.max_steps) {

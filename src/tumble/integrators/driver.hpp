@@ -26,6 +26,9 @@ struct DriverOptions {
   // step's rows, events and breakpoint are done; with stop_at_checkpoint the run ends there.
   double checkpoint_after = std::numeric_limits<double>::infinity();
   bool stop_at_checkpoint = false;
+  // Asked after each accepted step whether to stop there (Python's Ctrl-C); empty: never. The run
+  // then ends with the rows so far and IntegrationReport::interrupted.
+  std::function<bool()> stop_requested;
 };
 
 struct EventRecord {
@@ -37,7 +40,8 @@ struct EventRecord {
 struct IntegrationReport {
   bool completed = false;
   double t_reached = 0.0;
-  std::string failure;  // why it stopped early, with the time; empty if completed
+  std::string failure;       // why it stopped early, with the time; empty if completed
+  bool interrupted = false;  // stopped by DriverOptions::stop_requested
   std::vector<EventRecord> events;
   IntegratorStats stats;
 };
@@ -54,6 +58,7 @@ struct DriverPosition {
   long next_row = 1;                // k of the next row
   long steps = 0;                   // accepted steps so far
   long rows = 0;                    // output rows so far
+  long short_steps = 0;             // consecutive accepted steps shorter than 1e-12 of t_end - t0
   VecX g_before;                    // the event functions at the last step's end
   std::vector<EventRecord> events;  // the located events so far
 };

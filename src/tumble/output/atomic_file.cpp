@@ -121,6 +121,7 @@ void AtomicFile::finish() {
   if (write_failed || close_failed) {
     throw std::runtime_error(fmt::format("error writing {}", path_.string()));
   }
+  if (renamed_) return;  // published: it is in place already
   std::error_code error;
   std::filesystem::rename(temporary_, path_, error);
   if (error) {
@@ -129,6 +130,42 @@ void AtomicFile::finish() {
   renamed_ = true;
   release_for_signals(signal_slot_);  // a stop from here finds no temporary file to remove
   signal_slot_ = kLiveFiles;
+}
+
+void AtomicFile::flush() {
+  if (std::fflush(file_) != 0 || std::ferror(file_) != 0) {
+    throw std::runtime_error(fmt::format("error writing {}", path_.string()));
+  }
+}
+
+void AtomicFile::publish() {
+  flush();
+  std::error_code error;
+  std::filesystem::rename(temporary_, path_, error);
+  if (error) {
+    throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(), error.message()));
+  }
+  renamed_ = true;
+  release_for_signals(signal_slot_);  // a stop from here leaves the rows so far in place
+  signal_slot_ = kLiveFiles;
+}
+
+void install_copy(const std::filesystem::path& made, const std::filesystem::path& destination) {
+  std::FILE* in = std::fopen(made.c_str(), "rb");
+  if (in == nullptr) {
+    throw std::runtime_error(
+        fmt::format("cannot read {}: {}", made.string(), std::generic_category().message(errno)));
+  }
+  AtomicFile out(destination);
+  std::array<char, 1 << 16> chunk;
+  std::size_t got = 0;
+  while ((got = std::fread(chunk.data(), 1, chunk.size(), in)) > 0) {
+    out.write(std::string_view(chunk.data(), got));
+  }
+  const bool read_failed = std::ferror(in) != 0;
+  std::fclose(in);
+  if (read_failed) throw std::runtime_error(fmt::format("error reading {}", made.string()));
+  out.finish();
 }
 
 }  // namespace tumble

@@ -26,8 +26,15 @@ class AtomicFile {
     for (const std::string_view chunk : chunks) write(chunk);
   }
   // Flushes, closes and renames to the destination. Throws std::runtime_error on an I/O error
-  // (and removes the temporary file).
+  // (and removes the temporary file). After publish(), flushes and closes only.
   void finish();
+  // Renames the file into place now, with what has been written so far, and keeps it open: what
+  // is written later goes on the published file (a sweep's rows as they finish, each whole line
+  // flushed, so that a sweep stopped at any point leaves a valid file of the rows so far).
+  // Throws std::runtime_error on an I/O error.
+  void publish();
+  // Hands what has been written to the file system. Throws std::runtime_error on an I/O error.
+  void flush();
 
   const std::filesystem::path& path() const { return path_; }
 
@@ -38,5 +45,10 @@ class AtomicFile {
   bool renamed_ = false;
   std::size_t signal_slot_ = static_cast<std::size_t>(-1);  // none: the stop handler's entry
 };
+
+// Copies `made`, a finished file a helper program wrote into a directory of tumble's own (a
+// figure, a video), to `destination` through an AtomicFile: the destination's folder sees only
+// the safe temporary name and the final rename. Throws std::runtime_error naming the file.
+void install_copy(const std::filesystem::path& made, const std::filesystem::path& destination);
 
 }  // namespace tumble

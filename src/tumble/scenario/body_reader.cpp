@@ -230,17 +230,6 @@ std::vector<BodySpec> read_bodies(const Reader& reader, const Field& field,
   return bodies;
 }
 
-void check_name(const Reader& reader, const Field& where, const std::string& name,
-                std::string_view what) {
-  const bool bad = name.empty() || name.find_first_of(".,\"' \t\r\n") != std::string::npos;
-  if (bad) {
-    reader.fail_at_key(where, fmt::format("{} name '{}' cannot be used: it prefixes CSV columns "
-                                          "('{}.x'), so it may not be empty or hold '.', ',', "
-                                          "quotes or spaces",
-                                          what, name, name));
-  }
-}
-
 void check_slender_bodies(const Scenario& scenario) {
   const std::set<std::string> held = held_bodies(scenario, scenario.contacts);
   for (const BodySpec& body : scenario.bodies) {

@@ -29,8 +29,7 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   }
   const Field body_field = map.require("body", "the body that touches the plane");
   contact.body = read_body_or_ground(reader, body_field, scenario.bodies, false);
-  const BodySpec& body = *std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
-                                       [&](const BodySpec& b) { return b.name == contact.body; });
+  const BodySpec& body = scenario.bodies[*reader.body_position(contact.body)];
   if (!body.parts.empty() || !touches_a_plane(body.shape.kind)) {
     const std::string shape =
         body.parts.empty() ? std::string(shape_name(body.shape.kind)) : std::string("composite");
@@ -70,16 +69,9 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
 
 std::set<std::string> held_bodies(const Scenario& scenario,
                                   const std::vector<ContactSpec>& contacts) {
-  std::map<std::string, std::string> parent;
-  const auto root = [&](std::string name) {
-    while (parent.count(name) != 0 && parent[name] != name) name = parent[name];
-    return name;
-  };
-  for (const JointSpec& joint : scenario.joints) {
-    const std::string a = root(joint.body_a), b = root(joint.body_b);
-    parent[a] = b;
-    parent[b] = b;
-  }
+  BodyGroups groups;
+  for (const JointSpec& joint : scenario.joints) groups.join(joint.body_a, joint.body_b);
+  const auto root = [&](const std::string& name) { return groups.root(name); };
   std::set<std::string> touching;
   for (const ContactSpec& contact : contacts) touching.insert(contact.body);
   std::map<std::string, std::string> group_root;  // group -> the body the tree hangs it from
@@ -105,9 +97,7 @@ void check_held_bodies(const Reader& reader, const std::vector<Field>& items,
   const std::set<std::string> held = held_bodies(scenario, contacts);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     if (held.count(contacts[i].body) == 0) continue;
-    const BodySpec& body =
-        *std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
-                      [&](const BodySpec& b) { return b.name == contacts[i].body; });
+    const BodySpec& body = scenario.bodies[*reader.body_position(contacts[i].body)];
     const ShapeKind kind = body.shape.kind;
     if (kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Box ||
         kind == ShapeKind::Plate || kind == ShapeKind::Mesh) {
@@ -129,25 +119,24 @@ void check_held_bodies(const Reader& reader, const std::vector<Field>& items,
 std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
                                        const Scenario& scenario) {
   std::vector<ContactSpec> contacts;
+  ColumnHeads heads(scenario);
   const std::vector<Field> items = reader.items(field, "of contacts, each {type: plane, ...}");
   for (std::size_t i = 0; i < items.size(); ++i) {
     const MapReader map(reader, items[i],
                         "a contact {type: plane, body:, plane: {point:, normal:}, friction:}");
     map.allow_only({"type", "name", "body", "plane", "friction", "restitution"}, "a contact");
     std::string name = "contact" + std::to_string(i + 1);
+    const SourceLocation where = reader.location(items[i].key_mark);
     if (const auto f = map.find("name")) {
       name = reader.text(*f);
       check_name(reader, *f, name, "contact");
-    }
-    const bool taken = std::any_of(contacts.begin(), contacts.end(),
-                                   [&](const ContactSpec& c) { return c.name == name; });
-    if (taken) {
-      reader.fail_at_value(items[i], "two contacts are named '" + name +
-                                         "'; give each its own name (it heads CSV columns)");
+      heads.claim(reader, *f, name, "contact", where);
+    } else {
+      heads.claim(reader, items[i], name, "contact", where);
     }
     ContactSpec contact = read_contact(reader, map, scenario);
     contact.name = name;
-    contact.where = reader.location(items[i].key_mark);
+    contact.where = where;
     contacts.push_back(std::move(contact));
   }
   check_held_bodies(reader, items, contacts, scenario);

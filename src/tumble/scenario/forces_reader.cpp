@@ -152,7 +152,7 @@ TorsionalSpringSpec read_torsional_spring(const Reader& reader, const MapReader&
 
 void read_forces(const Reader& reader, const Field& field, Scenario& scenario) {
   const std::vector<Field> items = reader.items(field, "of forces, each {type: ..., ...}");
-  std::vector<std::string> names;
+  ColumnHeads heads(scenario);
   for (std::size_t i = 0; i < items.size(); ++i) {
     const MapReader map(reader, items[i],
                         "a force {type: force | torque | impulse | spring | "
@@ -186,16 +186,14 @@ void read_forces(const Reader& reader, const Field& field, Scenario& scenario) {
     });
 
     std::string name = type + std::to_string(i + 1);
+    const SourceLocation where = reader.location(items[i].key_mark);
     if (const auto f = map.find("name")) {
       name = reader.text(*f);
       check_name(reader, *f, name, type);
+      heads.claim(reader, *f, name, type, where);
+    } else {
+      heads.claim(reader, items[i], name, type, where);
     }
-    if (std::find(names.begin(), names.end(), name) != names.end()) {
-      reader.fail_at_value(items[i], "two forces are named '" + name +
-                                         "'; give each its own name (it heads CSV columns)");
-    }
-    names.push_back(name);
-    const SourceLocation where = reader.location(items[i].key_mark);
 
     if (type == "force" || type == "torque") {
       LoadSpec load = read_load(reader, map, type, scenario.bodies);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <numbers>
+#include <unordered_map>
 
 #include "tumble/multibody/joints/joint_kind.hpp"
 #include "tumble/scenario/readers.hpp"
@@ -291,9 +292,13 @@ JointSpec read_drive(const Reader& reader, const MapReader& map, JointSpec& join
 std::string read_body_or_ground(const Reader& reader, const Field& field,
                                 const std::vector<BodySpec>& bodies, bool ground_allowed) {
   const std::string name = reader.text(field);
-  std::vector<std::string> names;
+  if (reader.bodies_indexed() ? reader.body_position(name).has_value()
+                              : std::any_of(bodies.begin(), bodies.end(),
+                                            [&](const BodySpec& b) { return b.name == name; })) {
+    return name;
+  }
+  std::vector<std::string> names;  // for the message
   for (const BodySpec& body : bodies) names.push_back(body.name);
-  if (std::find(names.begin(), names.end(), name) != names.end()) return name;
   if (name == kGroundName) {
     if (ground_allowed) return name;
     reader.fail_at_value(field,
@@ -315,29 +320,19 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
   const MapReader map(reader, field, "a mapping of joints {name: {type: ..., bodies: ...}}");
   // Which bodies are already connected (through ground too): a joint within one group would
   // close a loop, which joint coordinates cannot describe.
-  std::map<std::string, std::string> group;
-  const auto root = [&](std::string name) {
-    while (group.count(name) && group[name] != name) name = group[name];
-    return name;
-  };
+  BodyGroups groups;
+  ColumnHeads heads;
+  for (const BodySpec& body : bodies) heads.note(body.name, "body", body.where);
   for (const Field& f : map.fields()) {
     JointSpec joint = read_joint(reader, f, bodies);
-    const std::string a = root(joint.body_a), b = root(joint.body_b);
-    if (a == b) {
+    if (!groups.join(joint.body_a, joint.body_b)) {
+      const bool through_ground = groups.root(joint.body_a) == groups.root(kGroundName);
       reader.fail_at_key(f, "this joint closes a loop: " + joint.body_a + " and " + joint.body_b +
                                 " are already connected through other joints" +
-                                (a == kGroundName ? " and ground" : "") +
+                                (through_ground ? " and ground" : "") +
                                 "; tumble solves systems whose joints form a tree");
     }
-    group[a] = b;
-    group[b] = b;
-    for (const BodySpec& body : bodies) {
-      if (body.name == joint.name) {
-        reader.fail_at_key(f, "a body is named '" + joint.name +
-                                  "' too; names head CSV columns, "
-                                  "so give the joint its own");
-      }
-    }
+    heads.claim(reader, f, joint.name, "joint", joint.where);
     joints.push_back(std::move(joint));
   }
   return joints;

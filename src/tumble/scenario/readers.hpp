@@ -4,6 +4,8 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "tumble/scenario/scenario.hpp"
@@ -59,6 +61,21 @@ std::set<std::string> held_bodies(const Scenario& scenario,
 // > 0 (d from the joint point to its COM), a slider, or a weld; not a ball joint. Throws
 // ScenarioError at its shape, saying why (body_reader.cpp).
 void check_slender_bodies(const Scenario& scenario);
+// Which bodies joints connect to each other (ground included): a union-find over their names,
+// whose walks to a group's root are halved as they go, so that a chain of n bodies is grouped
+// in about n log n steps, not n^2 (body_groups.cpp).
+class BodyGroups {
+ public:
+  // The name that stands for the body's group (the body itself when no joint connects it).
+  std::string root(const std::string& body);
+  // Joins the two bodies' groups; false when they were one group already (a joint between them
+  // would close a loop).
+  bool join(const std::string& a, const std::string& b);
+
+ private:
+  std::unordered_map<std::string, std::string> parent_;
+};
+
 // `contacts:` (contacts_reader.cpp), after the bodies and joints.
 std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
                                        const Scenario& scenario);
@@ -77,9 +94,34 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
 OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
                        const std::string& file_stem);
 
-// Checks a body's or force's name: it prefixes CSV columns ("prism.x"), so no '.', ',', quotes
-// or white space.
+// Checks a body's, joint's, force's, contact's or event's name: it prefixes CSV columns
+// ("prism.x") and shows in messages, so no control character, '.', ',', quotes or spaces
+// (column_heads.cpp).
 void check_name(const Reader& reader, const Field& where, const std::string& name,
                 std::string_view what);
+
+// The names that head CSV columns: bodies, joints, forces and contacts share one set of them, so
+// that `floor.W` means one thing in the CSV, in expressions and in plots. Each reader claims its
+// names as it reads them, against what was read before (column_heads.cpp); a hash map, so that
+// reading stays linear in the number of names.
+class ColumnHeads {
+ public:
+  ColumnHeads() = default;
+  // Everything `scenario` has read so far.
+  explicit ColumnHeads(const Scenario& scenario);
+  // Records `name` (already checked) as naming a `what` at `where`.
+  void note(const std::string& name, std::string_view what, const SourceLocation& where);
+  // Records `name` as naming a `what` at `at`; fails at `where`'s key when it already names
+  // something, saying what and where.
+  void claim(const Reader& reader, const Field& where, const std::string& name,
+             std::string_view what, const SourceLocation& at);
+
+ private:
+  struct Head {
+    std::string what;
+    SourceLocation where;
+  };
+  std::unordered_map<std::string, Head> heads_;
+};
 
 }  // namespace tumble::scenario_reading

@@ -23,11 +23,14 @@
 
 namespace tumble {
 
+// The key is the file's text (a body's name in "bodies.NAME"): a control character in it is shown
+// escaped, so that the message is one clean line.
 ScenarioError::ScenarioError(SourceLocation where, std::string key, std::string why)
-    : std::runtime_error(fmt::format("{}:{}:{}: {}{}", where.file, where.line, where.column,
-                                     key.empty() ? std::string() : key + ": ", why)),
+    : std::runtime_error(
+          fmt::format("{}:{}:{}: {}{}", where.file, where.line, where.column,
+                      key.empty() ? std::string() : scenario_reading::printable(key) + ": ", why)),
       where_(std::move(where)),
-      key_(std::move(key)),
+      key_(scenario_reading::printable(key)),
       why_(std::move(why)) {}
 
 namespace {
@@ -310,6 +313,9 @@ Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
   scenario.bodies = scenario_reading::read_bodies(
       reader, root.require("bodies", "the bodies, by name"), directory);
+  for (std::size_t i = 0; i < scenario.bodies.size(); ++i) {
+    reader.index_body(scenario.bodies[i].name, i);
+  }
   if (const auto f = root.find("joints")) {
     scenario.joints = scenario_reading::read_joints(reader, *f, scenario.bodies);
   }

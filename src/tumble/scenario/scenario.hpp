@@ -192,6 +192,8 @@ struct OutputSpec {
   std::string events;
   bool events_given = false;
   SourceLocation trajectory_where;  // where output.trajectory is given (line 0: the default)
+  SourceLocation animation_where;   // ... output.animation (line 0: not given)
+  SourceLocation events_where;      // ... output.events (line 0: the default)
 };
 
 // An `events:` entry: a moment the run locates, as it does contacts' mode changes (to the

@@ -192,6 +192,7 @@ OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
   }
   if (const auto f = map.find("animation")) {
     output.animation = read_relative_path(reader, *f, "run.html");
+    output.animation_where = reader.location(f->value_mark());
     // One file each: the page would replace the trajectory, and the run would lose it.
     if (std::filesystem::path(output.animation).lexically_normal() ==
         std::filesystem::path(output.trajectory).lexically_normal()) {
@@ -211,6 +212,7 @@ OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
   } else {
     output.events = read_relative_path(reader, *f, "run_events.csv");
     output.events_given = true;
+    output.events_where = reader.location(f->value_mark());
     const std::filesystem::path events = std::filesystem::path(output.events).lexically_normal();
     for (const std::string* other : {&output.trajectory, &output.animation}) {
       if (events == std::filesystem::path(*other).lexically_normal()) {

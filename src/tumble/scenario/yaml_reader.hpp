@@ -33,6 +33,9 @@ struct Field {
 
 // A number for messages: the shortest text that reads back as the same double ("-2", "0.1").
 std::string format_number(double value);
+// The text with each control character (below 0x20, and 0x7F) written \xNN: text from a file, as
+// a message can show it on one clean line without acting on the terminal.
+std::string printable(std::string_view text);
 // "a, b, c"
 std::string join(const std::vector<std::string>& words, std::string_view separator = ", ");
 // The candidate closest to `word` by edit distance, if it is close enough to be a likely typo.
@@ -72,6 +75,18 @@ class Reader {
   // A planar scenario (`planar: true`) moves in the world's x-y plane, z out of it.
   void set_planar(bool planar) { planar_ = planar; }
   bool planar() const { return planar_; }
+  // The bodies' names, once `bodies:` is read: the joints, forces and contacts that name a body
+  // find it in constant time, so that reading stays linear in their number.
+  void index_body(const std::string& name, std::size_t position) {
+    body_positions_.emplace(name, position);
+  }
+  bool bodies_indexed() const { return !body_positions_.empty(); }
+  // The body's position in `bodies:`, if there is one of that name.
+  std::optional<std::size_t> body_position(const std::string& name) const {
+    const auto it = body_positions_.find(name);
+    if (it == body_positions_.end()) return std::nullopt;
+    return it->second;
+  }
   // A point or a direction of the world or a body: [x, y, z]; in a planar scenario [x, y], in
   // the plane (z = 0).
   Vec3 point_or_vector(const Field& field) const;
@@ -91,6 +106,7 @@ class Reader {
   std::vector<std::string>* warnings_;
   ParameterTrace* trace_;
   bool planar_ = false;
+  std::unordered_map<std::string, std::size_t> body_positions_;
 };
 
 // A mapping of the file. Construction fails unless the value is a mapping with distinct scalar

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "tumble/inertia/mesh.hpp"
 #include "tumble/math/rotation.hpp"
@@ -74,13 +75,27 @@ Vec3 com_position_W(const BodySpec& body) {
   return body.position_W + body.R_WB * body.mass_properties.com;
 }
 
-int body_index(const Scenario& scenario, const std::string& name) {
-  if (name == kGroundName) return kGround;
-  for (std::size_t i = 0; i < scenario.bodies.size(); ++i) {
-    if (scenario.bodies[i].name == name) return static_cast<int>(i);
+// The bodies' numbers by name (ground's is kGround), found in constant time: building stays
+// linear in the number of joints, forces and contacts.
+class BodyNumbers {
+ public:
+  explicit BodyNumbers(const Scenario& scenario) {
+    for (std::size_t i = 0; i < scenario.bodies.size(); ++i) {
+      numbers_.emplace(scenario.bodies[i].name, static_cast<int>(i));
+    }
   }
-  throw std::logic_error("'" + name + "' names no body; the reader checks this");
-}
+  int operator()(const std::string& name) const {
+    if (name == kGroundName) return kGround;
+    const auto it = numbers_.find(name);
+    if (it == numbers_.end()) {
+      throw std::logic_error("'" + name + "' names no body; the reader checks this");
+    }
+    return it->second;
+  }
+
+ private:
+  std::unordered_map<std::string, int> numbers_;
+};
 
 // A world point at t = 0 fixed to a body: its offset from the COM in body axes (for ground, the
 // world point itself).
@@ -94,12 +109,13 @@ Mat3 orientation(const Scenario& scenario, int body) {
   return body == kGround ? Mat3::Identity() : scenario.bodies[static_cast<std::size_t>(body)].R_WB;
 }
 
-JointModel joint_model(const Scenario& scenario, const JointSpec& spec) {
+JointModel joint_model(const Scenario& scenario, const BodyNumbers& body_number,
+                       const JointSpec& spec) {
   JointModel joint;
   joint.type = spec.type;
   joint.name = spec.name;
-  joint.body_a = body_index(scenario, spec.body_a);
-  joint.body_b = body_index(scenario, spec.body_b);
+  joint.body_a = body_number(spec.body_a);
+  joint.body_b = body_number(spec.body_b);
   joint.p_AJ_A = fixed_point(scenario, joint.body_a, spec.at_W);
   joint.p_BJ_B = fixed_point(scenario, joint.body_b, spec.at_W);
   const Mat3 R_WA = orientation(scenario, joint.body_a);
@@ -118,12 +134,12 @@ JointModel joint_model(const Scenario& scenario, const JointSpec& spec) {
   return joint;
 }
 
-TorsionalSpring torsional_spring_model(const Scenario& scenario, const Model& model,
-                                       const TorsionalSpringSpec& spec) {
+TorsionalSpring torsional_spring_model(const Scenario& scenario, const BodyNumbers& body_number,
+                                       const Model& model, const TorsionalSpringSpec& spec) {
   TorsionalSpring spring;
   spring.name = spec.name;
-  spring.body_a = body_index(scenario, spec.body_a);
-  spring.body_b = body_index(scenario, spec.body_b);
+  spring.body_a = body_number(spec.body_a);
+  spring.body_b = body_number(spec.body_b);
   spring.stiffness = spec.stiffness;
   spring.damping = spec.damping;
   const Mat3 R_AB0 =
@@ -161,12 +177,9 @@ Model build_model(const Scenario& scenario) {
     model.bodies.push_back(RigidBody::make(body.name, body.mass_properties.mass,
                                            body.mass_properties.inertia_about_com));
   }
+  const BodyNumbers body_number(scenario);
   for (const LoadSpec& spec : scenario.loads) {
-    const auto it = std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
-                                 [&](const BodySpec& b) { return b.name == spec.body; });
-    if (it == scenario.bodies.end()) {
-      throw std::logic_error("load '" + spec.name + "' names no body; the reader checks this");
-    }
+    const auto it = scenario.bodies.begin() + body_number(spec.body);
     AppliedLoad load;
     load.kind =
         spec.kind == LoadSpec::Kind::Force ? AppliedLoad::Kind::Force : AppliedLoad::Kind::Torque;
@@ -180,12 +193,13 @@ Model build_model(const Scenario& scenario) {
     load.to = spec.to;
     model.loads.push_back(load);
   }
-  for (const JointSpec& spec : scenario.joints) model.joints.push_back(joint_model(scenario, spec));
+  for (const JointSpec& spec : scenario.joints)
+    model.joints.push_back(joint_model(scenario, body_number, spec));
   for (const SpringSpec& spec : scenario.springs) {
     LinearSpring spring;
     spring.name = spec.name;
-    spring.body_a = body_index(scenario, spec.body_a);
-    spring.body_b = body_index(scenario, spec.body_b);
+    spring.body_a = body_number(spec.body_a);
+    spring.body_b = body_number(spec.body_b);
     spring.p_A_A = fixed_point(scenario, spring.body_a, spec.at_a_W);
     spring.p_B_B = fixed_point(scenario, spring.body_b, spec.at_b_W);
     spring.stiffness = spec.stiffness;
@@ -194,12 +208,12 @@ Model build_model(const Scenario& scenario) {
     model.springs.push_back(spring);
   }
   for (const TorsionalSpringSpec& spec : scenario.torsional_springs) {
-    model.torsional_springs.push_back(torsional_spring_model(scenario, model, spec));
+    model.torsional_springs.push_back(torsional_spring_model(scenario, body_number, model, spec));
   }
   for (const ImpulseSpec& spec : scenario.impulses) {
     ImpulseLoad impulse;
     impulse.name = spec.name;
-    impulse.body = static_cast<std::size_t>(body_index(scenario, spec.body));
+    impulse.body = static_cast<std::size_t>(body_number(spec.body));
     impulse.value = spec.value;
     impulse.body_frame = spec.body_frame;
     if (spec.has_point) {
@@ -211,7 +225,7 @@ Model build_model(const Scenario& scenario) {
   for (const ContactSpec& spec : scenario.contacts) {
     PlaneContact contact;
     contact.name = spec.name;
-    contact.body = static_cast<std::size_t>(body_index(scenario, spec.body));
+    contact.body = static_cast<std::size_t>(body_number(spec.body));
     contact.surface = contact_surface(scenario.bodies[contact.body].shape);
     contact.point_W = spec.plane_point_W;
     contact.normal_W = spec.plane_normal_W;

@@ -10,6 +10,7 @@ TableRun run_into_table(const Scenario& scenario, const SimulationModel& model,
                         expected_rows(sim.duration, sim.output_every, sim.max_rows)),
                {},
                std::nullopt};
+  run.options.stop_requested = options.stop_requested;
   CheckpointCallback keep_state;
   if (options.stop_at < std::numeric_limits<double>::infinity()) {
     run.options.checkpoint_after = options.stop_at;

@@ -2,6 +2,7 @@
 // One run of a built model into a RowTable, from the scenario's initial state or from a state a
 // run of the same model stopped at: the call behind the Python module's Model.run, and the one
 // its overhead is measured against (bench/).
+#include <functional>
 #include <limits>
 #include <optional>
 
@@ -17,6 +18,8 @@ struct TableRunOptions {
   // Go on from this state of a run of the same model (null: from the initial state). The rows
   // are those after its time; the report counts the whole run's steps, events and drifts.
   const SimulationCheckpoint* start = nullptr;
+  // Asked after each step whether to stop (DriverOptions::stop_requested).
+  std::function<bool()> stop_requested;
 };
 
 struct TableRun {

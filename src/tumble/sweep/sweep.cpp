@@ -125,7 +125,7 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
 
 std::vector<RunRecord> run_points(const SweepSpec& spec,
                                   std::span<const std::vector<double>> points, int threads,
-                                  const SweepProgress& progress) {
+                                  const SweepProgress& progress, const SweepRunsDone& in_order) {
   if (threads < 1 || threads > kMaxSweepThreads) {
     throw std::invalid_argument(
         fmt::format("threads: {} is out of range: expected 1 to {}", threads, kMaxSweepThreads));
@@ -137,11 +137,22 @@ std::vector<RunRecord> run_points(const SweepSpec& spec,
   std::condition_variable finished;
   std::exception_ptr failure;
   SweepModelShare share;
+  // Which runs have finished, and the first not yet handed to in_order (under `mutex`).
+  std::vector<char> finished_runs(in_order ? points.size() : 0, 0);
+  std::size_t handed = 0;
+  const auto hand_over = [&](std::size_t i) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    finished_runs[i] = 1;
+    for (; handed < points.size() && finished_runs[handed] != 0; ++handed) {
+      in_order(handed, records[handed]);
+    }
+  };
   const auto work = [&] {
     try {
       SweepRunner runner(spec, &share);
       for (std::size_t i = next++; i < points.size(); i = next++) {
         records[i] = runner.run(points[i]);
+        if (in_order) hand_over(i);
         ++done;
       }
     } catch (...) {
@@ -174,7 +185,14 @@ std::vector<RunRecord> run_points(const SweepSpec& spec,
     while (done < points.size() && !failure) {
       finished.wait_for(lock, std::chrono::milliseconds(100));
       lock.unlock();
-      progress(done, points.size());
+      try {
+        progress(done, points.size());
+      } catch (...) {  // the caller stops the sweep (Python's Ctrl-C): no run starts after it
+        lock.lock();
+        if (!failure) failure = std::current_exception();
+        next = points.size();
+        break;
+      }
       lock.lock();
     }
   } else {

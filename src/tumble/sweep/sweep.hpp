@@ -103,7 +103,8 @@ class SweepRunner {
   std::unique_ptr<VelocityOnlyRuns> velocity_only_;  // once a run has shown that they can
 };
 
-// Called on the calling thread about ten times a second while the runs go on.
+// Called on the calling thread about ten times a second while the runs go on. An exception from
+// it stops the sweep: the runs going on finish, no other starts, and run_points throws it.
 using SweepProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 // The most threads a sweep runs on (tumble sweep --threads, Python's threads=): each thread
@@ -111,12 +112,19 @@ using SweepProgress = std::function<void(std::size_t done, std::size_t total)>;
 // started. Larger counts are refused before any run (docs/sweeps.md).
 inline constexpr int kMaxSweepThreads = 256;
 
+// Called with each run's record in the points' order, as soon as it and every run before it
+// have finished (one call at a time, from whichever thread finished the last of them): what
+// writes sweep.csv's rows as the sweep goes.
+using SweepRunsDone = std::function<void(std::size_t index, const RunRecord& record)>;
+
 // Runs every point on `threads` threads (1 to kMaxSweepThreads, else std::invalid_argument); the
 // records are in the points' order. A thread that cannot be started (std::system_error) stops
-// the sweep: the threads started finish their runs and the error is thrown.
+// the sweep: the threads started finish their runs and the error is thrown, as is an exception
+// from `in_order` (after which no run starts).
 std::vector<RunRecord> run_points(const SweepSpec& spec,
                                   std::span<const std::vector<double>> points, int threads,
-                                  const SweepProgress& progress = {});
+                                  const SweepProgress& progress = {},
+                                  const SweepRunsDone& in_order = {});
 
 // sweep.csv: "run,<varied...>,status,steps,E_drift,L_drift,<outcomes...>,message", numbers to
 // 17 significant digits (they read back to the same doubles), the message quoted.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <unordered_set>
 
 #include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/scenario_document.hpp"
@@ -35,6 +36,26 @@ SweepSpec make_sweep_spec(std::string text, std::string path, std::vector<Parame
           fmt::format("{} {}: {} is varied twice", names.vary, range.argument, range.name));
     }
     spec.varied.push_back(range.name);
+  }
+  // Each outcome heads a column of sweep.csv beside run, the varied parameters and the run's
+  // status columns: a second column of one name would be read as the first by Python and plots.
+  std::unordered_set<std::string> columns = {"run",     "status",  "steps",
+                                             "E_drift", "L_drift", "message"};
+  for (const auto& [name, value] : base.parameters) columns.insert(name);
+  for (const Outcome& outcome : outcomes) {
+    if (!columns.insert(outcome.name).second) {
+      const bool parameter = base.parameters.contains(outcome.name);
+      const bool repeated = std::count_if(outcomes.begin(), outcomes.end(), [&](const Outcome& o) {
+                              return o.name == outcome.name;
+                            }) > 1;
+      throw std::invalid_argument(fmt::format(
+          "{} {}={}: '{}' {}; give the outcome a name of its own", names.outcome, outcome.name,
+          outcome.text, outcome.name,
+          repeated    ? "is given twice"
+          : parameter ? "is a parameter of " + spec.path + " (a column of sweep.csv when varied)"
+                      : "heads one of sweep.csv's own columns (run, status, steps, E_drift, "
+                        "L_drift, message)"));
+    }
   }
   try {
     const RunRecorder compiles(outcomes, column_layout(base, *model), base);

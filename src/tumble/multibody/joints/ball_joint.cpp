@@ -4,9 +4,9 @@ namespace tumble {
 
 namespace {
 
-constexpr CoordinateName kPositions[] = {{"rx", "rad"}, {"ry", "rad"}, {"rz", "rad"}};
-constexpr CoordinateName kSpeeds[] = {{"wx", "rad/s"}, {"wy", "rad/s"}, {"wz", "rad/s"}};
-constexpr int kBlocks[] = {3};
+constexpr CoordinateName kBallPositions[] = {{"rx", "rad"}, {"ry", "rad"}, {"rz", "rad"}};
+constexpr CoordinateName kBallSpeeds[] = {{"wx", "rad/s"}, {"wy", "rad/s"}, {"wz", "rad/s"}};
+constexpr int kBallBlocks[] = {3};
 
 }  // namespace
 
@@ -44,7 +44,7 @@ void BallJoint::displace(const TreeJoint& joint, const SpeedStep& move, const Ma
 }
 
 std::span<const CoordinateName> BallJoint::coordinate_columns() const {
-  return kPositions;
+  return kBallPositions;
 }
 
 // R_AB = R_WA^T R_WB, as a rotation vector in A's axes.
@@ -57,13 +57,13 @@ void BallJoint::calc_coordinate_columns(const TreeJoint& /*joint*/, const VecX& 
 }
 
 std::span<const CoordinateName> BallJoint::modal_positions() const {
-  return kPositions;
+  return kBallPositions;
 }
 std::span<const CoordinateName> BallJoint::modal_speeds() const {
-  return kSpeeds;
+  return kBallSpeeds;
 }
 std::span<const int> BallJoint::modal_position_blocks() const {
-  return kBlocks;
+  return kBallBlocks;
 }
 
 void BallJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /*sign*/,

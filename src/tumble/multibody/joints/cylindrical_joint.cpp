@@ -4,19 +4,19 @@ namespace tumble {
 
 namespace {
 
-constexpr CoordinateName kPositions[] = {{"angle", "rad"}, {"travel", "m"}};
-constexpr CoordinateName kSpeeds[] = {{"rate", "rad/s"}, {"speed", "m/s"}};
-constexpr CoordinateName kColumns[] = {
+constexpr CoordinateName kCylindricalPositions[] = {{"angle", "rad"}, {"travel", "m"}};
+constexpr CoordinateName kCylindricalSpeeds[] = {{"rate", "rad/s"}, {"speed", "m/s"}};
+constexpr CoordinateName kCylindricalColumns[] = {
     {"angle", "rad"}, {"rate", "rad/s"}, {"travel", "m"}, {"speed", "m/s"}};
 // The turn and the slide may be ignorable apart.
-constexpr int kBlocks[] = {1, 1};
+constexpr int kCylindricalBlocks[] = {1, 1};
 
 // Turned by theta about the axis through the joint point, and slid along it by d: the child's
 // joint point is d along the axis from the parent's (the axis is the same line in both bodies'
 // axes, R_PC axis_C = R_PC0 axis_C).
 template <typename S>
-void place(const TreeJoint& joint, const S& angle, const S& travel, Mat3Of<S>& R_PC,
-           Vec3Of<S>& p_PC_P) {
+void place_cylindrical(const TreeJoint& joint, const S& angle, const S& travel, Mat3Of<S>& R_PC,
+                       Vec3Of<S>& p_PC_P) {
   R_PC = joint.R_PC0.cast<S>() * rotation_from_axis_angle<S>(joint.axis_C, angle);
   p_PC_P =
       joint.p_PJ_P.cast<S>() - R_PC * (joint.p_CJ_C.cast<S>() - travel * joint.axis_C.cast<S>());
@@ -34,7 +34,7 @@ void CylindricalJoint::set_motion_subspace(TreeJoint& joint) const {
 
 void CylindricalJoint::calc_placement(const TreeJoint& joint, const VecX& y, Mat3& R_PC,
                                       Vec3& p_PC_P) const {
-  place<double>(joint, y(joint.q), y(joint.q + 1), R_PC, p_PC_P);
+  place_cylindrical<double>(joint, y(joint.q), y(joint.q + 1), R_PC, p_PC_P);
 }
 
 void CylindricalJoint::write_coordinate_rates(const TreeJoint& joint, const VecX& y,
@@ -63,7 +63,7 @@ void CylindricalJoint::displace(const TreeJoint& joint, const SpeedStep& move, c
 }
 
 std::span<const CoordinateName> CylindricalJoint::coordinate_columns() const {
-  return kColumns;
+  return kCylindricalColumns;
 }
 
 void CylindricalJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX& y,
@@ -73,13 +73,13 @@ void CylindricalJoint::calc_coordinate_columns(const TreeJoint& joint, const Vec
 }
 
 std::span<const CoordinateName> CylindricalJoint::modal_positions() const {
-  return kPositions;
+  return kCylindricalPositions;
 }
 std::span<const CoordinateName> CylindricalJoint::modal_speeds() const {
-  return kSpeeds;
+  return kCylindricalSpeeds;
 }
 std::span<const int> CylindricalJoint::modal_position_blocks() const {
-  return kBlocks;
+  return kCylindricalBlocks;
 }
 
 void CylindricalJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
@@ -91,7 +91,8 @@ template <typename S>
 void CylindricalJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                                     JointMotionOf<S>& motion) const {
   modal_numbers<S>(joint, at, motion);
-  place<S>(joint, motion.coordinates(0), motion.coordinates(1), motion.R_PC, motion.p_PC_P);
+  place_cylindrical<S>(joint, motion.coordinates(0), motion.coordinates(1), motion.R_PC,
+                       motion.p_PC_P);
 }
 
 template <typename S>

@@ -4,12 +4,12 @@ namespace tumble {
 
 namespace {
 
-constexpr CoordinateName kPositions[] = {{"x", "m"},    {"y", "m"},    {"z", "m"},
-                                         {"rx", "rad"}, {"ry", "rad"}, {"rz", "rad"}};
-constexpr CoordinateName kSpeeds[] = {{"vx", "m/s"},   {"vy", "m/s"},   {"vz", "m/s"},
-                                      {"wx", "rad/s"}, {"wy", "rad/s"}, {"wz", "rad/s"}};
+constexpr CoordinateName kFreePositions[] = {{"x", "m"},    {"y", "m"},    {"z", "m"},
+                                             {"rx", "rad"}, {"ry", "rad"}, {"rz", "rad"}};
+constexpr CoordinateName kFreeSpeeds[] = {{"vx", "m/s"},   {"vy", "m/s"},   {"vz", "m/s"},
+                                          {"wx", "rad/s"}, {"wy", "rad/s"}, {"wz", "rad/s"}};
 // Where its COM is, and how it is turned.
-constexpr int kBlocks[] = {3, 3};
+constexpr int kFreeBlocks[] = {3, 3};
 
 // Its COM's velocity at y0, world.
 Vec3 v_G0_W(const TreeJoint& joint, const VecX& y0) {
@@ -53,13 +53,13 @@ void FreeJoint::displace(const TreeJoint& joint, const SpeedStep& move, const Ma
 }
 
 std::span<const CoordinateName> FreeJoint::modal_positions() const {
-  return kPositions;
+  return kFreePositions;
 }
 std::span<const CoordinateName> FreeJoint::modal_speeds() const {
-  return kSpeeds;
+  return kFreeSpeeds;
 }
 std::span<const int> FreeJoint::modal_position_blocks() const {
-  return kBlocks;
+  return kFreeBlocks;
 }
 
 void FreeJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /*sign*/,

@@ -4,14 +4,14 @@ namespace tumble {
 
 namespace {
 
-constexpr CoordinateName kPositions[] = {{"angle", "rad"}};
-constexpr CoordinateName kSpeeds[] = {{"rate", "rad/s"}};
-constexpr CoordinateName kColumns[] = {{"angle", "rad"}, {"rate", "rad/s"}};
-constexpr int kBlocks[] = {1};
+constexpr CoordinateName kHingePositions[] = {{"angle", "rad"}};
+constexpr CoordinateName kHingeSpeeds[] = {{"rate", "rad/s"}};
+constexpr CoordinateName kHingeColumns[] = {{"angle", "rad"}, {"rate", "rad/s"}};
+constexpr int kHingeBlocks[] = {1};
 
 // Where the angle puts the child: turned about the axis through the joint point.
 template <typename S>
-void place(const TreeJoint& joint, const S& angle, Mat3Of<S>& R_PC, Vec3Of<S>& p_PC_P) {
+void place_hinge(const TreeJoint& joint, const S& angle, Mat3Of<S>& R_PC, Vec3Of<S>& p_PC_P) {
   R_PC = joint.R_PC0.cast<S>() * rotation_from_axis_angle<S>(joint.axis_C, angle);
   p_PC_P = offset_about_joint_point<S>(joint, R_PC);
 }
@@ -26,7 +26,7 @@ void HingeJoint::set_motion_subspace(TreeJoint& joint) const {
 
 void HingeJoint::calc_placement(const TreeJoint& joint, const VecX& y, Mat3& R_PC,
                                 Vec3& p_PC_P) const {
-  place<double>(joint, y(joint.q), R_PC, p_PC_P);
+  place_hinge<double>(joint, y(joint.q), R_PC, p_PC_P);
 }
 
 void HingeJoint::write_coordinate_rates(const TreeJoint& joint, const VecX& y,
@@ -48,7 +48,7 @@ void HingeJoint::displace(const TreeJoint& joint, const SpeedStep& move, const M
 }
 
 std::span<const CoordinateName> HingeJoint::coordinate_columns() const {
-  return kColumns;
+  return kHingeColumns;
 }
 
 void HingeJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX& y,
@@ -58,13 +58,13 @@ void HingeJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX& y,
 }
 
 std::span<const CoordinateName> HingeJoint::modal_positions() const {
-  return kPositions;
+  return kHingePositions;
 }
 std::span<const CoordinateName> HingeJoint::modal_speeds() const {
-  return kSpeeds;
+  return kHingeSpeeds;
 }
 std::span<const int> HingeJoint::modal_position_blocks() const {
-  return kBlocks;
+  return kHingeBlocks;
 }
 
 void HingeJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
@@ -76,7 +76,7 @@ template <typename S>
 void HingeJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                               JointMotionOf<S>& motion) const {
   modal_numbers<S>(joint, at, motion);
-  place<S>(joint, motion.coordinates(0), motion.R_PC, motion.p_PC_P);
+  place_hinge<S>(joint, motion.coordinates(0), motion.R_PC, motion.p_PC_P);
 }
 
 template <typename S>

@@ -4,15 +4,15 @@ namespace tumble {
 
 namespace {
 
-constexpr CoordinateName kPositions[] = {{"travel", "m"}};
-constexpr CoordinateName kSpeeds[] = {{"speed", "m/s"}};
-constexpr CoordinateName kColumns[] = {{"travel", "m"}, {"speed", "m/s"}};
-constexpr int kBlocks[] = {1};
+constexpr CoordinateName kPrismaticPositions[] = {{"travel", "m"}};
+constexpr CoordinateName kPrismaticSpeeds[] = {{"speed", "m/s"}};
+constexpr CoordinateName kPrismaticColumns[] = {{"travel", "m"}, {"speed", "m/s"}};
+constexpr int kPrismaticBlocks[] = {1};
 
 // The child's COM from the parent's: out to the parent's joint point, along the axis by the
 // travel d, back from the child's joint point to its COM.
 template <typename S>
-void place(const TreeJoint& joint, const S& travel, Mat3Of<S>& R_PC, Vec3Of<S>& p_PC_P) {
+void place_prismatic(const TreeJoint& joint, const S& travel, Mat3Of<S>& R_PC, Vec3Of<S>& p_PC_P) {
   R_PC = joint.R_PC0.cast<S>();
   p_PC_P =
       joint.p_PJ_P.cast<S>() - R_PC * (joint.p_CJ_C.cast<S>() - travel * joint.axis_C.cast<S>());
@@ -28,7 +28,7 @@ void PrismaticJoint::set_motion_subspace(TreeJoint& joint) const {
 
 void PrismaticJoint::calc_placement(const TreeJoint& joint, const VecX& y, Mat3& R_PC,
                                     Vec3& p_PC_P) const {
-  place<double>(joint, y(joint.q), R_PC, p_PC_P);
+  place_prismatic<double>(joint, y(joint.q), R_PC, p_PC_P);
 }
 
 void PrismaticJoint::write_coordinate_rates(const TreeJoint& joint, const VecX& y,
@@ -53,7 +53,7 @@ void PrismaticJoint::displace(const TreeJoint& joint, const SpeedStep& move, con
 }
 
 std::span<const CoordinateName> PrismaticJoint::coordinate_columns() const {
-  return kColumns;
+  return kPrismaticColumns;
 }
 
 void PrismaticJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX& y,
@@ -63,13 +63,13 @@ void PrismaticJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX&
 }
 
 std::span<const CoordinateName> PrismaticJoint::modal_positions() const {
-  return kPositions;
+  return kPrismaticPositions;
 }
 std::span<const CoordinateName> PrismaticJoint::modal_speeds() const {
-  return kSpeeds;
+  return kPrismaticSpeeds;
 }
 std::span<const int> PrismaticJoint::modal_position_blocks() const {
-  return kBlocks;
+  return kPrismaticBlocks;
 }
 
 void PrismaticJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
@@ -81,7 +81,7 @@ template <typename S>
 void PrismaticJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                                   JointMotionOf<S>& motion) const {
   modal_numbers<S>(joint, at, motion);
-  place<S>(joint, motion.coordinates(0), motion.R_PC, motion.p_PC_P);
+  place_prismatic<S>(joint, motion.coordinates(0), motion.R_PC, motion.p_PC_P);
 }
 
 template <typename S>

@@ -6,12 +6,12 @@ namespace tumble {
 
 namespace {
 
-constexpr CoordinateName kPositions[] = {{"angle1", "rad"}, {"angle2", "rad"}};
-constexpr CoordinateName kSpeeds[] = {{"rate1", "rad/s"}, {"rate2", "rad/s"}};
-constexpr CoordinateName kColumns[] = {
+constexpr CoordinateName kUniversalPositions[] = {{"angle1", "rad"}, {"angle2", "rad"}};
+constexpr CoordinateName kUniversalSpeeds[] = {{"rate1", "rad/s"}, {"rate2", "rad/s"}};
+constexpr CoordinateName kUniversalColumns[] = {
     {"angle1", "rad"}, {"rate1", "rad/s"}, {"angle2", "rad"}, {"rate2", "rad/s"}};
 // Two turns about different axes: either may be ignorable without the other.
-constexpr int kBlocks[] = {1, 1};
+constexpr int kUniversalBlocks[] = {1, 1};
 
 // Which of the joint's coordinates turns about the parent's axis, which about the child's.
 struct Order {
@@ -116,7 +116,7 @@ void UniversalJoint::displace(const TreeJoint& joint, const SpeedStep& move, con
 }
 
 std::span<const CoordinateName> UniversalJoint::coordinate_columns() const {
-  return kColumns;
+  return kUniversalColumns;
 }
 
 void UniversalJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX& y,
@@ -126,13 +126,13 @@ void UniversalJoint::calc_coordinate_columns(const TreeJoint& joint, const VecX&
 }
 
 std::span<const CoordinateName> UniversalJoint::modal_positions() const {
-  return kPositions;
+  return kUniversalPositions;
 }
 std::span<const CoordinateName> UniversalJoint::modal_speeds() const {
-  return kSpeeds;
+  return kUniversalSpeeds;
 }
 std::span<const int> UniversalJoint::modal_position_blocks() const {
-  return kBlocks;
+  return kUniversalBlocks;
 }
 
 void UniversalJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,

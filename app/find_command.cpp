@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "commands.hpp"
@@ -48,6 +49,9 @@ int find_command(const FindArguments& args) {
                     [&](double value, bool outcome, const RunRecord& record) {
                       fmt::print("  {} = {:<24.17g} {:<5}  ({} steps)\n", range.name, value,
                                  outcome ? "true" : "false", record.steps);
+                      // Each run's line as it ends, to a file or a pipe too: a bisection near a
+                      // critical value can take minutes.
+                      std::fflush(stdout);
                     });
     fmt::print("  bracket        [{:.17g}, {:.17g}]: {} at the low end, {} at the high end\n",
                found.lo, found.hi, found.at_lo ? "true" : "false", found.at_hi ? "true" : "false");

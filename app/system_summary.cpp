@@ -48,64 +48,101 @@ bool external_moments_act(const Scenario& scenario) {
   return false;
 }
 
-void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
-                          const SimulationResult& result) {
-  const std::vector<std::string> names = simulation.formulation->element_names();
-  if (!simulation.formulation->keeps_work_ledger()) return;
-  const ConservationReport& c = result.conservation;
-  fmt::print(
-      "  work-energy    max |KE - KE0 - W| {:.3e} J ({:.1e} of the largest KE; W: the "
-      "work of gravity and of every element)\n",
-      c.max_work_energy_residual,
-      c.max_kinetic_energy > 0.0 ? c.max_work_energy_residual / c.max_kinetic_energy : 0.0);
-  const std::vector<ElementWork>& works = result.last_extras.elements;
-  for (std::size_t i = 0; i < names.size() && i < works.size(); ++i) {
-    fmt::print("  work           {}: {:.6g} J\n", names[i], works[i].work);
-  }
-  // Contact events in time order: the first ones in full (a bouncing ball has dozens).
-  constexpr std::size_t kContactEventsShown = 24;
-  const std::vector<ContactEventRecord>& events = result.contact_events;
-  for (std::size_t i = 0; i < events.size() && i < kContactEventsShown; ++i) {
-    fmt::print("  t = {:<14.12g} {}: {}\n", events[i].t, scenario.contacts[events[i].contact].name,
-               events[i].what);
-  }
-  if (events.size() > kContactEventsShown) {
+namespace {
+
+// A jump at a breakpoint: its KE and L before and after, and each joint's reaction impulse.
+void print_jump(const Scenario& scenario, const JumpRecord& jump) {
+  fmt::print("  t = {:<14.12g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,
+             jump.kinetic_energy_before, jump.kinetic_energy_after);
+  const Vec3& L0 = jump.angular_momentum_before_W;
+  const Vec3& L1 = jump.angular_momentum_after_W;
+  fmt::print("; L (origin) [{:.6g}, {:.6g}, {:.6g}] -> [{:.6g}, {:.6g}, {:.6g}] kg m^2/s\n", L0.x(),
+             L0.y(), L0.z(), L1.x(), L1.y(), L1.z());
+  for (std::size_t j = 0; j < jump.reaction_impulses.size(); ++j) {
+    const Vec3& F = jump.reaction_impulses[j].F_W;
+    const Vec3& M = jump.reaction_impulses[j].M_J_W;
     fmt::print(
-        "  ...            {} more contact events (the events CSV has them all); the last at "
-        "t = {:.12g}: {}: {}\n",
-        events.size() - kContactEventsShown, events.back().t,
-        scenario.contacts[events.back().contact].name, events.back().what);
-  }
-  for (const JumpRecord& jump : result.jumps) {
-    fmt::print("  t = {:<14.12g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,
-               jump.kinetic_energy_before, jump.kinetic_energy_after);
-    const Vec3& L0 = jump.angular_momentum_before_W;
-    const Vec3& L1 = jump.angular_momentum_after_W;
-    fmt::print("; L (origin) [{:.6g}, {:.6g}, {:.6g}] -> [{:.6g}, {:.6g}, {:.6g}] kg m^2/s\n",
-               L0.x(), L0.y(), L0.z(), L1.x(), L1.y(), L1.z());
-    for (std::size_t j = 0; j < jump.reaction_impulses.size(); ++j) {
-      const Vec3& F = jump.reaction_impulses[j].F_W;
-      const Vec3& M = jump.reaction_impulses[j].M_J_W;
-      fmt::print(
-          "                 reaction impulse at {}: [{:.6g}, {:.6g}, {:.6g}] N s, "
-          "[{:.6g}, {:.6g}, {:.6g}] N m s\n",
-          scenario.joints[j].name, F.x(), F.y(), F.z(), M.x(), M.y(), M.z());
-    }
+        "                 reaction impulse at {}: [{:.6g}, {:.6g}, {:.6g}] N s, "
+        "[{:.6g}, {:.6g}, {:.6g}] N m s\n",
+        scenario.joints[j].name, F.x(), F.y(), F.z(), M.x(), M.y(), M.z());
   }
 }
 
-void print_scenario_events(const Scenario& scenario, const SimulationResult& result) {
-  // The scenario's events: each occurrence (a condition that turns often is summarised).
+// The run's contact events, jumps and the scenario's own events, as one list in time order (at
+// one instant: the contact events, then the jumps, then the scenario's events, as the run met
+// them). The first contact events and scenario events are shown in full (a bouncing ball has
+// dozens); the rest are counted.
+void print_events_in_time_order(const Scenario& scenario, const SimulationResult& result) {
+  constexpr std::size_t kContactEventsShown = 24;
   constexpr std::size_t kUserEventsShown = 24;
+  const std::vector<ContactEventRecord>& contact = result.contact_events;
+  const std::vector<JumpRecord>& jumps = result.jumps;
   const std::vector<UserEventRecord>& occurred = result.user_events;
+  struct Line {
+    double t;
+    int source;  // 0 contact event, 1 jump, 2 the scenario's event
+    std::size_t index;
+  };
+  std::vector<Line> lines;
+  for (std::size_t i = 0; i < contact.size() && i < kContactEventsShown; ++i) {
+    lines.push_back({contact[i].t, 0, i});
+  }
+  for (std::size_t i = 0; i < jumps.size(); ++i) lines.push_back({jumps[i].t, 1, i});
   for (std::size_t i = 0; i < occurred.size() && i < kUserEventsShown; ++i) {
-    fmt::print("  t = {:<14.12g} event {}{}\n", occurred[i].t, occurred[i].name,
-               occurred[i].stopped ? ": the run stops here" : "");
+    lines.push_back({occurred[i].t, 2, i});
+  }
+  std::stable_sort(lines.begin(), lines.end(), [](const Line& a, const Line& b) {
+    return a.t < b.t || (a.t == b.t && a.source < b.source);
+  });
+  for (const Line& line : lines) {
+    if (line.source == 0) {
+      const ContactEventRecord& event = contact[line.index];
+      fmt::print("  t = {:<14.12g} {}: {}\n", event.t, scenario.contacts[event.contact].name,
+                 event.what);
+    } else if (line.source == 1) {
+      print_jump(scenario, jumps[line.index]);
+    } else {
+      const UserEventRecord& event = occurred[line.index];
+      fmt::print("  t = {:<14.12g} event {}{}\n", event.t, event.name,
+                 event.stopped ? ": the run stops here" : "");
+    }
+  }
+  if (contact.size() > kContactEventsShown) {
+    fmt::print(
+        "  ...            {} more contact events (the events CSV has them all); the last at "
+        "t = {:.12g}: {}: {}\n",
+        contact.size() - kContactEventsShown, contact.back().t,
+        scenario.contacts[contact.back().contact].name, contact.back().what);
   }
   if (occurred.size() > kUserEventsShown) {
     fmt::print("  ...            {} more events (the events CSV has them all)\n",
                occurred.size() - kUserEventsShown);
   }
+}
+
+}  // namespace
+
+void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
+                          const SimulationResult& result) {
+  if (simulation.formulation->keeps_work_ledger()) {
+    const std::vector<std::string> names = simulation.formulation->element_names();
+    const ConservationReport& c = result.conservation;
+    fmt::print(
+        "  work-energy    max |KE - KE0 - W| {:.3e} J ({:.1e} of the largest KE; W: the "
+        "work of gravity and of every element)\n",
+        c.max_work_energy_residual,
+        c.max_kinetic_energy > 0.0 ? c.max_work_energy_residual / c.max_kinetic_energy : 0.0);
+    const std::vector<ElementWork>& works = result.last_extras.elements;
+    for (std::size_t i = 0; i < names.size() && i < works.size(); ++i) {
+      fmt::print("  work           {}: {:.6g} J\n", names[i], works[i].work);
+    }
+  }
+  print_events_in_time_order(scenario, result);
+}
+
+void print_scenario_events(const Scenario& scenario, const SimulationResult& result) {
+  // The scenario's events that did not happen (those that did are in the summary's list).
+  const std::vector<UserEventRecord>& occurred = result.user_events;
   for (const UserEventSpec& event : scenario.events) {
     const bool happened =
         std::any_of(occurred.begin(), occurred.end(),

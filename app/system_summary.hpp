@@ -20,9 +20,11 @@ inline constexpr double kWorklessFactor = 10.0;
 // locks and springs between bodies are internal.
 bool external_moments_act(const Scenario& scenario);
 
+// The work-energy check and each element's work (where the formulation keeps the ledger), then
+// the run's contact events, jumps and occurrences of the scenario's `events:` in time order.
 void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                           const SimulationResult& result);
-// Each occurrence of the scenario's `events:`, and those that never happened.
+// The scenario's `events:` that never happened.
 void print_scenario_events(const Scenario& scenario, const SimulationResult& result);
 
 }  // namespace tumble::cli

@@ -477,6 +477,30 @@ TEST(Cli, TheEventsCsvHasEachJumpsReactionImpulses) {
   EXPECT_NEAR(std::stod(jump[column_of(header, "KE_after")]), KE_after, 1e-9 * KE_after);
 }
 
+// The summary listed the contact events, then the jumps, then the scenario's events, each in its
+// own order: a student reading it saw the blow after what it caused. Now one list in time order:
+// the bat's swing past 0.05 s, the blow at 0.1 s, the swing past 0.2 s.
+TEST(Cli, TheSummaryListsEventsAndJumpsInTimeOrder) {
+  const fs::path dir = fresh_dir("time_order");
+  std::string text = slurp(example("bat_struck.yaml"));
+  const std::string simulate = "simulate:";
+  ASSERT_NE(text.find(simulate), std::string::npos);
+  text.insert(text.find(simulate),
+              "events:\n  - {name: late, when: t > 0.2}\n  - {name: early, when: t > 0.05}\n");
+  const fs::path p = write_file(dir, "bat_events.yaml", text);
+  const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::size_t early = r.out.find("t = 0.05 "), blow = r.out.find("t = 0.1 "),
+                    late = r.out.find("t = 0.2 ");
+  ASSERT_NE(early, std::string::npos) << r.out;
+  ASSERT_NE(blow, std::string::npos) << r.out;
+  ASSERT_NE(late, std::string::npos) << r.out;
+  EXPECT_LT(early, blow) << r.out;
+  EXPECT_LT(blow, late) << r.out;
+  EXPECT_NE(r.out.find("t = 0.05           event early"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("t = 0.1            impulse ball"), std::string::npos) << r.out;
+}
+
 TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
   // Three bodies rolling down a ramp without slip: friction acts but does no work (equations.md,
   // rolling), so E is conserved; the backspin disk slides first, and its friction does work.

@@ -66,6 +66,10 @@ TEST(Expression, ReservedAndInvalidNamesCannotBeDefined) {
   };
   EXPECT_NE(message_of("pi").find("'pi' is reserved"), std::string::npos);
   EXPECT_NE(message_of("deg").find("'deg' is reserved"), std::string::npos);
+  // The restitution's usual letter: the message says why it is taken and what to use instead.
+  EXPECT_NE(message_of("e").find("'e' is reserved: pi and e are the constants"), std::string::npos);
+  EXPECT_NE(message_of("e").find("(a coefficient of restitution, say, as e_r or cor)"),
+            std::string::npos);
   EXPECT_NE(message_of("sqrt").find("'sqrt' is a function"), std::string::npos);
   EXPECT_NE(message_of("2x").find("'2x' is not a valid parameter name"), std::string::npos);
   EXPECT_NE(message_of("a b").find("not a valid parameter name"), std::string::npos);

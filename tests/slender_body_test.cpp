@@ -13,11 +13,14 @@
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
+#include <complex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "modes_checks.hpp"
 #include "scenario_run.hpp"
 
 namespace tumble {
@@ -75,6 +78,80 @@ simulate: {{duration: {}, integrator: dop853, rtol: {}, atol: {}, output_every: 
   EXPECT_NEAR(fine.period, T, 1e-10 * T);
   EXPECT_LT(coarse.worst, 1e-4);
   EXPECT_LT(fine.worst, coarse.worst / 30);
+}
+
+// A double pendulum of two equal point masses on massless links of equal length l: its normal
+// modes have omega^2 = (g/l)(2 -+ sqrt 2), the lower link's angle from the vertical sqrt 2 and
+// -sqrt 2 times the upper's (e.g. Goldstein, Classical Mechanics, 3rd ed., section 6.4). It was
+// refused: the lower hinge sits on the upper bob, and was counted against it, though it turns
+// only the lower one. Only the joint that moves a body is.
+TEST(SlenderBody, ADoublePendulumOfPointsHasTheClassicNormalModes) {
+  const double l = 0.7, m = 1.3;
+  const Scenario scenario = test::load_inline_scenario(fmt::format(R"(tumble: 1
+gravity: [0, 0, -{}]
+bodies:
+  bob1: {{shape: point, mass: {}, position: [0, 0, -{}]}}
+  bob2: {{shape: point, mass: {}, position: [0, 0, -{}]}}
+joints:
+  upper: {{type: hinge, body: bob1, at: [0, 0, 0], axis: [0, 1, 0]}}
+  lower: {{type: hinge, bodies: [bob1, bob2], at: [0, 0, -{}], axis: [0, 1, 0]}}
+simulate: {{duration: 1}}
+)",
+                                                                   kG, m, l, m, 2 * l, l),
+                                                       "double_pendulum_of_points");
+  const ScenarioModes modes = modes_of_scenario(scenario);
+  ASSERT_EQ(modes.analysis.modes.size(), 2U);
+  for (const auto& [index, sign] : {std::pair{0, -1.0}, std::pair{1, +1.0}}) {
+    const Mode& mode = modes.analysis.modes[static_cast<std::size_t>(index)];
+    const double omega = std::sqrt(kG / l * (2 + sign * std::sqrt(2.0)));
+    EXPECT_NEAR(mode.natural_frequency, omega, 1e-12 * omega);
+    // The coordinates are the upper hinge's angle and the lower's relative to the upper link:
+    // theta2 / theta1 = shape(1) / shape(0) + 1 = -+ sqrt 2.
+    const std::complex<double> ratio = mode.shape(1) / mode.shape(0) + 1.0;
+    EXPECT_NEAR(ratio.real(), -sign * std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(ratio.imag(), 0.0, 1e-12);
+  }
+}
+
+// A chain of ten point masses on massless links, released from the horizontal: it runs, the
+// links keep their lengths, and the energy stays what it was (nothing but gravity does work) to
+// the tolerance asked for.
+TEST(SlenderBody, AChainOfTenPointsOnHingesConservesItsEnergy) {
+  const double l = 0.3, rtol = 1e-10;
+  std::string yaml = fmt::format("tumble: 1\ngravity: [0, 0, -{}]\nbodies:\n", kG);
+  std::string joints = "joints:\n";
+  for (int i = 1; i <= 10; ++i) {
+    yaml += fmt::format("  p{}: {{shape: point, mass: 0.5, position: [{}, 0, 0]}}\n", i, i * l);
+    joints +=
+        fmt::format("  j{}: {{type: hinge, bodies: [{}, p{}], at: [{}, 0, 0], axis: [0, 1, 0]}}\n",
+                    i, i == 1 ? std::string("ground") : fmt::format("p{}", i - 1), i, (i - 1) * l);
+  }
+  const auto run = test::run_inline_scenario(
+      yaml + joints +
+          fmt::format("simulate: {{duration: 2, integrator: dop853, rtol: {}, atol: {}, "
+                      "output_every: 0.01}}\n",
+                      rtol, rtol * 1e-2),
+      "chain_of_points");
+  ASSERT_EQ(run.rows.size(), 201U);
+  const double E0 = run.rows.front().quantities.total_energy;
+  // The scale of E: the largest kinetic energy, about the potential energy released (J).
+  double largest_ke = 0.0;
+  for (const Row& row : run.rows) {
+    largest_ke = std::max(largest_ke, row.quantities.kinetic_energy);
+  }
+  ASSERT_GT(largest_ke, 1.0);
+  // Each accepted step's error is held to rtol of the state (atol is a hundredth of it), so the
+  // energy can drift by about rtol of its scale a step, at most: the bound is the steps' sum.
+  const auto steps = static_cast<double>(run.result.report.stats.accepted_steps);
+  for (const Row& row : run.rows) {
+    EXPECT_NEAR(row.quantities.total_energy, E0, steps * rtol * largest_ke) << "t " << row.t;
+    for (int i = 1; i < 10; ++i) {
+      const double link = (row.states[static_cast<std::size_t>(i)].r_G -
+                           row.states[static_cast<std::size_t>(i - 1)].r_G)
+                              .norm();
+      EXPECT_NEAR(link, l, 1e-12) << "link " << i << " at t " << row.t;
+    }
+  }
 }
 
 TEST(SlenderBody, ARodOnAHingeWithATorsionalSpringSwingsAtTheMastsFrequency) {

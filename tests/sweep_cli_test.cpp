@@ -2,6 +2,7 @@
 // and each bad argument refused with its exit status and its name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -245,6 +246,35 @@ TEST(SweepCommand, AnOutThatCannotBeWrittenIsRefusedBeforeTheRuns) {
   EXPECT_EQ(result.status, 5) << result.out;
   EXPECT_EQ(result.out, "tumble sweep: --out " + file + "/sub: cannot create the directory " +
                             file + "/sub: Not a directory\n");
+}
+
+// sweep.csv was written once every run was done: a sweep killed part way left nothing (hours of
+// a real study). Now it is in place with its header before the first run and each row is added
+// as it and the runs before it finish: killed (SIGKILL, so nothing of tumble's runs after it) 2 s
+// into twenty thousand runs, it leaves a valid sweep.csv of its first runs, in order.
+TEST(SweepCommand, ASweepKilledPartWayLeavesTheRowsItFinished) {
+  const auto dir = test::fresh_test_dir("SweepCommand", "killed");
+  const auto result =
+      run_tumble("sweep " + kExamples +
+                     "sweeps/prism_flip_time.yaml --vary decades=2:8:20000 --record "
+                     "'flip=first(prism.w3 < 0)' --threads 2 --out " +
+                     dir.string(),
+                 "timeout -s KILL 2 ");
+  ASSERT_EQ(result.status, 137) << "not killed: " << result.out;  // timeout: 128 + SIGKILL
+  std::ifstream in(dir / "sweep.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  EXPECT_EQ(line, "run,decades,status,steps,E_drift,L_drift,flip,message");
+  long rows = 0;
+  while (std::getline(in, line)) {
+    EXPECT_EQ(line.rfind(std::to_string(rows) + ",", 0), 0u) << "row " << rows << ": " << line;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 7) << line;
+    EXPECT_NE(line.find(",ok,"), std::string::npos) << line;
+    ++rows;
+  }
+  EXPECT_TRUE(in.eof());
+  EXPECT_GE(rows, 1);
+  EXPECT_LT(rows, 20000);
 }
 
 TEST(FindCommand, PrintsTheBracketAndTheRuns) {

@@ -7,6 +7,8 @@
 // same events.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <string>
 
@@ -76,6 +78,44 @@ TEST(UserEvents, AnExpressionsCrossingsCountInTheirDirection) {
   EXPECT_EQ(run.result.user_events[1].t, run.result.user_events[0].t);
   EXPECT_FALSE(run.result.user_events[0].stopped);
   EXPECT_EQ(run.result.report.t_reached, 2.0);
+}
+
+// A condition whose zero falls exactly on a step's end: `t > 10` with rk4 steps of 0.25 was
+// reported at 9.75, where it is false (the bracketing took g = 0 at the step's end for the side g
+// came from); `t >= 2` with `stop: true` and duration 2 ended the run short of 2 (1.99 with
+// dopri5). Each is at its instant exactly, and the stopped run ends at its duration.
+TEST(UserEvents, AnEventAtAStepsEndIsAtItsInstantExactly) {
+  const std::string fixed = R"(tumble: 1
+gravity: [0, 0, 0]
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: 1, velocity: [1, 0, 0]}
+events:
+  - {name: ten, when: t > 10}
+simulate: {duration: 12, integrator: rk4, step: 0.25}
+)";
+  const test::ScenarioRun stepped = test::run_inline_scenario(fixed, "at_step_end");
+  ASSERT_EQ(stepped.result.user_events.size(), 1u);
+  EXPECT_EQ(stepped.result.user_events[0].t, 10.0);
+  for (const char* integrator : {"dopri5", "dop853"}) {
+    const test::ScenarioRun stopped =
+        test::run_inline_scenario(fmt::format(R"(tumble: 1
+gravity: [0, 0, -9.81]
+bodies:
+  ball: {{shape: sphere, radius: 0.1, mass: 1, velocity: [1, 0, 5]}}
+events:
+  - {{name: end, when: t >= 2, stop: true}}
+simulate: {{duration: 2, integrator: {}, output_every: 0.1}}
+)",
+                                              integrator),
+                                  std::string("stop_at_end_") + integrator);
+    ASSERT_EQ(stopped.result.user_events.size(), 1u) << integrator;
+    EXPECT_EQ(stopped.result.user_events[0].t, 2.0) << integrator;
+    EXPECT_TRUE(stopped.result.user_events[0].stopped) << integrator;
+    EXPECT_EQ(stopped.result.report.t_reached, 2.0) << integrator;
+    // The schedule's rows, 0 to 2 s, once each: the one at the event is the last.
+    ASSERT_EQ(stopped.rows.size(), 21u) << integrator;
+    EXPECT_EQ(stopped.rows.back().t, 2.0) << integrator;
+  }
 }
 
 // The chapter's prism (examples/sweeps/prism_flip_time.yaml at its tilt of 0.01 rad/s, dop853 at

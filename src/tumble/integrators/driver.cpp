@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -32,15 +33,22 @@ class OutputClock {
   OutputClock(double t0, double t_end, double every, long next_row)
       : t0_(t0), t_end_(t_end), every_(every), k_(next_row) {}
   bool every_step() const { return every_ <= 0.0; }
-  double next() const {
-    const double t = t0_ + static_cast<double>(k_) * every_;
-    // A row within round-off of the end is the end row.
-    return t > t_end_ - 1e-12 * std::max(1.0, std::abs(t_end_)) ? t_end_ : t;
+  double next() const { return row_time(k_); }
+  // The time of the row before the next (none: every step makes a row, or none was made yet).
+  std::optional<double> previous() const {
+    if (every_step() || k_ < 1) return std::nullopt;
+    return row_time(k_ - 1);
   }
   void advance() { ++k_; }
   long next_row() const { return k_; }
 
  private:
+  double row_time(long k) const {
+    const double t = t0_ + static_cast<double>(k) * every_;
+    // A row within round-off of the end is the end row.
+    return t > t_end_ - 1e-12 * std::max(1.0, std::abs(t_end_)) ? t_end_ : t;
+  }
+
   double t0_, t_end_, every_;
   long k_;
 };
@@ -95,6 +103,9 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
     const auto ki = static_cast<Eigen::Index>(k);
     double a = integrator.t_previous(), b = integrator.t();
     double ga = g_before(ki), gb = g_after(ki);
+    // A zero at the step's end is the root itself (`t > 10` on a step that lands on 10, a stop at
+    // t >= duration): the bracketing below would take it for the side that g comes from.
+    if (gb == 0.0) return b;
     int last_side = 0;  // +1: the last probe replaced b; -1: it replaced a
     for (int iteration = 0; iteration < 200; ++iteration) {
       const double width_floor =
@@ -202,7 +213,8 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
         ++handled;
         if (action == EventAction::Record) continue;
         if (action == EventAction::Stop) {
-          observe(t_first, y_event);
+          // The run ends with a row at the event, unless the schedule's row fell there.
+          if (clock.previous() != t_first) observe(t_first, y_event);
           report.t_reached = t_first;
           stopped = true;
           stopped_by_event = true;

@@ -231,7 +231,8 @@ std::vector<BodySpec> read_bodies(const Reader& reader, const Field& field,
 }
 
 void check_slender_bodies(const Scenario& scenario) {
-  const std::set<std::string> held = held_bodies(scenario, scenario.contacts);
+  const std::unordered_map<std::string, std::size_t> inboard =
+      inboard_joints(scenario, scenario.contacts);
   for (const BodySpec& body : scenario.bodies) {
     if (!body.slender) continue;
     const MassProperties& mp = body.mass_properties;
@@ -243,7 +244,8 @@ void check_slender_bodies(const Scenario& scenario) {
     const auto fail = [&](const std::string& why) {
       throw ScenarioError(body.slender_where, body.slender_key, what + ": " + why);
     };
-    if (held.count(body.name) == 0) {
+    const auto holder = inboard.find(body.name);
+    if (holder == inboard.end()) {
       fail(std::string("free, nothing would say how it turns about ") +
            (point ? "its COM" : "that line") +
            "; hold it with a hinge across it (away from a point), a slider or a weld, or give "
@@ -251,48 +253,48 @@ void check_slender_bodies(const Scenario& scenario) {
     }
     const Mat3 I_G_W = body.R_WB * mp.inertia_about_com * body.R_WB.transpose();
     const Vec3 r_G_W = body.position_W + body.R_WB * mp.com;
-    for (const JointSpec& joint : scenario.joints) {
-      if (joint.body_a != body.name && joint.body_b != body.name) continue;
-      if (joint.type == JointType::Ball && point) {
-        // A point away from its pivot: turning about the line through both moves no mass, so
-        // its motion is the point's (the spherical pendulum), whatever that turn does.
-        const double reach = (r_G_W - joint.at_W).norm();
-        if (!(reach > 1e-9 * std::max(1.0, joint.at_W.norm()))) {
-          fail(
-              fmt::format("it sits on the ball joint '{}': nothing holds it away from the "
-                          "pivot, so it cannot swing; put the pivot away from it",
-                          joint.name));
-        }
-        continue;
-      }
-      if (joint.type == JointType::Ball || joint.type == JointType::Free) {
+    // Only the joint that moves it: the joints it carries move the bodies beyond it (the lower
+    // hinge of a double pendulum of points sits on the upper bob and turns the lower one).
+    const JointSpec& joint = scenario.joints[holder->second];
+    if (joint.type == JointType::Ball && point) {
+      // A point away from its pivot: turning about the line through both moves no mass, so
+      // its motion is the point's (the spherical pendulum), whatever that turn does.
+      const double reach = (r_G_W - joint.at_W).norm();
+      if (!(reach > 1e-9 * std::max(1.0, joint.at_W.norm()))) {
         fail(
-            fmt::format("on the ball joint '{}' it could turn about the line from the pivot "
-                        "through it with nothing to say how; hinge it, or give `inertia:`",
+            fmt::format("it sits on the ball joint '{}': nothing holds it away from the "
+                        "pivot, so it cannot swing; put the pivot away from it",
                         joint.name));
       }
-      // The axes the joint turns it about: a hinge's or a cylindrical joint's one, a universal
-      // joint's two (the first as it is at t = 0).
-      std::vector<Vec3> axes;
-      if (joint.type == JointType::Hinge || joint.type == JointType::Cylindrical) {
-        axes = {joint.axis_W};
-      } else if (joint.type == JointType::Universal) {
-        axes = {joint.first_axis_W, joint.axis_W};
-      }
-      for (const Vec3& n : axes) {
-        // Its inertia about the axis n through the joint point: n.I_G.n + m |n x d|^2.
-        const Vec3 d = r_G_W - joint.at_W;
-        const double about_axis = n.dot(I_G_W * n) + mp.mass * n.cross(d).squaredNorm();
-        const double scale = I_G_W.trace() / 2.0 + mp.mass * d.squaredNorm();
-        if (!(about_axis > 1e-9 * scale)) {
-          fail(fmt::format(
-              "the {} '{}' turns it about an axis it has no inertia about (along it, through "
-              "it), so nothing says how fast; hinge it across that line, or give `inertia:`",
-              joint.type == JointType::Hinge
-                  ? "hinge"
-                  : std::string(joint_kind(joint.type).type_name()) + " joint",
-              joint.name));
-        }
+      continue;
+    }
+    if (joint.type == JointType::Ball || joint.type == JointType::Free) {
+      fail(
+          fmt::format("on the ball joint '{}' it could turn about the line from the pivot "
+                      "through it with nothing to say how; hinge it, or give `inertia:`",
+                      joint.name));
+    }
+    // The axes the joint turns it about: a hinge's or a cylindrical joint's one, a universal
+    // joint's two (the first as it is at t = 0).
+    std::vector<Vec3> axes;
+    if (joint.type == JointType::Hinge || joint.type == JointType::Cylindrical) {
+      axes = {joint.axis_W};
+    } else if (joint.type == JointType::Universal) {
+      axes = {joint.first_axis_W, joint.axis_W};
+    }
+    for (const Vec3& n : axes) {
+      // Its inertia about the axis n through the joint point: n.I_G.n + m |n x d|^2.
+      const Vec3 d = r_G_W - joint.at_W;
+      const double about_axis = n.dot(I_G_W * n) + mp.mass * n.cross(d).squaredNorm();
+      const double scale = I_G_W.trace() / 2.0 + mp.mass * d.squaredNorm();
+      if (!(about_axis > 1e-9 * scale)) {
+        fail(fmt::format(
+            "the {} '{}' turns it about an axis it has no inertia about (along it, through "
+            "it), so nothing says how fast; hinge it across that line, or give `inertia:`",
+            joint.type == JointType::Hinge
+                ? "hinge"
+                : std::string(joint_kind(joint.type).type_name()) + " joint",
+            joint.name));
       }
     }
   }

@@ -5,8 +5,11 @@
 // for now.
 #include <fmt/format.h>
 #include <algorithm>
+#include <deque>
 #include <map>
 #include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "tumble/scenario/readers.hpp"
 
@@ -67,26 +70,57 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
 
 }  // namespace
 
-std::set<std::string> held_bodies(const Scenario& scenario,
-                                  const std::vector<ContactSpec>& contacts) {
+std::unordered_map<std::string, std::size_t> inboard_joints(
+    const Scenario& scenario, const std::vector<ContactSpec>& contacts) {
   BodyGroups groups;
-  for (const JointSpec& joint : scenario.joints) groups.join(joint.body_a, joint.body_b);
-  const auto root = [&](const std::string& name) { return groups.root(name); };
-  std::set<std::string> touching;
+  std::unordered_map<std::string, std::vector<std::size_t>> joints_at;
+  for (std::size_t j = 0; j < scenario.joints.size(); ++j) {
+    const JointSpec& joint = scenario.joints[j];
+    groups.join(joint.body_a, joint.body_b);
+    joints_at[joint.body_a].push_back(j);
+    joints_at[joint.body_b].push_back(j);
+  }
+  // Each group's root: ground for the bodies joined to it, else the group's first body that
+  // touches a plane, else its first body.
+  std::unordered_set<std::string> touching;
   for (const ContactSpec& contact : contacts) touching.insert(contact.body);
-  std::map<std::string, std::string> group_root;  // group -> the body the tree hangs it from
+  const std::string ground_group = groups.root(kGroundName);
+  std::unordered_map<std::string, std::string> group_root = {{ground_group, kGroundName}};
   for (int pass = 0; pass < 2; ++pass) {
     for (const BodySpec& body : scenario.bodies) {
       if (pass == 0 && touching.count(body.name) == 0) continue;
-      group_root.emplace(root(body.name), body.name);
+      group_root.emplace(groups.root(body.name), body.name);
     }
   }
-  std::set<std::string> held;
-  const std::string ground = root(kGroundName);
-  for (const BodySpec& body : scenario.bodies) {
-    const std::string group = root(body.name);
-    if (group == ground || group_root[group] != body.name) held.insert(body.name);
+  // Out from each root through the joints: each body reached is held by the joint it is reached
+  // through (the joints form a tree, so there is one).
+  std::unordered_map<std::string, std::size_t> inboard;
+  std::vector<char> used(scenario.joints.size(), 0);
+  std::deque<std::string> frontier;
+  for (const auto& [group, root] : group_root) {
+    frontier.push_back(root);
+    while (!frontier.empty()) {
+      const std::string body = frontier.front();
+      frontier.pop_front();
+      const auto at = joints_at.find(body);
+      if (at == joints_at.end()) continue;
+      for (const std::size_t j : at->second) {
+        if (used[j] != 0) continue;
+        used[j] = 1;
+        const JointSpec& joint = scenario.joints[j];
+        const std::string& other = joint.body_a == body ? joint.body_b : joint.body_a;
+        inboard.emplace(other, j);
+        frontier.push_back(other);
+      }
+    }
   }
+  return inboard;
+}
+
+std::set<std::string> held_bodies(const Scenario& scenario,
+                                  const std::vector<ContactSpec>& contacts) {
+  std::set<std::string> held;
+  for (const auto& [body, joint] : inboard_joints(scenario, contacts)) held.insert(body);
   return held;
 }
 

@@ -176,10 +176,14 @@ void ExpressionEvaluator::define(const std::string& name, double value) {
                           "");
   }
   if (name == "pi" || name == "e" || is_unit(name)) {
-    throw ExpressionError("'" + name +
-                              "' is reserved (the constants pi and e, the units deg, rpm, cm, mm, "
-                              "ms); rename the parameter",
-                          "");
+    // Every expression of the scenario may use these, so a parameter cannot take their names.
+    throw ExpressionError(
+        "'" + name +
+            "' is reserved: pi and e are the constants 3.14159... and 2.71828... (Euler's "
+            "number) every expression may use, and deg, rpm, cm, mm, ms are units written after "
+            "a number; rename the parameter" +
+            (name == "e" ? " (a coefficient of restitution, say, as e_r or cor)" : ""),
+        "");
   }
   const mu::funmap_type& functions = language_functions();
   if (functions.find(name) != functions.end()) {

@@ -56,6 +56,10 @@ void read_forces(const Reader& reader, const Field& field, Scenario& scenario);
 // body that touches a plane, else its first body) (contacts_reader.cpp).
 std::set<std::string> held_bodies(const Scenario& scenario,
                                   const std::vector<ContactSpec>& contacts);
+// The joint that holds each held body in that tree, by the body's name: its inboard joint, the
+// one that moves it relative to its parent (an index into scenario.joints).
+std::unordered_map<std::string, std::size_t> inboard_joints(
+    const Scenario& scenario, const std::vector<ContactSpec>& contacts);
 // Each slender body (BodySpec::slender) is held (held_bodies), and every joint that holds it lets
 // it turn only about axes it has inertia about: a hinge whose axis gives it n.I_G.n + m |n x d|^2
 // > 0 (d from the joint point to its COM), a slider, or a weld; not a ball joint. Throws

@@ -118,6 +118,22 @@ simulate: {{duration: 2, integrator: {}, output_every: 0.1}}
   }
 }
 
+// A condition that a jump makes true: the bat, at rest, is struck at t = 0.1 (its angular
+// velocity jumps from 0 to -P d / I_O about y), so `bat.wy < -0.1` turns true at the blow. The
+// steps after it saw it already true: the event was not reported at the blow, only (wrongly) at
+// the next swing. It is at the blow's instant exactly, and once.
+TEST(UserEvents, AConditionAJumpMakesTrueIsAtTheJump) {
+  std::string text = test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/bat_struck.yaml");
+  const std::string simulate = "simulate:";
+  ASSERT_NE(text.find(simulate), std::string::npos);
+  text.insert(text.find(simulate), "events:\n  - {name: struck, when: bat.wy < -0.1}\n");
+  text.replace(text.find("duration: 2"), std::string("duration: 2").size(), "duration: 0.3");
+  const test::ScenarioRun run = test::run_inline_scenario(text, "struck");
+  ASSERT_EQ(run.result.user_events.size(), 1u);
+  EXPECT_EQ(run.result.user_events[0].name, "struck");
+  EXPECT_EQ(run.result.user_events[0].t, 0.1);
+}
+
 // The chapter's prism (examples/sweeps/prism_flip_time.yaml at its tilt of 0.01 rad/s, dop853 at
 // rtol 1e-12): the event `prism.w3 < 0` at the reference's 9.664094834075236 s. The event is
 // located on the integrator's continuous extension, whose error at rtol 1e-12, grown by

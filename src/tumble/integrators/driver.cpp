@@ -247,7 +247,29 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       system.at_breakpoint(t_stop, y_break);
       system.project(t_stop, y_break);
       integrator.restart(t_stop, y_break);
-      if (event_count > 0) system.event_functions(t_stop, integrator.y(), g_before);
+      if (event_count > 0) {
+        g_probe = g_before;  // just before the jump
+        system.event_functions(t_stop, integrator.y(), g_before);
+        // A condition the jump itself turns is at the jump's instant: the steps after it see it
+        // already turned, and would never report it.
+        for (std::size_t k = 0; k < event_count && !stopped; ++k) {
+          const auto ki = static_cast<Eigen::Index>(k);
+          if (!event_specs[k].across_jumps ||
+              !crosses(g_probe(ki), g_before(ki), event_specs[k].direction)) {
+            continue;
+          }
+          y_break = integrator.y();
+          const EventAction action = system.on_event(k, t_stop, y_break);
+          report.events.push_back({t_stop, k, action});
+          if (action == EventAction::Stop) {
+            observe(t_stop, integrator.y());
+            report.t_reached = t_stop;
+            stopped = true;
+            stopped_by_event = true;
+          }
+        }
+        if (stopped) break;
+      }
     }
 
     if (checkpoint_due && integrator.t() >= options.checkpoint_after) {

@@ -27,6 +27,10 @@ enum class EventAction {
 struct EventSpec {
   std::string name;
   EventDirection direction = EventDirection::Both;
+  // Also an event where its function changes sign across a breakpoint's jump (a condition on the
+  // state that an impulse makes true): it is then at the breakpoint's instant, after the jump.
+  // The scenario's events are; a contact's mode changes are the breakpoint's own business.
+  bool across_jumps = false;
 };
 
 class OdeSystem {

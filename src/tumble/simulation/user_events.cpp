@@ -20,7 +20,7 @@ UserEventSystem::UserEventSystem(Formulation& formulation,
     const UserEventSpec& event = definitions_->events[i];
     // A comparison's function is its margin, which crosses zero as the comparison turns.
     const std::optional<Comparison> comparison = split_comparison(event.when);
-    EventSpec spec{event.name, EventDirection::Both};
+    EventSpec spec{event.name, EventDirection::Both, true};
     if (comparison) {
       spec.direction = comparison->greater ? EventDirection::Rising : EventDirection::Falling;
     } else if (event.direction == UserEventSpec::Direction::Up) {

@@ -25,6 +25,7 @@ namespace {
 // Slip slower than this fraction of the contact's speed scale counts as none: events locate the
 // slip's zero to a few ulps of t, leaving ~1e-15 of the scale.
 constexpr double kSlipZero = 1e-9;
+
 // A slip that has grown is followed by its own direction down to this fraction of slip_zero
 // (still ~1e6 above the round-off of the velocities it is the difference of) while it keeps to
 // the way it went at the step's start (ContactSystem::slide_direction).
@@ -65,6 +66,17 @@ constexpr double kWorkRoundOff = 1e-12;
 
 const char* feature_name(int size) {
   return size == 1 ? "a vertex" : size == 2 ? "an edge" : "a face";
+}
+
+// A face's or an edge's support (N times the CoP's distance inside it) reaches zero where its
+// centre of pressure reaches a side (the body tips onto that side), or where N itself reaches
+// zero (it lifts off: a ladder's top leaving a frictionless wall). At the located zero of a
+// lift-off N is round-off, and its sign says nothing: deciding by it tipped the ladder onto a
+// vertex at N = +6e-13 N, and the vertex then pulled the ladder to the wall (N down to -197 N).
+// The plane still presses where N is above kSlipZero of the body's weight (of its mass times
+// 1 m/s^2 where gravity is weaker), the tolerance the contact's accelerations are held to.
+bool still_presses(double N, double mass, const Vec3& gravity_W) {
+  return N > kSlipZero * mass * std::max(gravity_W.norm(), 1.0);
 }
 
 }  // namespace
@@ -756,7 +768,8 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
         classify_contact(c, t, y);
         break;
       }
-      if (status.feature.size() >= 2 && d_.now[c].normal_force > 0.0) {
+      if (status.feature.size() >= 2 &&
+          still_presses(d_.now[c].normal_force, bodies_[contacts_[c].body].mass, gravity_W_)) {
         tip_onto_side(contacts_[c].surface.vertices, side, d_.now[c].n_B, status.feature);
         note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
         classify_contact(c, t, y);

@@ -163,6 +163,11 @@ int run_cli(int argc, const char* const* argv) {
                   "Simulation seconds per second of video (2: twice as fast as real time)")
       ->capture_default_str()
       ->needs(video);
+  run->add_option("--digits", run_args.digits,
+                  "Significant digits of the summary's values (energies, works, a jump's KE, "
+                  "L and reaction impulses), 1 to 17 (17: every double exactly)")
+      ->check(CLI::Range(1, 17))
+      ->capture_default_str();
 
   InertiaArguments inertia_args;
   CLI::App* inertia = app.add_subcommand(
@@ -182,6 +187,11 @@ int run_cli(int argc, const char* const* argv) {
                    "finite number")
       ->expected(3)
       ->check(finite_number("a finite number (m, world)", false));
+  inertia
+      ->add_option("--digits", inertia_args.digits,
+                   "Significant digits of the values, 1 to 17 (17: every double exactly)")
+      ->check(CLI::Range(1, 17))
+      ->capture_default_str();
 
   SweepArguments sweep_args;
   CLI::App* sweep = app.add_subcommand(

@@ -17,12 +17,14 @@ struct RunArguments {
   std::string video_size = "1280x720";  // WIDTHxHEIGHT, pixels
   int video_fps = 30;                   // frames per second of video
   double video_speed = 1.0;             // simulation seconds per second of video
+  int digits = 10;                      // significant digits of the summary's values (1 to 17)
 };
 
 struct InertiaArguments {
   std::string scenario;
   std::string body;           // empty: every body
   std::vector<double> about;  // a world point at t = 0 (3 numbers), or empty
+  int digits = 10;            // significant digits of the values (1 to 17)
 };
 
 // tumble modes: the linearisation about the initial state (docs/modes.md).

@@ -48,7 +48,7 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
                    const SimulationResult& result, const std::filesystem::path& trajectory,
                    const std::optional<std::filesystem::path>& events,
                    const std::optional<std::filesystem::path>& animation,
-                   const std::optional<std::string>& video) {
+                   const std::optional<std::string>& video, int digits) {
   const SimulateSpec& sim = scenario.simulate;
   const IntegratorStats& stats = result.report.stats;
   fmt::print("{} ({})\n", scenario.name, scenario.file);
@@ -71,9 +71,9 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   const std::string energy_drift =
       c.energy_scale() > 0.0
           ? fmt::format(
-                "max |E - E0| {:.3e} J, {:.3e} of its scale {:.6g} J (the larger of |E0| "
+                "max |E - E0| {:.3e} J, {:.3e} of its scale {:.{}g} J (the larger of |E0| "
                 "and the largest KE)",
-                c.max_energy_change, c.scaled_energy_drift(), c.energy_scale())
+                c.max_energy_change, c.scaled_energy_drift(), c.energy_scale(), digits)
           : fmt::format("max |E - E0| {:.3e} J (no motion)", c.max_energy_change);
   const std::string momentum_drift =
       c.angular_momentum_scale() > 0.0
@@ -98,7 +98,7 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   fmt::print("  |L| (origin)   {}{}\n", momentum_drift,
              external_moments_act(scenario) ? " (external moments act: |L| is not conserved)" : "");
   fmt::print("  |R^T R - I|    max {:.3e}\n", result.conservation.max_orthonormality_error);
-  print_system_summary(scenario, simulation, result);
+  print_system_summary(scenario, simulation, result, digits);
   print_scenario_events(scenario, result);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,
              result.report.t_reached);
@@ -270,7 +270,8 @@ int run_command(const RunArguments& args) {
       video_failure = fmt::format("no video written to {}: {}", video->path.string(), e.what());
     }
   }
-  print_summary(scenario, *simulation, result, trajectory, events, animation, video_line);
+  print_summary(scenario, *simulation, result, trajectory, events, animation, video_line,
+                args.digits);
   if (video_status != kDone) {
     fmt::print(stderr, "tumble run: {}\n", video_failure);
     return video_status;

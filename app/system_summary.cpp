@@ -51,20 +51,22 @@ bool external_moments_act(const Scenario& scenario) {
 namespace {
 
 // A jump at a breakpoint: its KE and L before and after, and each joint's reaction impulse.
-void print_jump(const Scenario& scenario, const JumpRecord& jump) {
-  fmt::print("  t = {:<14.12g} {}: KE {:.6g} -> {:.6g} J", jump.t, jump.what,
-             jump.kinetic_energy_before, jump.kinetic_energy_after);
+void print_jump(const Scenario& scenario, const JumpRecord& jump, int digits) {
+  fmt::print("  t = {:<14.12g} {}: KE {:.{}g} -> {:.{}g} J", jump.t, jump.what,
+             jump.kinetic_energy_before, digits, jump.kinetic_energy_after, digits);
   const Vec3& L0 = jump.angular_momentum_before_W;
   const Vec3& L1 = jump.angular_momentum_after_W;
-  fmt::print("; L (origin) [{:.6g}, {:.6g}, {:.6g}] -> [{:.6g}, {:.6g}, {:.6g}] kg m^2/s\n", L0.x(),
-             L0.y(), L0.z(), L1.x(), L1.y(), L1.z());
+  fmt::print("; L (origin) [{:.{}g}, {:.{}g}, {:.{}g}] -> [{:.{}g}, {:.{}g}, {:.{}g}] kg m^2/s\n",
+             L0.x(), digits, L0.y(), digits, L0.z(), digits, L1.x(), digits, L1.y(), digits, L1.z(),
+             digits);
   for (std::size_t j = 0; j < jump.reaction_impulses.size(); ++j) {
     const Vec3& F = jump.reaction_impulses[j].F_W;
     const Vec3& M = jump.reaction_impulses[j].M_J_W;
     fmt::print(
-        "                 reaction impulse at {}: [{:.6g}, {:.6g}, {:.6g}] N s, "
-        "[{:.6g}, {:.6g}, {:.6g}] N m s\n",
-        scenario.joints[j].name, F.x(), F.y(), F.z(), M.x(), M.y(), M.z());
+        "                 reaction impulse at {}: [{:.{}g}, {:.{}g}, {:.{}g}] N s, "
+        "[{:.{}g}, {:.{}g}, {:.{}g}] N m s\n",
+        scenario.joints[j].name, F.x(), digits, F.y(), digits, F.z(), digits, M.x(), digits, M.y(),
+        digits, M.z(), digits);
   }
 }
 
@@ -72,7 +74,8 @@ void print_jump(const Scenario& scenario, const JumpRecord& jump) {
 // one instant: the contact events, then the jumps, then the scenario's events, as the run met
 // them). The first contact events and scenario events are shown in full (a bouncing ball has
 // dozens); the rest are counted.
-void print_events_in_time_order(const Scenario& scenario, const SimulationResult& result) {
+void print_events_in_time_order(const Scenario& scenario, const SimulationResult& result,
+                                int digits) {
   constexpr std::size_t kContactEventsShown = 24;
   constexpr std::size_t kUserEventsShown = 24;
   const std::vector<ContactEventRecord>& contact = result.contact_events;
@@ -100,7 +103,7 @@ void print_events_in_time_order(const Scenario& scenario, const SimulationResult
       fmt::print("  t = {:<14.12g} {}: {}\n", event.t, scenario.contacts[event.contact].name,
                  event.what);
     } else if (line.source == 1) {
-      print_jump(scenario, jumps[line.index]);
+      print_jump(scenario, jumps[line.index], digits);
     } else {
       const UserEventRecord& event = occurred[line.index];
       fmt::print("  t = {:<14.12g} event {}{}\n", event.t, event.name,
@@ -123,7 +126,7 @@ void print_events_in_time_order(const Scenario& scenario, const SimulationResult
 }  // namespace
 
 void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
-                          const SimulationResult& result) {
+                          const SimulationResult& result, int digits) {
   if (simulation.formulation->keeps_work_ledger()) {
     const std::vector<std::string> names = simulation.formulation->element_names();
     const ConservationReport& c = result.conservation;
@@ -134,10 +137,10 @@ void print_system_summary(const Scenario& scenario, const PreparedSimulation& si
         c.max_kinetic_energy > 0.0 ? c.max_work_energy_residual / c.max_kinetic_energy : 0.0);
     const std::vector<ElementWork>& works = result.last_extras.elements;
     for (std::size_t i = 0; i < names.size() && i < works.size(); ++i) {
-      fmt::print("  work           {}: {:.6g} J\n", names[i], works[i].work);
+      fmt::print("  work           {}: {:.{}g} J\n", names[i], works[i].work, digits);
     }
   }
-  print_events_in_time_order(scenario, result);
+  print_events_in_time_order(scenario, result, digits);
 }
 
 void print_scenario_events(const Scenario& scenario, const SimulationResult& result) {

@@ -22,8 +22,9 @@ bool external_moments_act(const Scenario& scenario);
 
 // The work-energy check and each element's work (where the formulation keeps the ledger), then
 // the run's contact events, jumps and occurrences of the scenario's `events:` in time order.
+// Values to `digits` significant digits.
 void print_system_summary(const Scenario& scenario, const PreparedSimulation& simulation,
-                          const SimulationResult& result);
+                          const SimulationResult& result, int digits);
 // The scenario's `events:` that never happened.
 void print_scenario_events(const Scenario& scenario, const SimulationResult& result);
 

@@ -523,6 +523,35 @@ TEST(Cli, TheSummaryListsEventsAndJumpsInTimeOrder) {
   EXPECT_NE(r.out.find("t = 0.1            impulse ball"), std::string::npos) << r.out;
 }
 
+// The summary printed 6 digits (a jump's KE 1.66826 J) where students compare to 10: now 10 by
+// default, and --digits 17 gives every double exactly. The bat struck at its centre of
+// percussion (equations.md, 5) takes KE = (P d)^2 / (2 I_O) from the blow.
+TEST(Cli, TheSummaryHasTenDigitsAndSeventeenOnRequest) {
+  const double M = 0.9, length = 0.84, r = 0.03, L = length / 2, P = 1.5;
+  const double I_O = M * (3 * r * r + length * length) / 12 + M * L * L;
+  const double d = I_O / (M * L);
+  const double KE = (P * d) * (P * d) / (2 * I_O);
+  const fs::path dir = fresh_dir("digits");
+  const auto ke_after = [&](const std::string& flags) {
+    const CommandResult r_run =
+        run_tumble("run " + example("bat_struck.yaml") + " --out " + dir.string() + flags);
+    EXPECT_EQ(r_run.status, 0) << r_run.out;
+    const std::string arrow = "impulse ball: KE 0 -> ";
+    const std::size_t at = r_run.out.find(arrow);
+    if (at == std::string::npos) {
+      ADD_FAILURE() << r_run.out;
+      return std::string();
+    }
+    const std::size_t from = at + arrow.size();
+    return r_run.out.substr(from, r_run.out.find(' ', from) - from);
+  };
+  const std::string ten = ke_after(""), seventeen = ke_after(" --digits 17");
+  EXPECT_EQ(ten.size(), std::string("1.668261054").size()) << ten;
+  EXPECT_NEAR(std::stod(ten), KE, 5e-10 * KE);
+  EXPECT_NEAR(std::stod(seventeen), KE, 1e-14 * KE);
+  EXPECT_EQ(run_tumble("run " + example("bat_struck.yaml") + " --digits 18").status, 2);
+}
+
 TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
   // Three bodies rolling down a ramp without slip: friction acts but does no work (equations.md,
   // rolling), so E is conserved; the backspin disk slides first, and its friction does work.

@@ -48,9 +48,9 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   contact.plane_point_W =
       reader.point_or_vector(plane_map.require("point", "a point of the plane, m"));
   const Field normal = plane_map.require("normal", "out of the plane, towards the body");
-  const Vec3 n = reader.point_or_vector(normal);
-  if (!(n.norm() > 0.0)) reader.fail_at_value(normal, "the normal must not be zero");
-  contact.plane_normal_W = n.normalized();
+  const std::optional<Vec3> n = unit_direction(reader.point_or_vector(normal));
+  if (!n) reader.fail_at_value(normal, "the normal must not be zero");
+  contact.plane_normal_W = *n;
 
   const Field friction = map.require("friction", "Coulomb's mu >= 0; 0 is frictionless");
   contact.friction = reader.number(friction);

@@ -233,9 +233,9 @@ JointSpec read_joint(const Reader& reader, const Field& field,
               : joint.type == JointType::Prismatic
                   ? "the direction the slider moves along [x, y, z], world at t = 0"
                   : "the direction it turns about and slides along [x, y, z], world at t = 0");
-  const Vec3 axis = reader.point_or_vector(axis_field);
-  if (!(axis.norm() > 0.0)) reader.fail_at_value(axis_field, "the axis must not be zero");
-  joint.axis_W = axis.normalized();
+  const std::optional<Vec3> axis = unit_direction(reader.point_or_vector(axis_field));
+  if (!axis) reader.fail_at_value(axis_field, "the axis must not be zero");
+  joint.axis_W = *axis;
   return read_drive(reader, map, joint);
 }
 
@@ -253,9 +253,9 @@ JointSpec read_universal_axes(const Reader& reader, const MapReader& map, JointS
   }
   std::array<Vec3, 2> axes;
   for (std::size_t i = 0; i < 2; ++i) {
-    const Vec3 axis = reader.point_or_vector(items[i]);
-    if (!(axis.norm() > 0.0)) reader.fail_at_value(items[i], "an axis must not be zero");
-    axes[i] = axis.normalized();
+    const std::optional<Vec3> axis = unit_direction(reader.point_or_vector(items[i]));
+    if (!axis) reader.fail_at_value(items[i], "an axis must not be zero");
+    axes[i] = *axis;
   }
   // The cross holds its arms at right angles: two axes that are not would not stay joined.
   const double cosine = axes[0].dot(axes[1]);

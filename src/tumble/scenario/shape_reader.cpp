@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <system_error>
 
 #include "tumble/inertia/mesh.hpp"
@@ -332,14 +333,20 @@ Mat3 read_orientation(const Reader& reader, const Field& field) {
   if (axis_angle) {
     const Field axis_field = map.require("axis", "the unit-free direction [x, y, z] to turn about");
     const Field angle_field = map.require("angle", "rad, or degrees as '30 deg'");
-    const Vec3 axis = reader.vec3(axis_field);
+    const Vec3 given = reader.vec3(axis_field);
+    const std::optional<Vec3> axis = unit_direction(given);
     const double angle = reader.angle(angle_field);
-    if (!(axis.norm() > 0.0)) {
+    if (!axis) {
       reader.fail_at_value(axis_field,
                            "axis [0, 0, 0] has no direction; give a nonzero vector "
                            "(it need not be unit length)");
     }
-    return rotation_from_axis_angle(axis, angle);
+    // The axis as given where its norm is a number (rotation_from_axis_angle normalises it, and
+    // normalising twice could move the last bit); the scaled unit vector where it is not.
+    const double squared = given.squaredNorm();
+    const bool well_scaled =
+        std::isfinite(squared) && squared >= std::numeric_limits<double>::min();
+    return rotation_from_axis_angle(well_scaled ? given : *axis, angle);
   }
   if (first == "matrix") {
     const Field matrix_field = *map.find("matrix");
@@ -364,7 +371,13 @@ Mat3 read_orientation(const Reader& reader, const Field& field) {
   }
   const Field q_field = *map.find("quaternion");
   const std::vector<double> q = reader.numbers(q_field, 4, "[w, x, y, z]");
-  const Quat quaternion(q[0], q[1], q[2], q[3]);
+  // Scaled by its largest component where its norm would overflow or underflow.
+  const double largest = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
+  const double squared = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+  const double scale = std::isfinite(squared) && squared >= std::numeric_limits<double>::min()
+                           ? 1.0
+                           : (largest > 0.0 ? largest : 1.0);
+  const Quat quaternion(q[0] / scale, q[1] / scale, q[2] / scale, q[3] / scale);
   if (!(quaternion.norm() > 0.0)) {
     reader.fail_at_value(q_field,
                          "quaternion [0, 0, 0, 0] is no rotation; give a nonzero "

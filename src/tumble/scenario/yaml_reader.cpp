@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <limits>
 
 namespace tumble::scenario_reading {
 namespace {
@@ -94,6 +95,18 @@ std::string Field::key() const {
 
 std::string format_number(double value) {
   return fmt::format("{}", value);
+}
+
+std::optional<Vec3> unit_direction(const Vec3& v) {
+  const double largest = v.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) return std::nullopt;
+  // Scaled only where the square of the norm would overflow or underflow: otherwise the unit
+  // vector is v.normalized()'s, bit for bit, as it always was.
+  const double squared = v.squaredNorm();
+  if (std::isfinite(squared) && squared >= std::numeric_limits<double>::min()) {
+    return v.normalized();
+  }
+  return Vec3(v / largest).normalized();
 }
 
 std::string printable(std::string_view text) {

@@ -36,6 +36,9 @@ std::string format_number(double value);
 // The text with each control character (below 0x20, and 0x7F) written \xNN: text from a file, as
 // a message can show it on one clean line without acting on the terminal.
 std::string printable(std::string_view text);
+// The direction of v as a unit vector, v scaled by its largest component first: [0, 1e300,
+// 1e300] is (0, 1, 1) / sqrt(2), not an overflow to infinity; empty for a zero vector.
+std::optional<Vec3> unit_direction(const Vec3& v);
 // "a, b, c"
 std::string join(const std::vector<std::string>& words, std::string_view separator = ", ");
 // The candidate closest to `word` by edit distance, if it is close enough to be a likely typo.

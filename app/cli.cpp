@@ -238,6 +238,10 @@ int run_cli(int argc, const char* const* argv) {
       ->check(thread_count());
   sweep->add_option("--out", sweep_args.out_dir, "Directory for sweep.csv (created if missing)")
       ->capture_default_str();
+  sweep->add_flag("--resume", sweep_args.resume,
+                  "Go on from DIR/sweep.csv as a stopped sweep of the same scenario, --vary, "
+                  "--random, --seed and --record left it: its rows are kept, the rest are run "
+                  "(a file of another sweep is refused, exit 2)");
 
   FindArguments find_args;
   CLI::App* find = app.add_subcommand(

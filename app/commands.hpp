@@ -56,6 +56,7 @@ struct SweepArguments {
   std::vector<std::string> record;  // NAME=REDUCTION
   int threads = 0;                  // 0: every core (shared among mpirun's processes on it)
   std::string out_dir = ".";
+  bool resume = false;  // keep the rows a stopped sweep of the same points wrote, run the rest
 };
 
 // tumble find: where a yes/no outcome changes along one parameter.

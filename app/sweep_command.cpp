@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <optional>
+#include <span>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -45,6 +48,46 @@ class ProgressBar {
   bool terminal_;
   bool shown_ = false;
 };
+
+// The rows that a stopped sweep of these points wrote to `path` (--resume): its header must be
+// this sweep's, and its rows whole lines numbered from 0 in order, each with this sweep's values
+// of its point; a last line cut short is dropped. Returns how many there are, with their text in
+// `kept` and the count of those not ok in `not_ok`. None where there is no file. Throws
+// std::invalid_argument where the file is another sweep's.
+std::size_t resumed_rows(const std::filesystem::path& path, const SweepSpec& spec,
+                         std::span<const std::vector<double>> points, std::string& kept,
+                         std::size_t& not_ok) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return 0;
+  std::ostringstream whole;
+  whole << in.rdbuf();
+  const std::string text = whole.str();
+  const std::string header = sweep_csv_header(spec);
+  if (text.compare(0, header.size(), header) != 0) {
+    const std::string first = text.substr(0, text.find('\n'));
+    throw std::invalid_argument(fmt::format(
+        "--resume: {} is another sweep's (its header is '{}'; this sweep's is '{}'): resume with "
+        "the same --vary and --record, or give another --out",
+        path.string(), first, header.substr(0, header.size() - 1)));
+  }
+  std::size_t at = header.size(), rows = 0;
+  for (std::size_t end = text.find('\n', at); end != std::string::npos;
+       at = end + 1, end = text.find('\n', at)) {
+    const std::string_view line = std::string_view(text).substr(at, end - at);
+    const std::string point =
+        rows < points.size() ? sweep_csv_point(rows, points[rows]) : std::string();
+    if (point.empty() || line.substr(0, point.size()) != point) {
+      throw std::invalid_argument(fmt::format(
+          "--resume: {} is another sweep's: its row {} is not this sweep's run {} ('{}'): "
+          "resume with the same --vary, --random and --seed, or give another --out",
+          path.string(), rows + 1, rows, line.substr(0, 60)));
+    }
+    if (line.substr(point.size(), 3) != "ok,") ++not_ok;
+    ++rows;
+  }
+  kept = text.substr(header.size(), at - header.size());
+  return rows;
+}
 
 }  // namespace
 
@@ -91,8 +134,20 @@ int sweep_command(const SweepArguments& args) {
   // once, not after the runs. Every process checks (they see one file system), so that all stop
   // together. In one process the file is put in place with its header at once and each run's row
   // is added as it and every run before it finish: a sweep stopped at any point (Ctrl-C, a kill,
-  // a failure) leaves a valid sweep.csv of the runs so far, in order.
+  // a failure) leaves a valid sweep.csv of the runs so far, in order, which --resume goes on
+  // from.
   const std::filesystem::path path = std::filesystem::path(args.out_dir) / "sweep.csv";
+  std::string kept;       // --resume: the rows already there
+  std::size_t first = 0;  // the first run to do
+  std::size_t kept_not_ok = 0;
+  if (args.resume) {
+    try {
+      first = resumed_rows(path, spec, points, kept, kept_not_ok);
+    } catch (const std::invalid_argument& e) {
+      return bad_argument(e.what());
+    }
+  }
+  const std::span<const std::vector<double>> todo(points.data() + first, points.size() - first);
   std::optional<AtomicFile> file;
   try {
     std::error_code error;
@@ -104,6 +159,7 @@ int sweep_command(const SweepArguments& args) {
     file.emplace(path);  // destroyed unpublished: removed, and sweep.csv untouched
     if (lead) {
       file->write(sweep_csv_header(spec));
+      file->write(kept);
       if (processes.size() == 1) file->publish();
     }
   } catch (const std::exception& e) {
@@ -117,20 +173,20 @@ int sweep_command(const SweepArguments& args) {
   const auto size = static_cast<std::size_t>(processes.size());
   const auto rank = static_cast<std::size_t>(processes.rank());
   std::vector<std::vector<double>> mine;
-  for (std::size_t i = rank; i < points.size(); i += size) mine.push_back(points[i]);
+  for (std::size_t i = rank; i < todo.size(); i += size) mine.push_back(todo[i]);
   const int threads = args.threads > 0
                           ? args.threads
                           : std::clamp(static_cast<int>(std::thread::hardware_concurrency()) /
                                            std::max(1, processes.local_size()),
                                        1, kMaxSweepThreads);
   const auto start = std::chrono::steady_clock::now();
-  std::size_t not_ok = 0;
+  std::size_t not_ok = 0;  // of the runs done here
   const auto count = [&](const RunRecord& record) {
     if (record.status != RunStatus::Ok) ++not_ok;
   };
   // One process: each row to the file as it comes.
   const SweepRunsDone write_row = [&](std::size_t k, const RunRecord& record) {
-    file->write(sweep_csv_line(k, mine[k], record, spec.outcomes.size()));
+    file->write(sweep_csv_line(first + k, mine[k], record, spec.outcomes.size()));
     file->flush();
     count(record);
   };
@@ -156,7 +212,7 @@ int sweep_command(const SweepArguments& args) {
   } else {
     std::string lines;
     for (std::size_t k = 0; k < mine.size(); ++k) {
-      lines += sweep_csv_line(rank + k * size, mine[k], records[k], spec.outcomes.size());
+      lines += sweep_csv_line(first + rank + k * size, mine[k], records[k], spec.outcomes.size());
       count(records[k]);
     }
     // Each rank's lines are in its runs' order; run i is rank i mod size's next. The counts of
@@ -166,7 +222,7 @@ int sweep_command(const SweepArguments& args) {
     not_ok = 0;
     std::vector<std::size_t> at(texts.size(), 0);
     std::string csv;
-    for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t i = 0; i < todo.size(); ++i) {
       const std::size_t r = i % size;
       const std::size_t end = texts[r].find('\n', at[r]);
       csv += std::string_view(texts[r]).substr(at[r], end + 1 - at[r]);
@@ -183,16 +239,18 @@ int sweep_command(const SweepArguments& args) {
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  not_ok += kept_not_ok;
   fmt::print("sweep of {} over {}\n", args.scenario, fmt::join(spec.varied, ", "));
   fmt::print(
-      "  runs           {} ({}), {}\n", points.size(),
+      "  runs           {} ({}{}), {}\n", points.size(),
       args.random > 0 ? fmt::format("random points, seed {}", args.seed) : std::string("a grid"),
+      first > 0 ? fmt::format("; the first {} kept from sweep.csv", first) : std::string(),
       not_ok == 0 ? std::string("all ok")
                   : fmt::format("{} failed or invalid (see their status and message)", not_ok));
   fmt::print("  parallel       {} thread{} x {} process{}\n", threads, threads == 1 ? "" : "s",
              size, size == 1 ? "" : "es");
   fmt::print("  wall time      {:.3f} s ({:.1f} runs/s)\n", seconds,
-             static_cast<double>(points.size()) / seconds);
+             static_cast<double>(todo.size()) / seconds);
   fmt::print("  sweep.csv      {}\n", path.string());
   return kDone;
 }

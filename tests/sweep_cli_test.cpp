@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -275,6 +276,45 @@ TEST(SweepCommand, ASweepKilledPartWayLeavesTheRowsItFinished) {
   EXPECT_TRUE(in.eof());
   EXPECT_GE(rows, 1);
   EXPECT_LT(rows, 20000);
+}
+
+// A sweep stopped part way (here: its sweep.csv cut after 123 whole rows and part of the next,
+// as a kill leaves it) goes on with --resume: the rows there are kept, the rest run, and the
+// file is the uninterrupted sweep's, byte for byte. A sweep.csv of another sweep (other
+// records, another range) is refused with exit 2, untouched.
+TEST(SweepCommand, AStoppedSweepResumesToTheUninterruptedFile) {
+  const auto dir = test::fresh_test_dir("SweepCommand", "resume");
+  const std::string sweep = "sweep " + kExamples +
+                            "sweeps/prism_flip_time.yaml --record 'flip=first(prism.w3 < 0)' "
+                            "--threads 2 --vary decades=2:8:";
+  ASSERT_EQ(run_tumble(sweep + "300 --out " + (dir / "whole").string()).status, 0);
+  const std::string whole = test::read_file(dir / "whole" / "sweep.csv");
+  std::size_t cut = 0;
+  for (int line = 0; line < 1 + 123; ++line) cut = whole.find('\n', cut) + 1;
+  std::filesystem::create_directories(dir / "stopped");
+  std::ofstream(dir / "stopped" / "sweep.csv") << whole.substr(0, cut + 7);  // + "123,5.4"
+  const auto resumed = run_tumble(sweep + "300 --resume --out " + (dir / "stopped").string());
+  ASSERT_EQ(resumed.status, 0) << resumed.out;
+  EXPECT_NE(resumed.out.find("the first 123 kept from sweep.csv"), std::string::npos)
+      << resumed.out;
+  EXPECT_EQ(test::read_file(dir / "stopped" / "sweep.csv"), whole);
+  // Resumed again, there is nothing left to run: the same file.
+  ASSERT_EQ(run_tumble(sweep + "300 --resume --out " + (dir / "stopped").string()).status, 0);
+  EXPECT_EQ(test::read_file(dir / "stopped" / "sweep.csv"), whole);
+  const auto other_range = run_tumble(sweep + "200 --resume --out " + (dir / "whole").string());
+  EXPECT_EQ(other_range.status, 2) << other_range.out;
+  EXPECT_NE(other_range.out.find("is another sweep's: its row 2 is not this sweep's run 1"),
+            std::string::npos)
+      << other_range.out;
+  const auto other_records =
+      run_tumble("sweep " + kExamples +
+                 "sweeps/prism_flip_time.yaml --record 'w=final(E)' --vary decades=2:8:300 "
+                 "--resume --out " +
+                 (dir / "whole").string());
+  EXPECT_EQ(other_records.status, 2) << other_records.out;
+  EXPECT_NE(other_records.out.find("is another sweep's (its header is"), std::string::npos)
+      << other_records.out;
+  EXPECT_EQ(test::read_file(dir / "whole" / "sweep.csv"), whole);
 }
 
 TEST(FindCommand, PrintsTheBracketAndTheRuns) {

@@ -211,13 +211,20 @@ std::string sweep_csv_header(const SweepSpec& spec) {
   return line + ",message\n";
 }
 
+std::string sweep_csv_point(std::size_t run, std::span<const double> point) {
+  fmt::memory_buffer text;
+  auto out = std::back_inserter(text);
+  fmt::format_to(out, "{},", run);
+  for (const double value : point) fmt::format_to(out, "{:.17g},", value);
+  return fmt::to_string(text);
+}
+
 std::string sweep_csv_line(std::size_t run, std::span<const double> point, const RunRecord& record,
                            std::size_t outcomes) {
   fmt::memory_buffer text;
   auto out = std::back_inserter(text);
-  fmt::format_to(out, "{}", run);
-  for (const double value : point) fmt::format_to(out, ",{:.17g}", value);
-  fmt::format_to(out, ",{},{},{:.17g},{:.17g}", run_status_name(record.status), record.steps,
+  fmt::format_to(out, "{}", sweep_csv_point(run, point));
+  fmt::format_to(out, "{},{},{:.17g},{:.17g}", run_status_name(record.status), record.steps,
                  record.energy_drift, record.momentum_drift);
   // A run that did not finish has no outcomes: empty cells, then why.
   for (std::size_t i = 0; i < outcomes; ++i) {

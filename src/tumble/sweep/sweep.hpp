@@ -129,6 +129,8 @@ std::vector<RunRecord> run_points(const SweepSpec& spec,
 // sweep.csv: "run,<varied...>,status,steps,E_drift,L_drift,<outcomes...>,message", numbers to
 // 17 significant digits (they read back to the same doubles), the message quoted.
 std::string sweep_csv_header(const SweepSpec& spec);
+// The start of a run's line: its number and its point's values, each followed by a comma.
+std::string sweep_csv_point(std::size_t run, std::span<const double> point);
 // A run's line, with `outcomes` cells for its outcomes (empty where it did not finish).
 std::string sweep_csv_line(std::size_t run, std::span<const double> point, const RunRecord& record,
                            std::size_t outcomes);

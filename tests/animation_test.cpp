@@ -30,7 +30,8 @@ fs::path fresh_directory(const std::string& name) {
   return dir;
 }
 
-int run_tumble(const std::string& arguments) {
+// The exit status of `tumble run ARGUMENTS`, its output discarded.
+int tumble_run_status(const std::string& arguments) {
   const std::string command = std::string(TUMBLE_EXE) + " run " + arguments + " > /dev/null 2>&1";
   const int raw = std::system(command.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -56,8 +57,8 @@ TEST(AnimationHtml, JsonStringsCannotCloseTheScriptElement) {
 
 TEST(AnimationHtml, ThePrismPageEmbedsEveryRowAndFetchesNothing) {
   const fs::path dir = fresh_directory("prism");
-  ASSERT_EQ(run_tumble(std::string(TUMBLE_SOURCE_DIR) + "/examples/tumbling_prism.yaml --out " +
-                       dir.string() + " --animate"),
+  ASSERT_EQ(tumble_run_status(std::string(TUMBLE_SOURCE_DIR) +
+                              "/examples/tumbling_prism.yaml --out " + dir.string() + " --animate"),
             0);
   ASSERT_TRUE(fs::exists(dir / "tumbling_prism.csv"));
   const fs::path page = dir / "tumbling_prism.html";
@@ -100,7 +101,7 @@ TEST(AnimationHtml, OutputAnimationNamesThePageAndNamesStayText) {
                              "mass: 1}\n"
                              "simulate: {duration: 1, output_every: 0.25}\n"
                              "output: {trajectory: run.csv, animation: pages/run.html}\n";
-  ASSERT_EQ(run_tumble(scenario.string() + " --out " + (dir / "out").string()), 0);
+  ASSERT_EQ(tumble_run_status(scenario.string() + " --out " + (dir / "out").string()), 0);
   const std::string html = read_file(dir / "out" / "pages" / "run.html");
   ASSERT_FALSE(html.empty());
   EXPECT_NE(html.find("<title>&lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt; &amp; "
@@ -135,7 +136,7 @@ TEST(AnimationHtml, EveryContactsPlaneIsInTheSceneOnce) {
       EXPECT_TRUE(given) << example;
     }
     const fs::path dir = fresh_directory(std::string("planes_") + example);
-    ASSERT_EQ(run_tumble(path + " --out " + dir.string() + " --animate"), 0);
+    ASSERT_EQ(tumble_run_status(path + " --out " + dir.string() + " --animate"), 0);
     fs::path page;
     for (const auto& entry : fs::directory_iterator(dir)) {
       if (entry.path().extension() == ".html") page = entry.path();
@@ -160,7 +161,7 @@ TEST(AnimationHtml, AnUnwritablePageIsExitStatus5) {
                              "page.html}\n";
   // A directory where the page should go: the rename cannot replace it.
   fs::create_directories(dir / "out" / "page.html" / "inside");
-  EXPECT_EQ(run_tumble(scenario.string() + " --out " + (dir / "out").string()), 5);
+  EXPECT_EQ(tumble_run_status(scenario.string() + " --out " + (dir / "out").string()), 5);
 }
 
 TEST(AnimationHtml, RecordedRowsMustMatchTheScene) {

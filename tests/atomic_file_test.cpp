@@ -17,14 +17,14 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_file;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_destination_dir(const std::string& name) {
   return test::fresh_test_dir("AtomicFile", name);
 }
 
 TEST(AtomicFile, ASymlinkPlantedAtTheTemporaryNameIsNotWrittenThrough) {
   // Another user of a shared output directory points the name tumble used to write to,
   // DEST.partial-PID, at a file of the victim's; writing must not touch that file.
-  const fs::path dir = fresh_dir("symlink");
+  const fs::path dir = fresh_destination_dir("symlink");
   const fs::path victim = dir / "victim.txt";
   std::ofstream(victim) << "precious";
   const fs::path dest = dir / "run.csv";
@@ -46,7 +46,7 @@ TEST(AtomicFile, ASymlinkPlantedAtTheTemporaryNameIsNotWrittenThrough) {
 }
 
 TEST(AtomicFile, TwoWritersOfOneDestinationDoNotShareATemporaryFile) {
-  const fs::path dir = fresh_dir("two");
+  const fs::path dir = fresh_destination_dir("two");
   const fs::path dest = dir / "run.csv";
   {
     AtomicFile first(dest);
@@ -61,7 +61,7 @@ TEST(AtomicFile, TwoWritersOfOneDestinationDoNotShareATemporaryFile) {
 }
 
 TEST(AtomicFile, AnUnfinishedFileLeavesNothing) {
-  const fs::path dir = fresh_dir("unfinished");
+  const fs::path dir = fresh_destination_dir("unfinished");
   {
     AtomicFile file(dir / "run.csv");
     file.write("half");

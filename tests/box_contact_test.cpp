@@ -9,23 +9,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kDeg;
+using test::kG;
 using test::Row;
 using test::run_inline_scenario;
-constexpr double kG = 9.81;
-constexpr double kDeg = std::numbers::pi / 180;
-constexpr double kMass = 2.0;
+constexpr double kBoxMass = 2.0;
 
 // A body of the given shape keys on a ramp of slope theta descending towards +x, resting on its
 // face whose COM height is `half_height`, at rest or sliding down at v0.
-std::string ramp_scenario(const std::string& shape, double half_height, double theta, double mu,
+std::string crate_on_ramp(const std::string& shape, double half_height, double theta, double mu,
                           double duration, double v0 = 0.0) {
   return fmt::format(
       "tumble: 1\n"
@@ -39,7 +39,7 @@ std::string ramp_scenario(const std::string& shape, double half_height, double t
       "      normal: [sin(theta), 0, cos(theta)]}}, friction: {}}}\n"
       "simulate: {{duration: {}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
       "output_every: {}}}\n",
-      theta, half_height, shape, kMass, v0, v0, mu, duration, duration / 50);
+      theta, half_height, shape, kBoxMass, v0, v0, mu, duration, duration / 50);
 }
 
 struct Solid {
@@ -59,15 +59,15 @@ TEST(BoxOnRamp, BelowTheFrictionAngleItStaysAtRestFor100Seconds) {
     for (const double theta : {10 * kDeg, 30 * kDeg}) {
       const double mu = 1.05 * std::tan(theta);
       const auto run = run_inline_scenario(
-          ramp_scenario(solid.shape, solid.half_height, theta, mu, 100), "box_at_rest");
+          crate_on_ramp(solid.shape, solid.half_height, theta, mu, 100), "box_at_rest");
       const Vec3 r0 = run.rows.front().states[0].r_G;
       for (const Row& row : run.rows) {
         EXPECT_LT((row.states[0].r_G - r0).norm(), 1e-12) << solid.name << " t " << row.t;
         EXPECT_LT(row.states[0].v_G.norm() + row.states[0].omega_W.norm(), 1e-12) << solid.name;
         const ContactOutput& c = row.extras.contacts[0];
         EXPECT_EQ(c.mode, 2) << solid.name;
-        EXPECT_NEAR(c.normal_force, kMass * kG * std::cos(theta), 1e-12 * kMass * kG);
-        EXPECT_NEAR(c.friction_W.norm(), kMass * kG * std::sin(theta), 1e-12 * kMass * kG);
+        EXPECT_NEAR(c.normal_force, kBoxMass * kG * std::cos(theta), 1e-12 * kBoxMass * kG);
+        EXPECT_NEAR(c.friction_W.norm(), kBoxMass * kG * std::sin(theta), 1e-12 * kBoxMass * kG);
       }
       ASSERT_EQ(run.contact_events.size(), 1u) << solid.name;
       EXPECT_EQ(run.contact_events[0].what, "sticks on a face");
@@ -83,7 +83,7 @@ TEST(BoxOnRamp, AboveTheFrictionAngleItSlidesWithTheExactAcceleration) {
         const double mu = 0.9 * std::tan(theta);
         const double a = kG * (std::sin(theta) - mu * std::cos(theta));
         const auto run = run_inline_scenario(
-            ramp_scenario(solid.shape, solid.half_height, theta, mu, 2, v0), "box_slides");
+            crate_on_ramp(solid.shape, solid.half_height, theta, mu, 2, v0), "box_slides");
         const Vec3 r0 = run.rows.front().states[0].r_G;
         const Vec3 down(std::cos(theta), 0, -std::sin(theta));
         for (const Row& row : run.rows) {
@@ -92,8 +92,8 @@ TEST(BoxOnRamp, AboveTheFrictionAngleItSlidesWithTheExactAcceleration) {
           EXPECT_NEAR(row.states[0].v_G.dot(down), v0 + a * row.t, 1e-10 * (1 + v0 + a * row.t));
           EXPECT_LT(row.states[0].omega_W.norm(), 1e-10) << solid.name;
           EXPECT_EQ(row.extras.contacts[0].mode, 1) << solid.name;
-          EXPECT_NEAR(row.extras.contacts[0].normal_force, kMass * kG * std::cos(theta),
-                      1e-10 * kMass * kG);
+          EXPECT_NEAR(row.extras.contacts[0].normal_force, kBoxMass * kG * std::cos(theta),
+                      1e-10 * kBoxMass * kG);
         }
       }
     }
@@ -113,8 +113,8 @@ std::string floor_scenario(const std::string& shape, double half_height, double 
       " friction: {}}}\n"
       "simulate: {{duration: {}, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
       "output_every: {}}}\n",
-      shape, kMass, half_height, v0.x(), v0.y(), omega0.x(), omega0.y(), omega0.z(), mu, duration,
-      duration / 100);
+      shape, kBoxMass, half_height, v0.x(), v0.y(), omega0.x(), omega0.y(), omega0.z(), mu,
+      duration, duration / 100);
 }
 
 TEST(BoxOnFloor, ItSlidesToRestAtTheLocatedTimeAndDistance) {
@@ -140,8 +140,8 @@ TEST(BoxOnFloor, ItSlidesToRestAtTheLocatedTimeAndDistance) {
       }
       const Row& end = run.rows.back();
       EXPECT_LT(end.states[0].v_G.norm(), 1e-12) << solid.name;
-      EXPECT_NEAR(end.extras.elements.back().work, -0.5 * kMass * speed * speed,
-                  1e-10 * kMass * speed * speed);
+      EXPECT_NEAR(end.extras.elements.back().work, -0.5 * kBoxMass * speed * speed,
+                  1e-10 * kBoxMass * speed * speed);
     }
   }
 }
@@ -154,8 +154,8 @@ TEST(BoxOnFloor, ASpinningSquareFaceStopsUnderTorsionalFriction) {
     for (const double w0 : {4.0, 10.0}) {
       const double mu = 0.4;
       const double rho = 0.5 * side * (std::sqrt(2.0) + std::asinh(1.0)) / 3;
-      const double I = kMass * side * side / 6;
-      const double t_stop = I * w0 / (mu * kMass * kG * rho);
+      const double I = kBoxMass * side * side / 6;
+      const double t_stop = I * w0 / (mu * kBoxMass * kG * rho);
       const auto run = run_inline_scenario(
           floor_scenario(fmt::format("shape: box, size: [{0}, {0}, {0}]", side), side / 2, mu,
                          Vec3::Zero(), Vec3(0, 0, w0), 1.5 * t_stop),
@@ -180,7 +180,7 @@ TEST(BoxOnRamp, PastTheTippingAngleItPivotsOnItsLowerEdge) {
   for (const double factor : {0.98, 1.02}) {
     const double theta = factor * theta_tip;
     const auto run = run_inline_scenario(
-        ramp_scenario(fmt::format("shape: box, size: [{}, 0.3, {}]", a, c), c / 2, theta, 1.5, 0.5),
+        crate_on_ramp(fmt::format("shape: box, size: [{}, 0.3, {}]", a, c), c / 2, theta, 1.5, 0.5),
         "box_tips");
     ASSERT_GE(run.contact_events.size(), 1u);
     if (factor < 1) {
@@ -217,13 +217,13 @@ TEST(BoxDropped, ImpactsNeverAddEnergyAndItComesToRestOnAFace) {
             "1]}}, friction: {}, restitution: {}}}\n"
             "simulate: {{duration: 4, integrator: dop853, rtol: 1e-10, atol: 1e-13, "
             "output_every: 0.01}}\n",
-            kMass, tilt, mu, e);
+            kBoxMass, tilt, mu, e);
         const auto run = run_inline_scenario(yaml, "box_dropped");
         test::expect_energy_never_rises(run, 1e-8);
         const Row& end = run.rows.back();
         EXPECT_LT(end.states[0].v_G.norm() + end.states[0].omega_W.norm(), 1e-9);
         EXPECT_EQ(end.extras.contacts[0].mode, 2);
-        EXPECT_NEAR(end.extras.contacts[0].normal_force, kMass * kG, 1e-9 * kMass * kG);
+        EXPECT_NEAR(end.extras.contacts[0].normal_force, kBoxMass * kG, 1e-9 * kBoxMass * kG);
         const double z = end.states[0].r_G.z();
         const double nearest = std::min({std::abs(z - 0.2), std::abs(z - 0.15), std::abs(z - 0.1)});
         EXPECT_LT(nearest, 1e-12) << "z " << z;

@@ -49,7 +49,7 @@ std::string without_header(const std::string& csv) {
   return csv.substr(csv.find('\n') + 1);
 }
 
-struct Case {
+struct CheckpointCase {
   const char* example;
   double t1;  // s: the run stops at the first step end at or after it
   const char* what;
@@ -61,14 +61,14 @@ std::string test_name_of(std::string example) {
   return example;
 }
 
-void PrintTo(const Case& c, std::ostream* os) {
+void PrintTo(const CheckpointCase& c, std::ostream* os) {
   *os << c.example << " at t = " << c.t1;
 }
 
-class Checkpoint : public ::testing::TestWithParam<Case> {};
+class Checkpoint : public ::testing::TestWithParam<CheckpointCase> {};
 
 TEST_P(Checkpoint, ResumedRowsAreTheUninterruptedRunsBytes) {
-  const Case c = GetParam();
+  const CheckpointCase c = GetParam();
   const Scenario scenario =
       load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/" + c.example + ".yaml", {});
   const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
@@ -124,18 +124,19 @@ TEST_P(Checkpoint, ResumedRowsAreTheUninterruptedRunsBytes) {
 
 INSTANTIATE_TEST_SUITE_P(
     Examples, Checkpoint,
-    ::testing::Values(Case{"tumbling_prism", 9.0, "before the flip"},
-                      Case{"backspin_disk", 0.7, "in mid-slide, before the slip stops at 1.36 s"},
-                      Case{"bouncing_ball", 0.8, "in flight between the first two bounces"},
-                      Case{"box_slides_to_rest", 0.5, "a box sliding on its face"},
-                      Case{"cubli", 0.0005, "before the lock at 1 ms"},
-                      Case{"cubli", 0.7, "after the lock"},
-                      Case{"cubli_falls_back", 0.3, "a held box in flight, before it lands"},
-                      Case{"cubli_falls_back", 0.55, "between its first two bounces"},
-                      Case{"rolling_coin", 1.0, "a coin rolling on its rim"},
-                      Case{"planar/backspin_disk", 0.7,
-                           "in the plane, before its event (it reverses at 1.02 s)"}),
-    [](const ::testing::TestParamInfo<Case>& param) {
+    ::testing::Values(
+        CheckpointCase{"tumbling_prism", 9.0, "before the flip"},
+        CheckpointCase{"backspin_disk", 0.7, "in mid-slide, before the slip stops at 1.36 s"},
+        CheckpointCase{"bouncing_ball", 0.8, "in flight between the first two bounces"},
+        CheckpointCase{"box_slides_to_rest", 0.5, "a box sliding on its face"},
+        CheckpointCase{"cubli", 0.0005, "before the lock at 1 ms"},
+        CheckpointCase{"cubli", 0.7, "after the lock"},
+        CheckpointCase{"cubli_falls_back", 0.3, "a held box in flight, before it lands"},
+        CheckpointCase{"cubli_falls_back", 0.55, "between its first two bounces"},
+        CheckpointCase{"rolling_coin", 1.0, "a coin rolling on its rim"},
+        CheckpointCase{"planar/backspin_disk", 0.7,
+                       "in the plane, before its event (it reverses at 1.02 s)"}),
+    [](const ::testing::TestParamInfo<CheckpointCase>& param) {
       return test_name_of(param.param.example) + "_" + std::to_string(param.index);
     });
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "prism_reference.hpp"
+#include "test_files.hpp"
 
 namespace tumble {
 namespace {
@@ -24,13 +25,11 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::CommandResult;
+using test::example;
+using test::read_file;
 using test::run_tumble;
 
-std::string example(const std::string& name) {
-  return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + name;
-}
-
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_run_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("tumble_cli_test_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -63,11 +62,6 @@ std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
     rows.push_back(fields);
   }
   return rows;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 TEST(Cli, VersionAndHelpOnEveryCommand) {
@@ -105,7 +99,7 @@ TEST(Cli, BadCommandLinesExitWithStatusTwo) {
 // A row per adaptive step cannot be counted beforehand: the run stops at max_rows (exit 4), its
 // CSV holding the rows so far.
 TEST(Cli, ARunPastItsRowBudgetStopsWithTheRowsSoFar) {
-  const fs::path dir = fresh_dir("rows");
+  const fs::path dir = fresh_run_dir("rows");
   std::ofstream(dir / "spin.yaml")
       << "tumble: 1\nbodies:\n  top: {shape: box, size: [0.1, 0.2, 0.3], mass: 1, "
          "angular_velocity: [0, 1, 100]}\nsimulate: {duration: 1000, max_rows: 1000}\n";
@@ -122,7 +116,7 @@ TEST(Cli, ARunPastItsRowBudgetStopsWithTheRowsSoFar) {
 
 // A video of more than 100,000 frames is refused before the run (exit 2), not after it.
 TEST(Cli, AVideoOfTooManyFramesIsRefusedBeforeTheRun) {
-  const fs::path dir = fresh_dir("frames");
+  const fs::path dir = fresh_run_dir("frames");
   std::ofstream(dir / "long.yaml")
       << "tumble: 1\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 1}\n"
          "simulate: {duration: 1e6, output_every: 10}\n";
@@ -138,7 +132,7 @@ TEST(Cli, AVideoOfTooManyFramesIsRefusedBeforeTheRun) {
 // links lying flat printed a relative drift of 2e+21): the drift is shown against the
 // largest KE, not E0 (which printed 2e+21 for it), and against the largest |L|.
 TEST(Cli, TheSummarysDriftsAreAgainstAScaleThatIsNotRoundOff) {
-  const fs::path dir = fresh_dir("drift");
+  const fs::path dir = fresh_run_dir("drift");
   std::ofstream(dir / "level.yaml")
       << "tumble: 1\nbodies:\n  bob: {shape: sphere, radius: 0.05, mass: 1, position: [1, 0, "
          "1e-17]}\n"
@@ -159,7 +153,7 @@ TEST(Cli, TheSummarysDriftsAreAgainstAScaleThatIsNotRoundOff) {
 
 // Two outputs at one path would leave only the last written: refused before the run, exit 3.
 TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
-  const fs::path dir = fresh_dir("collide");
+  const fs::path dir = fresh_run_dir("collide");
   const std::string ball =
       "tumble: 1\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 1}\n"
       "simulate: {duration: 0.1}\n";
@@ -187,7 +181,7 @@ TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
 // default events file, events written through a linked folder onto the trajectory. Each is now
 // refused before the run, at the scenario's key, and nothing is written.
 TEST(Cli, OutputsThatAreOneFileOnlyOnceResolvedAreRefusedBeforeTheRun) {
-  const fs::path dir = fresh_dir("collide_resolved");
+  const fs::path dir = fresh_run_dir("collide_resolved");
   const std::string ball =
       "tumble: 1\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 1}\n"
       "simulate: {duration: 0.1}\n";
@@ -225,7 +219,7 @@ TEST(Cli, OutputsThatAreOneFileOnlyOnceResolvedAreRefusedBeforeTheRun) {
 // at t = 20 within the tolerance the free-body tests establish (30 rtol), and a summary with
 // every figure the contract lists.
 TEST(Cli, RunsTheTumblingPrismAndWritesTheContractCsv) {
-  const fs::path dir = fresh_dir("prism");
+  const fs::path dir = fresh_run_dir("prism");
   const CommandResult r =
       run_tumble("run " + example("tumbling_prism.yaml") + " --out " + dir.string());
   ASSERT_EQ(r.status, 0) << r.out;
@@ -271,18 +265,18 @@ TEST(Cli, RunsTheTumblingPrismAndWritesTheContractCsv) {
 }
 
 TEST(Cli, SameScenarioGivesBitIdenticalOutput) {
-  const fs::path a = fresh_dir("det_a"), b = fresh_dir("det_b");
+  const fs::path a = fresh_run_dir("det_a"), b = fresh_run_dir("det_b");
   ASSERT_EQ(
       run_tumble("run " + example("spinning_projectile.yaml") + " --out " + a.string()).status, 0);
   ASSERT_EQ(
       run_tumble("run " + example("spinning_projectile.yaml") + " --out " + b.string()).status, 0);
-  const std::string csv_a = slurp(a / "spinning_projectile.csv");
+  const std::string csv_a = read_file(a / "spinning_projectile.csv");
   EXPECT_GT(csv_a.size(), 1000u);
-  EXPECT_EQ(csv_a, slurp(b / "spinning_projectile.csv"));
+  EXPECT_EQ(csv_a, read_file(b / "spinning_projectile.csv"));
 }
 
 TEST(Cli, InvalidScenarioExitsWithStatusThreeAndFileLineColumnKey) {
-  const fs::path dir = fresh_dir("invalid");
+  const fs::path dir = fresh_run_dir("invalid");
   const fs::path p = write_file(dir, "bad.yaml",
                                 "tumble: 1\n"
                                 "bodies:\n"
@@ -300,7 +294,7 @@ TEST(Cli, InvalidScenarioExitsWithStatusThreeAndFileLineColumnKey) {
 // A run that fails part way (here: a step budget far too small) exits 4, says when and why, and
 // leaves a valid CSV of the rows it reached.
 TEST(Cli, FailedIntegrationLeavesAValidPartialCsvAndExitsFour) {
-  const fs::path dir = fresh_dir("failed");
+  const fs::path dir = fresh_run_dir("failed");
   const fs::path p =
       write_file(dir, "short.yaml", tumbling_box("{duration: 20, rtol: 1e-10, max_steps: 25}"));
   const CommandResult r = run_tumble("run " + p.string() + " --out " + dir.string());
@@ -318,8 +312,8 @@ TEST(Cli, FailedIntegrationLeavesAValidPartialCsvAndExitsFour) {
 // steps each under 1e-12 of the run's span end it at once, with exit 4, saying where and why, and
 // with the rows it reached.
 TEST(Cli, AStepSizeThatCollapsesEndsTheRunWithExitFour) {
-  const fs::path dir = fresh_dir("collapsed");
-  std::string text = slurp(example("tumbling_prism.yaml"));
+  const fs::path dir = fresh_run_dir("collapsed");
+  std::string text = read_file(example("tumbling_prism.yaml"));
   const std::string spin = "angular_velocity: [0, 0.01, 1]";
   ASSERT_NE(text.find(spin), std::string::npos);
   text.replace(text.find(spin), spin.size(), "angular_velocity: [0, 1e98, 1e100]");
@@ -360,7 +354,7 @@ TEST(Cli, ChatteringEventsEndTheRunWithExitFour) {
 TEST(Cli, ARunStoppedByASignalLeavesNoPartialFile) {
   // A run far longer than the half second it is given, stopped by SIGTERM, then by SIGINT (as
   // Ctrl-C does): it ends by the signal, and neither its CSV nor a temporary file is left.
-  const fs::path dir = fresh_dir("stopped");
+  const fs::path dir = fresh_run_dir("stopped");
   const fs::path p = write_file(
       dir, "long.yaml", tumbling_box("{duration: 1000000, rtol: 1e-10, output_every: 1000}"));
   for (const char* signal_name : {"TERM", "INT"}) {
@@ -377,8 +371,8 @@ TEST(Cli, ARunStoppedByASignalLeavesNoPartialFile) {
 // completes (exit 0), names the event where it happened, writes it to the events CSV and leaves
 // no temporary file.
 TEST(Cli, TheExactIntegratorRunsAScenariosEvents) {
-  const fs::path dir = fresh_dir("exact_event");
-  std::string text = slurp(example("tumbling_prism.yaml"));
+  const fs::path dir = fresh_run_dir("exact_event");
+  std::string text = read_file(example("tumbling_prism.yaml"));
   const std::string dopri5 = "integrator: dopri5";
   ASSERT_NE(text.find(dopri5), std::string::npos);
   text.replace(text.find(dopri5), dopri5.size(), "integrator: exact");
@@ -409,7 +403,7 @@ TEST(Cli, UnwritableOutputDirectoryExitsFive) {
 }
 
 TEST(Cli, SetOverridesAParameter) {
-  const fs::path dir = fresh_dir("set");
+  const fs::path dir = fresh_run_dir("set");
   // c = 1 makes the prism [4, 1, 1]: I0 = diag(2, 17, 17): the inertia command shows it.
   const CommandResult r = run_tumble("inertia " + example("tumbling_prism.yaml"));
   EXPECT_EQ(r.status, 0) << r.out;
@@ -440,7 +434,7 @@ std::size_t column_of(const std::vector<std::string>& header, const std::string&
 TEST(Cli, JointCoordinateColumnsAgreeWithTheBodiesPositions) {
   // The compound pendulum's hinge (axis y through O at the origin): its angle is the bat's turn
   // about y since t = 0, atan2(-x, -z) - theta0 from the COM's position, and its rate omega_y.
-  const fs::path dir = fresh_dir("joint_columns");
+  const fs::path dir = fresh_run_dir("joint_columns");
   ASSERT_EQ(
       run_tumble("run " + example("compound_pendulum.yaml") + " --out " + dir.string()).status, 0);
   const auto rows = read_csv(dir / "compound_pendulum.csv");
@@ -475,7 +469,7 @@ TEST(Cli, TheEventsCsvHasEachJumpsReactionImpulses) {
   // Omega = m R^2 w0 / I_total about -y, and the corner's impulse is what gives the pair its
   // momentum: (M + m) Omega L/2 (-1, 0, 1) (the centre at (L/2, 0, L/2) moving at
   // Omega L/2 (-1, 0, 1)); KE after, I_total Omega^2 / 2. The floor's events follow it.
-  const fs::path dir = fresh_dir("events");
+  const fs::path dir = fresh_run_dir("events");
   const CommandResult r =
       run_tumble("run " + example("cubli_falls_back.yaml") + " --out " + dir.string());
   ASSERT_EQ(r.status, 0) << r.out;
@@ -503,8 +497,8 @@ TEST(Cli, TheEventsCsvHasEachJumpsReactionImpulses) {
 // own order: a student reading it saw the blow after what it caused. Now one list in time order:
 // the bat's swing past 0.05 s, the blow at 0.1 s, the swing past 0.2 s.
 TEST(Cli, TheSummaryListsEventsAndJumpsInTimeOrder) {
-  const fs::path dir = fresh_dir("time_order");
-  std::string text = slurp(example("bat_struck.yaml"));
+  const fs::path dir = fresh_run_dir("time_order");
+  std::string text = read_file(example("bat_struck.yaml"));
   const std::string simulate = "simulate:";
   ASSERT_NE(text.find(simulate), std::string::npos);
   text.insert(text.find(simulate),
@@ -555,7 +549,7 @@ TEST(Cli, TheSummaryHasTenDigitsAndSeventeenOnRequest) {
 TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
   // Three bodies rolling down a ramp without slip: friction acts but does no work (equations.md,
   // rolling), so E is conserved; the backspin disk slides first, and its friction does work.
-  const fs::path dir = fresh_dir("workless");
+  const fs::path dir = fresh_run_dir("workless");
   const CommandResult rolls =
       run_tumble("run " + example("ramp_race.yaml") + " --out " + dir.string());
   EXPECT_EQ(rolls.status, 0) << rolls.out;
@@ -570,7 +564,7 @@ TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
 // Red-team finding: an event's `when: prism.w3 = -5` wrote -5 into the row the later events read,
 // so that they did not happen. It is refused where it is written, as the reader's other errors.
 TEST(Cli, AnEventThatAssignsIsRefusedWhereItIsWritten) {
-  const fs::path dir = fresh_dir("event_assigns");
+  const fs::path dir = fresh_run_dir("event_assigns");
   const fs::path p = write_file(dir, "prism.yaml",
                                 "tumble: 1\n"
                                 "gravity: [0, 0, 0]\n"
@@ -594,7 +588,7 @@ TEST(Cli, AnEventThatAssignsIsRefusedWhereItIsWritten) {
 TEST(Cli, InertiaAboutAPivotNeedsNoSimulateSection) {
   // A uniform rod of length L hung from its end O: I_O = M L^2/3 (+ M r^2/4 of its thickness)
   // about the axes across it, by the parallel axis theorem from I_G = M (3 r^2 + L^2)/12.
-  const fs::path dir = fresh_dir("inertia_about");
+  const fs::path dir = fresh_run_dir("inertia_about");
   const fs::path p = write_file(dir, "rod.yaml",
                                 "tumble: 1\nbodies:\n  rod: {shape: cylinder, radius: 0.01, "
                                 "length: 1, mass: 3, position: [0, 0, -0.5]}\n");
@@ -631,7 +625,7 @@ TEST(Cli, AFileWithoutEndOrTooLargeIsRefusedAtItsLimit) {
       "a larger number of MiB to raise it)";
   // /dev/zero under a limit lowered to 1 MiB, so that the test reads little (the default's read
   // is the same, 64 times longer).
-  const std::string out = " --out " + fresh_dir("dev_zero").string();
+  const std::string out = " --out " + fresh_run_dir("dev_zero").string();
   for (const std::string& command :
        {"run /dev/zero" + out, std::string("inertia /dev/zero"), "modes /dev/zero" + out}) {
     const CommandResult r = run_tumble(command, "TUMBLE_MAX_SCENARIO_MIB=1 ");
@@ -641,7 +635,7 @@ TEST(Cli, AFileWithoutEndOrTooLargeIsRefusedAtItsLimit) {
               "(set TUMBLE_MAX_SCENARIO_MIB to a larger number of MiB to raise it)\n")
         << command;
   }
-  const fs::path dir = fresh_dir("huge_scenario");
+  const fs::path dir = fresh_run_dir("huge_scenario");
   const fs::path huge = dir / "huge.yaml";
   std::ofstream(huge) << "tumble: 1\n";
   fs::resize_file(huge, std::uintmax_t{64} << 30);  // sparse: 64 GiB that use no disk
@@ -671,7 +665,7 @@ TEST(Cli, RunningOutOfMemoryIsExitFiveWithOneLine) {
 #endif
 #endif
   // The limit raised past the memory there is: /dev/zero is read until an allocation fails.
-  const CommandResult r = run_tumble("run /dev/zero --out " + fresh_dir("oom").string(),
+  const CommandResult r = run_tumble("run /dev/zero --out " + fresh_run_dir("oom").string(),
                                      "ulimit -v 60000; TUMBLE_MAX_SCENARIO_MIB=1000000 ");
   EXPECT_EQ(r.status, 5) << r.out;
   EXPECT_EQ(r.out, "tumble run: out of memory\n");

@@ -9,21 +9,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "ramp_checks.hpp"
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kDeg;
+using test::kG;
+using test::kPi;
 using test::Row;
 using test::run_inline_scenario;
-constexpr double kG = 9.81;
-constexpr double kDeg = std::numbers::pi / 180;
-constexpr double kPi = std::numbers::pi;
-constexpr double kMass = 0.5;
+constexpr double kConeMass = 0.5;
 
 struct Cone {
   double r, h;  // base radius and height, m
@@ -31,7 +31,7 @@ struct Cone {
 constexpr Cone kCones[] = {{0.05, 0.2}, {0.1, 0.15}};
 
 std::string cone_keys(const Cone& cone) {
-  return fmt::format("shape: cone, radius: {}, height: {}, mass: {}", cone.r, cone.h, kMass);
+  return fmt::format("shape: cone, radius: {}, height: {}, mass: {}", cone.r, cone.h, kConeMass);
 }
 
 // The apex from the COM, world axes.
@@ -77,7 +77,7 @@ TEST(ConeOnItsSide, ItRollsInACircleAboutItsApex) {
         const ContactOutput& c = row.extras.contacts[0];
         EXPECT_EQ(c.mode, 2);
         EXPECT_LT(c.slip_speed, 1e-12);
-        EXPECT_NEAR(c.normal_force, kMass * kG, 1e-9 * kMass * kG);
+        EXPECT_NEAR(c.normal_force, kConeMass * kG, 1e-9 * kConeMass * kG);
         EXPECT_NEAR(row.quantities.total_energy, E0, 1e-10 * E0);
       }
     }
@@ -86,7 +86,7 @@ TEST(ConeOnItsSide, ItRollsInACircleAboutItsApex) {
 
 // A cone standing on its base on a ramp of slope theta descending towards +x, spinning at w0
 // about its axis (the ramp's normal).
-std::string ramp_scenario(const Cone& cone, double theta, double mu, double w0, double duration) {
+std::string cone_on_ramp(const Cone& cone, double theta, double mu, double w0, double duration) {
   return fmt::format(
       "tumble: 1\n"
       "parameters: {{theta: {}, d: {}, w0: {}}}\n"
@@ -106,10 +106,10 @@ TEST(ConeOnItsBase, BelowTheFrictionAngleItStaysAtRestFor100Seconds) {
   for (const Cone& cone : kCones) {
     for (const double theta : {10 * kDeg, 30 * kDeg}) {
       const auto run = run_inline_scenario(
-          ramp_scenario(cone, theta, 1.05 * std::tan(theta), 0, 100), "cone_at_rest");
+          cone_on_ramp(cone, theta, 1.05 * std::tan(theta), 0, 100), "cone_at_rest");
       ASSERT_EQ(run.contact_events.size(), 1u);
       EXPECT_EQ(run.contact_events[0].what, "sticks on its base");
-      test::expect_at_rest_on_ramp(run, kMass, theta);
+      test::expect_at_rest_on_ramp(run, kConeMass, theta);
     }
   }
 }
@@ -122,10 +122,10 @@ TEST(ConeOnItsBase, AboveTheFrictionAngleItSlidesWithTheExactAcceleration) {
       const double mu = 0.9 * std::tan(theta);
       ASSERT_LT(mu * cone.h / 4, cone.r);
       const double a = kG * (std::sin(theta) - mu * std::cos(theta));
-      const auto run = run_inline_scenario(ramp_scenario(cone, theta, mu, 0, 2), "cone_slides");
+      const auto run = run_inline_scenario(cone_on_ramp(cone, theta, mu, 0, 2), "cone_slides");
       ASSERT_EQ(run.contact_events.size(), 1u);
       EXPECT_EQ(run.contact_events[0].what, "slides on its base");
-      test::expect_sliding_down_ramp(run, kMass, theta, a);
+      test::expect_sliding_down_ramp(run, kConeMass, theta, a);
     }
   }
 }
@@ -136,10 +136,10 @@ TEST(ConeOnItsBase, ItSpinsDownUnderTorsionalFrictionAtTheExactTime) {
   for (const Cone& cone : kCones) {
     for (const double mu : {0.3, 0.6}) {
       const double w0 = 20;
-      const double I = 0.3 * kMass * cone.r * cone.r;
-      const double t_stop = I * w0 / (mu * kMass * kG * 2 * cone.r / 3);
+      const double I = 0.3 * kConeMass * cone.r * cone.r;
+      const double t_stop = I * w0 / (mu * kConeMass * kG * 2 * cone.r / 3);
       const auto run =
-          run_inline_scenario(ramp_scenario(cone, 0, mu, w0, 1.5 * t_stop), "cone_spins_down");
+          run_inline_scenario(cone_on_ramp(cone, 0, mu, w0, 1.5 * t_stop), "cone_spins_down");
       ASSERT_EQ(run.contact_events.size(), 3u);
       EXPECT_EQ(run.contact_events[0].what, "slides on its base");
       EXPECT_EQ(run.contact_events[1].what, "slip stops");
@@ -163,7 +163,7 @@ TEST(ConeOnItsBase, PastAtan4rOverHItTipsOntoItsRim) {
     const double theta_tip = std::atan(4 * cone.r / cone.h);
     {
       const auto run =
-          run_inline_scenario(ramp_scenario(cone, 0.98 * theta_tip, 3, 0, 1), "cone_does_not_tip");
+          run_inline_scenario(cone_on_ramp(cone, 0.98 * theta_tip, 3, 0, 1), "cone_does_not_tip");
       ASSERT_EQ(run.contact_events.size(), 1u);
       EXPECT_EQ(run.contact_events[0].what, "sticks on its base");
       const Vec3 r0 = run.rows.front().states[0].r_G;
@@ -172,7 +172,7 @@ TEST(ConeOnItsBase, PastAtan4rOverHItTipsOntoItsRim) {
     // Over its rim until just before the friction runs out (the slender cone slides at 0.475 s,
     // the squat one lifts off at 0.488 s: tests/slip_onset_test.cpp).
     const auto run =
-        run_inline_scenario(ramp_scenario(cone, 1.02 * theta_tip, 3, 0, 0.45), "cone_tips");
+        run_inline_scenario(cone_on_ramp(cone, 1.02 * theta_tip, 3, 0, 0.45), "cone_tips");
     ASSERT_EQ(run.contact_events.size(), 1u);
     EXPECT_EQ(run.contact_events[0].what, "rolls on its rim");
     EXPECT_EQ(run.contact_events[0].t, 0.0);
@@ -261,7 +261,7 @@ TEST(ConeDropped, ImpactsNeverAddEnergyAndItComesToLieOnItsSide) {
       const Row& end = run.rows.back();
       EXPECT_NE(run.contact_events.back().what.find("on its side"), std::string::npos);
       EXPECT_EQ(end.extras.contacts[0].mode, 2);
-      EXPECT_NEAR(end.extras.contacts[0].normal_force, kMass * kG, 1e-9 * kMass * kG);
+      EXPECT_NEAR(end.extras.contacts[0].normal_force, kConeMass * kG, 1e-9 * kConeMass * kG);
       const double alpha = std::atan(cone.r / cone.h);
       EXPECT_NEAR(end.states[0].r_G.z(), 0.75 * cone.h * std::sin(alpha), 1e-12);
     }
@@ -279,7 +279,7 @@ TEST(ConeDropped, ASquatConeRockingOntoItsBaseComesToRestThere) {
     EXPECT_EQ(run.contact_events.back().what, "sticks on its base");
     const Row& end = run.rows.back();
     EXPECT_EQ(end.extras.contacts[0].mode, 2);
-    EXPECT_NEAR(end.extras.contacts[0].normal_force, kMass * kG, 1e-9 * kMass * kG);
+    EXPECT_NEAR(end.extras.contacts[0].normal_force, kConeMass * kG, 1e-9 * kConeMass * kG);
     EXPECT_NEAR(end.states[0].r_G.z(), 0.25 * cone.h, 1e-12);
     EXPECT_LT(end.states[0].v_G.norm() + end.states[0].omega_W.norm() * cone.h, 1e-12);
   }

@@ -25,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 #include "tumble/math/types.hpp"
 
 namespace tumble {
@@ -33,7 +34,7 @@ namespace {
 using test::Row;
 using test::run_inline_scenario;
 
-constexpr double kG = 9.81;
+using test::kG;
 
 TEST(ContactOnAJointedBody, APendulumStrikingAWallReboundsWithEOfItsAngularSpeed) {
   const double r = 0.05, l = 0.5, m = 1.0, a = 60 * M_PI / 180;

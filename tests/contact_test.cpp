@@ -18,14 +18,15 @@
 #include "rolling_coin_scenario.hpp"
 #include "run_tumble.hpp"
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kDeg;
+using test::kG;
 using test::Row;
 using test::run_inline_scenario;
-constexpr double kG = 9.81;
-constexpr double kDeg = std::numbers::pi / 180;
 
 // A round body's I_G / (M R^2) about its rolling axis, and the scenario text of its shape.
 struct Roller {
@@ -43,8 +44,8 @@ const Roller kRollers[] = {
 
 // The roller on a ramp of slope theta descending towards +x, its axis (body z) across the slope
 // along y, starting at rest touching the ramp at the origin.
-std::string ramp_scenario(const Roller& roller, double radius, double theta, double mu,
-                          double duration) {
+std::string roller_on_ramp(const Roller& roller, double radius, double theta, double mu,
+                           double duration) {
   const std::string shape = fmt::format(fmt::runtime(roller.shape), fmt::arg("R", radius));
   return fmt::format(
       "tumble: 1\n"
@@ -107,7 +108,7 @@ TEST(Ramp, RollingSpeedAfterADropIsTheChaptersFormula) {
   for (const Roller& roller : kRollers) {
     for (const double theta : {10 * kDeg, 30 * kDeg}) {
       for (const double radius : {0.05, 0.3}) {
-        const auto run = run_inline_scenario(ramp_scenario(roller, radius, theta, 0.9, 1.5),
+        const auto run = run_inline_scenario(roller_on_ramp(roller, radius, theta, 0.9, 1.5),
                                              fmt::format("ramp_{}", roller.name));
         const double z0 = run.rows.front().states[0].r_G.z();
         for (const Row& row : run.rows) {
@@ -134,7 +135,7 @@ TEST(Ramp, ItSlidesIffFrictionIsBelowTheCriticalValue) {
       const double mu_crit = std::tan(theta) * k / (1 + k);
       for (const double factor : {0.98, 1.02}) {
         const double mu = factor * mu_crit;
-        const auto run = run_inline_scenario(ramp_scenario(roller, 0.1, theta, mu, 1.0),
+        const auto run = run_inline_scenario(roller_on_ramp(roller, 0.1, theta, mu, 1.0),
                                              fmt::format("slide_{}", roller.name));
         const bool slides = factor < 1;
         const double a =
@@ -156,7 +157,7 @@ TEST(Ramp, TheEnergyLostIsTheWorkOfFriction) {
     const double theta = 35 * kDeg;
     const double mu = 0.5 * std::tan(theta) * roller.inertia_ratio / (1 + roller.inertia_ratio);
     const auto run =
-        run_inline_scenario(ramp_scenario(roller, 0.1, theta, mu, 1.0), "friction_work");
+        run_inline_scenario(roller_on_ramp(roller, 0.1, theta, mu, 1.0), "friction_work");
     const double E0 = run.rows.front().quantities.total_energy;
     double lost = 0.0;
     for (const Row& row : run.rows) {

@@ -13,6 +13,7 @@
 
 #include "modes_checks.hpp"
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble {
@@ -21,7 +22,7 @@ namespace {
 using test::Row;
 using test::run_inline_scenario;
 
-constexpr double kG = 9.81;
+using test::kG;
 
 // A 2 kg box on a horizontal shaft along x through its COM, pushed along the shaft by F and
 // turned about it by T from rest; gravity across the shaft.

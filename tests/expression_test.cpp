@@ -9,10 +9,12 @@
 #include <numbers>
 #include <string>
 
+#include "test_constants.hpp"
+
 namespace tumble {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 // The message of the ExpressionError that evaluating `text` throws ("" if none).
 std::string error_of(const ExpressionEvaluator& evaluator, const std::string& text) {

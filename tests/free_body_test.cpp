@@ -62,7 +62,7 @@ FinalState simulate_prism(const PrismCase& c, const std::string& formulation,
   return out;
 }
 
-StepControl tolerances(double rtol) {
+StepControl tolerances_for_rtol(double rtol) {
   StepControl control;
   control.rtol = rtol;
   control.atol = rtol * 1e-3;  // tumble's rule when only rtol is given
@@ -85,7 +85,8 @@ TEST(FreePrism, AdaptiveMethodsMeetTheRequestedTolerance) {
         double error_of[2] = {0.0, 0.0};
         int k = 0;
         for (const std::string formulation : {"body", "textbook"}) {
-          const FinalState f = simulate_prism(c, formulation, method, tolerances(rtol), 20.0);
+          const FinalState f =
+              simulate_prism(c, formulation, method, tolerances_for_rtol(rtol), 20.0);
           const double error = testing::state_error(f.state.R_WB, f.state.omega_W, c.states[0]);
           const bool amplified = formulation == "textbook" && c.id == "unstable";
           const double multiple = amplified ? 200.0 : 5.0;
@@ -140,7 +141,8 @@ TEST(FreePrism, FixedStepMethodsConvergeAtOrderFour) {
 TEST(FreePrism, EnergyAndAngularMomentumAreConserved) {
   for (const PrismCase& c : prism_cases()) {
     for (const std::string formulation : {"body", "textbook"}) {
-      const FinalState f = simulate_prism(c, formulation, "dopri5", tolerances(1e-10), 200.0);
+      const FinalState f =
+          simulate_prism(c, formulation, "dopri5", tolerances_for_rtol(1e-10), 200.0);
       EXPECT_LT(f.max_energy_drift, 100 * 1e-10) << c.id << " " << formulation;
       EXPECT_LT(f.max_L_drift, 100 * 1e-10) << c.id << " " << formulation;
       // Initial E and |L| are the reference's.
@@ -154,12 +156,13 @@ TEST(FreePrism, EnergyAndAngularMomentumAreConserved) {
 TEST(FreePrism, ProductionFormulationKeepsRotationOrthonormal) {
   const PrismCase& c = prism_case("unstable");
   for (const std::string method : {"dopri5", "dop853", "rk4", "rkmk4"}) {
-    StepControl control = tolerances(1e-4);
+    StepControl control = tolerances_for_rtol(1e-4);
     control.fixed_step = 0.05;
     const FinalState f = simulate_prism(c, "body", method, control, 2000.0);
     EXPECT_LT(f.max_orthonormality, 1e-12) << method;
   }
-  const FinalState textbook = simulate_prism(c, "textbook", "dopri5", tolerances(1e-4), 200.0);
+  const FinalState textbook =
+      simulate_prism(c, "textbook", "dopri5", tolerances_for_rtol(1e-4), 200.0);
   EXPECT_GT(textbook.max_orthonormality, 1e-9)
       << "the textbook form has nothing to keep R on SO(3)";
 }
@@ -210,7 +213,7 @@ TEST(FreePrism, IntermediateAxisFlipsAtTheExactTime) {
     for (const std::string method : {"dopri5", "dop853"}) {
       std::unique_ptr<Formulation> system = make_formulation(formulation, testing::prism_model(c));
       FlipWatch watch(*system);
-      std::unique_ptr<Integrator> integrator = make_integrator(method, tolerances(1e-10));
+      std::unique_ptr<Integrator> integrator = make_integrator(method, tolerances_for_rtol(1e-10));
       VecX y0(system->dimension());
       const BodyState s0 = testing::prism_initial_state(c);
       system->pack(std::span<const BodyState>(&s0, 1), y0);

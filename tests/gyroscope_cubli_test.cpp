@@ -6,18 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kG;
+using test::kPi;
 using test::Row;
 using test::run_inline_scenario;
-constexpr double kG = 9.81;
-constexpr double kPi = std::numbers::pi;
 
 struct Gyro {
   double mass, radius, thickness, d, spin;

@@ -6,12 +6,13 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "expect_throw.hpp"
+#include "test_constants.hpp"
+#include "test_math.hpp"
 #include "tumble/inertia/mass_properties.hpp"
 #include "tumble/inertia/planar.hpp"
 #include "tumble/inertia/shapes.hpp"
@@ -20,7 +21,7 @@
 namespace tumble {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 Shape make_shape(ShapeKind kind) {
   Shape s;
@@ -65,9 +66,7 @@ Shape plate(double a, double b) {
   return s;
 }
 
-double max_abs(const Mat3& A) {
-  return A.cwiseAbs().maxCoeff();
-}
+using test::max_abs;
 
 using test::expect_throw_containing;
 

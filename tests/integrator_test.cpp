@@ -11,12 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "test_constants.hpp"
+#include "test_math.hpp"
 #include "tumble/integrators/integrator.hpp"
 
 namespace tumble {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using test::kEps;
 
 // ---------------------------------------------------------------------------------------------
 // Test systems with closed-form solutions.
@@ -81,13 +83,7 @@ void set_quaternion(VecX& y, Eigen::Index offset, const Quat& q) {
   y.segment<4>(offset) << q.w(), q.x(), q.y(), q.z();
 }
 
-// q (x) (0, omega) / 2 written into dq (4 components, (w, x, y, z)).
-void quaternion_rate(const VecX& y, Eigen::Index offset, const Vec3& omega_B, VecX& dydt) {
-  const double w = y[offset];
-  const Vec3 v = y.segment<3>(offset + 1);
-  dydt[offset] = -0.5 * v.dot(omega_B);
-  dydt.segment<3>(offset + 1) = 0.5 * (w * omega_B + v.cross(omega_B));
-}
+using test::quaternion_rate;
 
 // The torque-free rotation of an axisymmetric rigid body, I = diag(I1, I1, I3), state
 // (q (4), omega_B (3)): q' = q (x) (0, omega_B) / 2, I omega_B' = -omega_B x I omega_B.

@@ -16,22 +16,24 @@ const std::string kBat =
     "tumble: 1\n"                                                                              // 1
     "bodies:\n"                                                                                // 2
     "  bat: {shape: cylinder, radius: 0.03, length: 0.8, mass: 1, position: [0, 0, -0.5]}\n";  // 3
-const std::string kSimulate = "simulate: {duration: 0.1}\n";
+const std::string kSimulateTenthSecond = "simulate: {duration: 0.1}\n";
 
 using test::expect_error;
 
 TEST(JointScenario, AJointNamesKnownBodiesAndATypeItHas) {
-  expect_error(kBat + "joints:\n  knob: {type: hing, body: bat, at: [0, 0, 0]}\n" + kSimulate, 5,
-               16, "joints.knob.type", "unknown joint type 'hing'; did you mean 'hinge'?");
-  expect_error(kBat + "joints:\n  knob: {type: ball, body: bta, at: [0, 0, 0]}\n" + kSimulate, 5,
-               28, "joints.knob.body", "no body 'bta' in bodies (the bodies are bat)");
+  expect_error(
+      kBat + "joints:\n  knob: {type: hing, body: bat, at: [0, 0, 0]}\n" + kSimulateTenthSecond, 5,
+      16, "joints.knob.type", "unknown joint type 'hing'; did you mean 'hinge'?");
+  expect_error(
+      kBat + "joints:\n  knob: {type: ball, body: bta, at: [0, 0, 0]}\n" + kSimulateTenthSecond, 5,
+      28, "joints.knob.body", "no body 'bta' in bodies (the bodies are bat)");
   expect_error(kBat + "joints:\n  knob: {type: ball, body: bat, at: [0, 0, 0], axis: [0, 1, 0]}\n" +
-                   kSimulate,
+                   kSimulateTenthSecond,
                5, 48, "joints.knob.axis",
                "only a hinge, a prismatic or a cylindrical joint has axis (this joint is a ball)");
   expect_error(kBat +
                    "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 0, 0]}\n" +
-                   kSimulate,
+                   kSimulateTenthSecond,
                5, 55, "joints.knob.axis", "the axis must not be zero");
 }
 
@@ -40,7 +42,7 @@ TEST(JointScenario, JointsMustFormATree) {
       kBat +
           "joints:\n  knob: {type: ball, body: bat, at: [0, 0, 0]}\n"
           "  again: {type: hinge, bodies: [bat, ground], at: [0, 0, -1], axis: [1, 0, 0]}\n" +
-          kSimulate,
+          kSimulateTenthSecond,
       6, 3, "joints.again", "this joint closes a loop");
 }
 
@@ -48,7 +50,7 @@ TEST(JointScenario, ALockActsAfterTheStart) {
   expect_error(kBat +
                    "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 1, 0], "
                    "lock: {at: 0}}\n" +
-                   kSimulate,
+                   kSimulateTenthSecond,
                5, 77, "joints.knob.lock.at", "a joint rigid from the start is a fixed joint");
 }
 
@@ -59,7 +61,7 @@ TEST(JointScenario, GivenVelocitiesMustBeOnesTheJointsAllow) {
       "  bat: {shape: cylinder, radius: 0.03, length: 0.8, mass: 1, position: [0, 0, -0.5],\n"
       "        angular_velocity: [1, 2, 0]}\n"
       "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 1, 0]}\n" +
-          kSimulate,
+          kSimulateTenthSecond,
       4, 27, "bodies.bat.angular_velocity", "they give [0, 2, 0]");
   // Turning at 2 rad/s about the knob moves the COM at 1 m/s along -x, not +x.
   expect_error(
@@ -67,7 +69,7 @@ TEST(JointScenario, GivenVelocitiesMustBeOnesTheJointsAllow) {
       "  bat: {shape: cylinder, radius: 0.03, length: 0.8, mass: 1, position: [0, 0, -0.5],\n"
       "        angular_velocity: [0, 2, 0], velocity: [1, 0, 0]}\n"
       "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 1, 0]}\n" +
-          kSimulate,
+          kSimulateTenthSecond,
       4, 48, "bodies.bat.velocity", "they give [-1, 0, 0]");
 }
 
@@ -75,7 +77,7 @@ TEST(JointScenario, ASpeedMotorRunningFromTheStartFixesTheInitialRate) {
   expect_error(kBat +
                    "joints:\n  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 1, 0], "
                    "motor: {speed: 3}}\n" +
-                   kSimulate,
+                   kSimulateTenthSecond,
                5, 66, "joints.knob.motor", "the motor drives the hinge at 3 rad/s from the start");
 }
 
@@ -89,19 +91,19 @@ TEST(JointScenario, ForceElementsNameTheirBodiesAndNonNegativeConstants) {
   expect_error(kBat +
                    "forces:\n  - {type: spring, bodies: [ground, bat], at: [[0, 0, 1]], "
                    "stiffness: 10}\n" +
-                   kSimulate,
+                   kSimulateTenthSecond,
                5, 47, "forces[0].at", "give two points, one on each body; got 1");
   expect_error(kBat +
                    "forces:\n  - {type: torsional_spring, bodies: [ground, bat], "
                    "stiffness: -1}\n" +
-                   kSimulate,
+                   kSimulateTenthSecond,
                5, 64, "forces[0].stiffness", "stiffness must be >= 0");
-  expect_error(
-      kBat + "forces:\n  - {type: torsional_spring, body: bat, stiffness: 1}\n" + kSimulate, 5, 30,
-      "forces[0].body", "joins two bodies: bodies: [a, b]");
-  expect_error(
-      kBat + "forces:\n  - {type: impulse, body: bat, value: [1, 0, 0], time: 0}\n" + kSimulate, 5,
-      56, "forces[0].time", "an impulse acts after the start");
+  expect_error(kBat + "forces:\n  - {type: torsional_spring, body: bat, stiffness: 1}\n" +
+                   kSimulateTenthSecond,
+               5, 30, "forces[0].body", "joins two bodies: bodies: [a, b]");
+  expect_error(kBat + "forces:\n  - {type: impulse, body: bat, value: [1, 0, 0], time: 0}\n" +
+                   kSimulateTenthSecond,
+               5, 56, "forces[0].time", "an impulse acts after the start");
 }
 
 TEST(JointScenario, TheTrajectoryHasReactionAndWorkColumns) {
@@ -114,7 +116,7 @@ TEST(JointScenario, TheTrajectoryHasReactionAndWorkColumns) {
                          "0]}\n"
                          "forces:\n  - {type: impulse, name: hit, body: bat, at: [0, 0, -0.6], "
                          "value: [1, 0, 0], time: 0.05}\n"
-                      << kSimulate;
+                      << kSimulateTenthSecond;
   const auto result = test::run_tumble("run " + test::quote_for_shell(path) + " --out " +
                                        test::quote_for_shell(dir));
   ASSERT_EQ(result.status, 0) << result.out;

@@ -12,12 +12,13 @@
 #include <utility>
 #include <vector>
 
+#include "test_constants.hpp"
 #include "tumble/contact/landing_bound.hpp"
 
 namespace tumble {
 namespace {
 
-constexpr double kG = 9.81;
+using test::kG;
 
 PlaneContact floor_with(ContactSurface surface) {
   PlaneContact floor;
@@ -85,7 +86,7 @@ TEST(LandingBound, ATurningBoxOrDiskNeverReachesTheDepthBeforeTheBound) {
   const Mat3 R0 = Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   for (const double w : {5.0, 30.0}) {
     for (const double above : {0.05, 0.001}) {
-      SCOPED_TRACE(testing::Message() << "w " << w << ", lowest point " << above << " m up");
+      SCOPED_TRACE(::testing::Message() << "w " << w << ", lowest point " << above << " m up");
       // The box, its COM placed so its lowest vertex is `above` the plane.
       const double box_reach = Vec3(0.2, 0.15, 0.1).norm();
       Vec3 r_G(0, 0, 0);

@@ -8,13 +8,14 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
-#include <numbers>
 #include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "expect_throw.hpp"
+#include "test_constants.hpp"
+#include "test_math.hpp"
 #include "tumble/inertia/mass_properties.hpp"
 #include "tumble/inertia/mesh.hpp"
 #include "tumble/inertia/shapes.hpp"
@@ -23,11 +24,9 @@
 namespace tumble {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
-double max_abs(const Mat3& A) {
-  return A.cwiseAbs().maxCoeff();
-}
+using test::max_abs;
 
 std::string mesh_path(const std::string& name) {
   return std::string(TUMBLE_TEST_DATA_DIR) + "/meshes/" + name;
@@ -43,7 +42,7 @@ Shape solid(ShapeKind kind, double radius, double length_or_height = 0.0) {
   s.height = length_or_height;
   return s;
 }
-Shape tube(double inner, double outer, double length) {
+Shape tube_shape(double inner, double outer, double length) {
   Shape s;
   s.kind = ShapeKind::Tube;
   s.inner_radius = inner;
@@ -51,7 +50,7 @@ Shape tube(double inner, double outer, double length) {
   s.length = length;
   return s;
 }
-Shape box(const Vec3& size) {
+Shape box_shape(const Vec3& size) {
   Shape s;
   s.kind = ShapeKind::Box;
   s.size = size;
@@ -83,14 +82,14 @@ std::string write_temp_file(const std::string& name, const std::string& contents
 TEST(MeshIntegrator, BoxIsExact) {
   for (const Vec3& size : {Vec3(1, 1, 1), Vec3(4, 1, 2), Vec3(0.01, 3, 0.5)}) {
     for (const double M : {1.0, 12.0}) {
-      const MassProperties mesh = tessellated(box(size), 0, M);
-      const MassProperties exact = shape_mass_properties(box(size), M);
+      const MassProperties mesh = tessellated(box_shape(size), 0, M);
+      const MassProperties exact = shape_mass_properties(box_shape(size), M);
       EXPECT_NEAR(mesh.mass, M, 1e-12 * M);
       EXPECT_LE(mesh.com.norm(), 1e-12 * size.maxCoeff());
       EXPECT_LE(max_abs(mesh.inertia_about_com - exact.inertia_about_com),
                 1e-12 * max_abs(exact.inertia_about_com))
           << mesh.inertia_about_com;
-      EXPECT_NEAR(mesh_volume(tessellate(box(size), 0)), size.prod(), 1e-12 * size.prod());
+      EXPECT_NEAR(mesh_volume(tessellate(box_shape(size), 0)), size.prod(), 1e-12 * size.prod());
     }
   }
 }
@@ -170,7 +169,7 @@ TEST(MeshIntegrator, RigidMotionMovesTheCOMAndRotatesTheInertiaEvenFarFromTheOri
 TEST(MeshIntegrator, RotatedBoxAgreesWithExpressInParent) {
   std::mt19937 rng(8);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Shape prism = box(Vec3(4, 1, 2));
+  const Shape prism = box_shape(Vec3(4, 1, 2));
   const MassProperties body = shape_mass_properties(prism, 12.0);
   for (int trial = 0; trial < 10; ++trial) {
     const Mat3 R = exp_so3(kPi * Vec3(u(rng), u(rng), u(rng)));
@@ -186,15 +185,15 @@ TEST(MeshIntegrator, RotatedBoxAgreesWithExpressInParent) {
 
 TEST(MeshIntegrator, NonPositiveDensityIsRefused) {
   expect_throw_containing<InertiaError>(
-      [] { mesh_mass_properties(tessellate(box(Vec3(1, 1, 1)), 0), -2.0); },
+      [] { mesh_mass_properties(tessellate(box_shape(Vec3(1, 1, 1)), 0), -2.0); },
       "mesh density must be > 0 (kg/m^3), got -2");
 }
 
 // ---- Tessellations against the closed forms ----------------------------------------------------
 
 TEST(Tessellation, EverySolidIsClosedOutwardAndCentredAtItsCOM) {
-  const std::vector<Shape> shapes = {box(Vec3(1, 2, 3)), solid(ShapeKind::Cylinder, 0.5, 2.0),
-                                     tube(0.3, 0.5, 1.0), solid(ShapeKind::Sphere, 0.7),
+  const std::vector<Shape> shapes = {box_shape(Vec3(1, 2, 3)), solid(ShapeKind::Cylinder, 0.5, 2.0),
+                                     tube_shape(0.3, 0.5, 1.0), solid(ShapeKind::Sphere, 0.7),
                                      solid(ShapeKind::Cone, 0.4, 1.0)};
   for (const Shape& s : shapes) {
     for (const int n : {3, 8, 64}) {
@@ -225,8 +224,8 @@ TEST(Tessellation, InscribedPolygonsGiveExactlyTheClosedFormsWithRSquaredScaled)
 
     const Shape cyl = solid(ShapeKind::Cylinder, 0.6, 1.7);
     const Shape cyl_scaled = solid(ShapeKind::Cylinder, 0.6 * sqrt_f, 1.7);
-    const Shape pipe = tube(0.35, 0.6, 0.9);
-    const Shape pipe_scaled = tube(0.35 * sqrt_f, 0.6 * sqrt_f, 0.9);
+    const Shape pipe = tube_shape(0.35, 0.6, 0.9);
+    const Shape pipe_scaled = tube_shape(0.35 * sqrt_f, 0.6 * sqrt_f, 0.9);
     const Shape cone = solid(ShapeKind::Cone, 0.6, 1.4);
     const Shape cone_scaled = solid(ShapeKind::Cone, 0.6 * sqrt_f, 1.4);
     for (const auto& [shape, scaled] :
@@ -258,7 +257,7 @@ TEST(Tessellation, ErrorAgainstTheClosedFormsFallsAtSecondOrder) {
     double bound_per_d2;  // bound on the relative error at the finest n, over d^2
   };
   const std::vector<Case> cases = {{solid(ShapeKind::Cylinder, 0.5, 2.0), 1.0 / 6},
-                                   {tube(0.3, 0.5, 1.0), 1.0 / 6},
+                                   {tube_shape(0.3, 0.5, 1.0), 1.0 / 6},
                                    {solid(ShapeKind::Cone, 0.4, 1.0), 1.0 / 6},
                                    {solid(ShapeKind::Sphere, 0.7), 1.0 / 2}};
   const std::vector<int> resolutions = {16, 32, 64, 128};
@@ -280,7 +279,7 @@ TEST(Tessellation, OnlySolidsAtAUsableResolution) {
                                      "cannot tessellate a ring");
   expect_throw_containing<MeshError>([] { tessellate(solid(ShapeKind::Cylinder, 1.0, 1.0), 2); },
                                      "tessellation resolution must be >= 3 segments around, got 2");
-  expect_throw_containing<InertiaError>([] { tessellate(tube(0.5, 0.4, 1.0), 16); },
+  expect_throw_containing<InertiaError>([] { tessellate(tube_shape(0.5, 0.4, 1.0), 16); },
                                         "tube inner_radius 0.5 must be less than outer_radius 0.4");
 }
 
@@ -422,7 +421,7 @@ TEST(MeshShape, UnitCubeFileMatchesTheBoxClosedForm) {
   EXPECT_EQ(mp.mass, 3.0);
   EXPECT_EQ(mp.com, Vec3::Zero());
   EXPECT_LE(max_abs(mp.inertia_about_com -
-                    shape_mass_properties(box(Vec3(1, 1, 1)), 3.0).inertia_about_com),
+                    shape_mass_properties(box_shape(Vec3(1, 1, 1)), 3.0).inertia_about_com),
             1e-15 * 0.5);
 }
 

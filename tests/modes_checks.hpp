@@ -1,7 +1,7 @@
 #pragma once
-// What the tests of `tumble modes` share: the examples' paths, the modes of a scenario file, and
-// the bar for an eigenvalue against its closed form (1e-9 relative, the issue's: the Jacobian is
-// exact to round-off, so the eigenvalues are good to ~1e-14).
+// What the tests of `tumble modes` share: the examples' paths (test::example, test_files.hpp), the
+// modes of a scenario file, and the bar for an eigenvalue against its closed form (1e-9 relative,
+// the issue's: the Jacobian is exact to round-off, so the eigenvalues are good to ~1e-14).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,15 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "test_files.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble::test {
 
 constexpr double kModesRelative = 1e-9;
-
-inline std::string example(const std::string& name) {
-  return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + name;
-}
 
 inline ScenarioModes modes_of(const std::string& path,
                               const std::vector<ParameterOverride>& sets = {}) {

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -23,16 +22,17 @@
 #include <vector>
 
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 #include "tumble/math/rotation.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kG;
+using test::kPi;
 using test::Row;
 using test::run_inline_scenario;
 using test::upward_zero_crossings;
-constexpr double kG = 9.81;
-constexpr double kPi = std::numbers::pi;
 
 // The sum of every element's work at a row (forces, springs, motors, impulses, locks).
 double total_element_work(const Row& row) {
@@ -405,7 +405,7 @@ TEST(ReactionWheel, TheExampleSlewsTheSatelliteANinetyDegreeTurnAndStops) {
 
 // ---- 4. A linear spring from ground ---------------------------------------------------------
 
-struct Oscillator {
+struct SpringMassDamper {
   double m, k, c;
   bool gravity;
 };
@@ -413,7 +413,7 @@ struct Oscillator {
 // A ball hanging from a spring (rest length 1 m) fixed to ground at the origin, along z; y is its
 // displacement below the equilibrium l_eq = 1 + m g / k (1 without gravity), started at y0
 // moving down at ydot0. The spring's points are the origin and the ball's COM.
-std::string oscillator_scenario(const Oscillator& o, double y0, double ydot0, double duration,
+std::string oscillator_scenario(const SpringMassDamper& o, double y0, double ydot0, double duration,
                                 double output_every) {
   const double l_eq = 1.0 + (o.gravity ? o.m * kG / o.k : 0.0);
   return fmt::format(
@@ -440,9 +440,10 @@ TEST(LinearSpring, PeriodEnvelopeAndTheWorkOfItsDamper) {
   // the summary's KE - KE0 = W_gravity + sum W), so its damper's work is W + Delta(k (l - l0)^2
   // / 2) and E0 - E is minus that, which the exact motion gives as
   // k (y0^2 - y^2) / 2 + m (ydot0^2 - ydot^2) / 2.
-  for (const Oscillator& o : {Oscillator{1.0, 100.0, 0.0, false}, Oscillator{2.5, 40.0, 0.0, true},
-                              Oscillator{0.5, 200.0, 1.0, true}, Oscillator{3.0, 30.0, 2.0, false},
-                              Oscillator{1.0, 10.0, 0.5, true}}) {
+  for (const SpringMassDamper& o :
+       {SpringMassDamper{1.0, 100.0, 0.0, false}, SpringMassDamper{2.5, 40.0, 0.0, true},
+        SpringMassDamper{0.5, 200.0, 1.0, true}, SpringMassDamper{3.0, 30.0, 2.0, false},
+        SpringMassDamper{1.0, 10.0, 0.5, true}}) {
     const double gamma = o.c / (2 * o.m);
     const double w_d = std::sqrt(o.k / o.m - gamma * gamma);
     const double T = 2 * kPi / w_d;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
+#include "test_math.hpp"
 #include "tumble/integrators/integrator.hpp"
 
 namespace tumble {
@@ -14,13 +15,7 @@ namespace {
 
 using test::AllocationCounter;
 
-// q (x) (0, omega_B) / 2 into dydt at the quaternion's offset.
-void quaternion_rate(const VecX& y, Eigen::Index offset, const Vec3& omega_B, VecX& dydt) {
-  const double w = y[offset];
-  const Vec3 v = y.segment<3>(offset + 1);
-  dydt[offset] = -0.5 * v.dot(omega_B);
-  dydt.segment<3>(offset + 1) = 0.5 * (w * omega_B + v.cross(omega_B));
-}
+using test::quaternion_rate;
 
 // Torque-free asymmetric body, state (q (4), omega_B (3)): Euler's equations.
 class FreeBody7 : public OdeSystem {
@@ -72,7 +67,8 @@ class RigidBody13 : public OdeSystem {
 
 // Runs `steps` steps of `method` with dense output at three points inside each and a restart
 // half-way, and returns the allocations counted after start().
-long allocations_in_steps(const std::string& method, OdeSystem& system, const VecX& y0, int steps) {
+long allocations_in_steps_and_restart(const std::string& method, OdeSystem& system, const VecX& y0,
+                                      int steps) {
   StepControl control;
   control.rtol = 1e-8;
   control.atol = 1e-10;
@@ -114,8 +110,11 @@ TEST(NoAllocation, StepRestartAndDenseOutputAllocateNothing) {
   FreeBody7 body7;
   RigidBody13 body13;
   for (const std::string method : {"dopri5", "dop853", "rk4", "rkmk4"}) {
-    EXPECT_EQ(allocations_in_steps(method, body7, FreeBody7::initial_state(), 200), 0) << method;
-    EXPECT_EQ(allocations_in_steps(method, body13, RigidBody13::initial_state(), 200), 0) << method;
+    EXPECT_EQ(allocations_in_steps_and_restart(method, body7, FreeBody7::initial_state(), 200), 0)
+        << method;
+    EXPECT_EQ(allocations_in_steps_and_restart(method, body13, RigidBody13::initial_state(), 200),
+              0)
+        << method;
   }
 }
 

@@ -9,18 +9,18 @@
 
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <cmath>
-#include <numbers>
 
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kG;
+using test::kPi;
 using test::Row;
 using test::run_inline_scenario;
 using test::upward_zero_crossings;
-constexpr double kG = 9.81;
-constexpr double kPi = std::numbers::pi;
 
 // The upward zero crossings of a swing angle about y, read from each row's COM by angle_of (its
 // rate is omega_W.y, with the sign convention of the scenarios below).

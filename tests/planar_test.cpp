@@ -16,12 +16,12 @@
 namespace tumble {
 namespace {
 
-struct Case {
+struct PlanarCase {
   const char* example;  // examples/NAME.yaml and its planar statement examples/planar/NAME.yaml
   double rtol;          // the example's
 };
 
-void expect_same_motion(const Case& c) {
+void expect_same_motion(const PlanarCase& c) {
   const test::ScenarioRun planar = test::run_scenario(load_scenario(
       std::string(TUMBLE_SOURCE_DIR) + "/examples/planar/" + c.example + ".yaml", {}));
   const test::ScenarioRun spatial = test::run_scenario(

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "run_tumble.hpp"
+#include "test_files.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -24,11 +25,7 @@ using test::CommandResult;
 using test::run_tumble;
 
 using test::quote_for_shell;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::read_file;
 
 std::set<std::string> files_in(const fs::path& dir) {
   std::set<std::string> names;
@@ -91,7 +88,7 @@ TEST_F(Plot, DrawsAPngOfTheRequestedSize) {
                                      "--height 360 -o " +
                                      quote_for_shell(png.string()));
   ASSERT_EQ(r.status, 0) << r.out;
-  const std::string bytes = slurp(png);
+  const std::string bytes = read_file(png);
   ASSERT_GT(bytes.size(), 24u);
   // The PNG signature, then the IHDR chunk: length, "IHDR", width and height (big-endian).
   EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
@@ -109,7 +106,7 @@ TEST_F(Plot, DrawsAnSvgWithTheColumnTitlesAndUnits) {
       run_tumble("plot " + quote_for_shell(csv.string()) +
                  " --columns prism.wx,prism.wy,prism.wz -o " + quote_for_shell(svg.string()));
   ASSERT_EQ(r.status, 0) << r.out;
-  const std::string text = slurp(svg);
+  const std::string text = read_file(svg);
   EXPECT_EQ(text.rfind("<?xml", 0), 0u);
   for (const char* expected : {"<svg", "width=\"800\"", "height=\"500\"", ">prism.wx<",
                                ">prism.wy<", ">prism.wz<", ">t (s)<", ">rad/s<", "</svg>"}) {
@@ -125,7 +122,7 @@ TEST_F(Plot, PlotsAgainstAnotherColumn) {
       run_tumble("plot -x prism.wz --columns E " + quote_for_shell(csv.string()) + " -o " +
                  quote_for_shell(svg.string()));
   ASSERT_EQ(r.status, 0) << r.out;
-  const std::string text = slurp(svg);
+  const std::string text = read_file(svg);
   EXPECT_NE(text.find(">prism.wz (rad/s)<"), std::string::npos);
   EXPECT_NE(text.find(">E (J)<"), std::string::npos);
 }
@@ -192,7 +189,7 @@ TEST_F(Plot, TitleIsDrawnAsTextAndNeverRun) {
   // The SVG escapes & as &amp; and keeps the rest as it is.
   std::string drawn = title;
   drawn.replace(drawn.find(" & "), 3, " &amp; ");
-  EXPECT_NE(slurp(svg).find(">" + drawn + "<"), std::string::npos) << drawn;
+  EXPECT_NE(read_file(svg).find(">" + drawn + "<"), std::string::npos) << drawn;
 }
 
 TEST_F(Plot, FailureLeavesNoPartialFile) {
@@ -228,10 +225,10 @@ TEST_F(Plot, LinksPlantedBesideTheFigureAreNotWrittenThrough) {
                                      quote_for_shell(png.string()));
   ASSERT_EQ(r.status, 0) << r.out;
   for (const auto& entry : fs::directory_iterator(targets)) {
-    EXPECT_EQ(slurp(entry.path()), "kept") << entry.path() << " was written through";
+    EXPECT_EQ(read_file(entry.path()), "kept") << entry.path() << " was written through";
   }
   EXPECT_FALSE(fs::is_symlink(png));
-  EXPECT_EQ(slurp(png).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(read_file(png).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
 }
 
 TEST_F(Plot, MissingGnuplotExitsFiveAndSaysHowToInstallIt) {

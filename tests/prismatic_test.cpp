@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
@@ -19,8 +20,8 @@ namespace {
 using test::Row;
 using test::run_inline_scenario;
 
-constexpr double kG = 9.81;
-constexpr double kDeg = M_PI / 180.0;
+using test::kDeg;
+using test::kG;
 
 // A 2 kg block on a slider through its COM along u = (cos th, 0, -sin th) (down the slope for
 // th > 0), started at the spring's rest length with speed v0 along u; the spring runs from a

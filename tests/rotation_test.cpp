@@ -1,15 +1,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
+#include "test_constants.hpp"
 #include "tumble/math/rotation.hpp"
 
 namespace tumble {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 Vec3 random_unit(std::mt19937& rng) {
   std::normal_distribution<double> n(0.0, 1.0);

@@ -8,19 +8,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "ramp_checks.hpp"
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kDeg;
+using test::kG;
 using test::Row;
 using test::run_inline_scenario;
-constexpr double kG = 9.81;
-constexpr double kDeg = std::numbers::pi / 180;
 
 // A drinks can: radius 0.033 m, length 0.115 m, 0.35 kg.
 constexpr double kCanRadius = 0.033, kCanHalfLength = 0.0575, kCanMass = 0.35;

@@ -15,12 +15,14 @@
 #include <string>
 #include <vector>
 
+#include "test_constants.hpp"
+
 namespace tumble {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 // A folder of its own for each test, so that the scenarios it writes do not collide.
 fs::path test_dir() {
@@ -31,7 +33,7 @@ fs::path test_dir() {
   return dir;
 }
 
-fs::path write_file(const std::string& name, const std::string& text) {
+fs::path write_in_test_dir(const std::string& name, const std::string& text) {
   const fs::path path = test_dir() / name;
   std::ofstream(path) << text;
   return path;
@@ -39,7 +41,7 @@ fs::path write_file(const std::string& name, const std::string& text) {
 
 Scenario load_text(const std::string& text, const std::vector<ParameterOverride>& overrides = {},
                    const std::string& name = "scenario.yaml") {
-  return load_scenario(write_file(name, text).string(), overrides);
+  return load_scenario(write_in_test_dir(name, text).string(), overrides);
 }
 
 struct Expected {
@@ -50,9 +52,9 @@ struct Expected {
 };
 
 // Loads the text, expecting a ScenarioError at the place and with the key and message given.
-void expect_error(const std::string& text, const Expected& expected,
-                  const std::vector<ParameterOverride>& overrides = {}) {
-  const fs::path path = write_file("invalid.yaml", text);
+void expect_load_error(const std::string& text, const Expected& expected,
+                       const std::vector<ParameterOverride>& overrides = {}) {
+  const fs::path path = write_in_test_dir("invalid.yaml", text);
   try {
     load_scenario(path.string(), overrides);
     ADD_FAILURE() << "no error; expected one at " << expected.line << ":" << expected.column
@@ -261,7 +263,7 @@ TEST(Scenario, SetOverridesAParameterAndTheValuesThatUseIt) {
 
 TEST(Scenario, UnknownSetNameIsACommandLineErrorListingTheParameters) {
   const fs::path path =
-      write_file("p.yaml", kHead + "parameters: {a: 4, b: 1, c: 2}\n" + kSphere + kSimulate);
+      write_in_test_dir("p.yaml", kHead + "parameters: {a: 4, b: 1, c: 2}\n" + kSphere + kSimulate);
   try {
     load_scenario(path.string(), {{"zz", "3"}});
     ADD_FAILURE() << "no error";
@@ -269,7 +271,7 @@ TEST(Scenario, UnknownSetNameIsACommandLineErrorListingTheParameters) {
     EXPECT_EQ(std::string(error.what()),
               "--set zz: no parameter zz in " + path.string() + "; its parameters are a, b, c");
   }
-  const fs::path none = write_file("none.yaml", kHead + kSphere + kSimulate);
+  const fs::path none = write_in_test_dir("none.yaml", kHead + kSphere + kSimulate);
   EXPECT_THROW(
       {
         try {
@@ -365,9 +367,9 @@ TEST(Scenario, DensityMultipliesTheShapesMeasure) {
 }
 
 TEST(Scenario, AMeshIsFoundBesideTheScenario) {
-  write_file("cube.obj",
-             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
-             "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n");
+  write_in_test_dir("cube.obj",
+                    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+                    "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n");
   const Scenario s = load_text(
       kHead + "bodies:\n  cube: {shape: mesh, file: cube.obj, density: 600}\n" + kSimulate);
   const BodySpec& cube = s.bodies[0];
@@ -469,110 +471,112 @@ TEST(ScenarioError, WhatReadsFileLineColumnKeyWhy) {
 }
 
 TEST(ScenarioError, UnknownKeySuggestsTheClosestValidKey) {
-  expect_error(kHead +
-                   "bodies:\n"
-                   "  prism:\n"
-                   "    shape: box\n"
-                   "    size: [4, 1, 2]\n"
-                   "    mass: 12\n"
-                   "    angular_velocty: [0, 0.01, 1]\n" +
-                   kSimulate,
-               {7, 5, "bodies.prism.angular_velocty",
-                "unknown key 'angular_velocty'; did you mean 'angular_velocity'?"});
-  expect_error(kHead + kSphere + "simulte: {duration: 1}\n",
-               {4, 1, "simulte", "unknown key 'simulte'; did you mean 'simulate'?"});
-  expect_error(kHead + kSphere + "simulate: {duration: 1, rtoll: 1e-6}\n",
-               {4, 25, "simulate.rtoll", "did you mean 'rtol'?"});
-  expect_error(kHead + "bodies:\n  b: {shpe: sphere, radius: 1, mass: 1}\n" + kSimulate,
-               {3, 7, "bodies.b.shpe", "unknown key 'shpe'; did you mean 'shape'?"});
+  expect_load_error(kHead +
+                        "bodies:\n"
+                        "  prism:\n"
+                        "    shape: box\n"
+                        "    size: [4, 1, 2]\n"
+                        "    mass: 12\n"
+                        "    angular_velocty: [0, 0.01, 1]\n" +
+                        kSimulate,
+                    {7, 5, "bodies.prism.angular_velocty",
+                     "unknown key 'angular_velocty'; did you mean 'angular_velocity'?"});
+  expect_load_error(kHead + kSphere + "simulte: {duration: 1}\n",
+                    {4, 1, "simulte", "unknown key 'simulte'; did you mean 'simulate'?"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1, rtoll: 1e-6}\n",
+                    {4, 25, "simulate.rtoll", "did you mean 'rtol'?"});
+  expect_load_error(kHead + "bodies:\n  b: {shpe: sphere, radius: 1, mass: 1}\n" + kSimulate,
+                    {3, 7, "bodies.b.shpe", "unknown key 'shpe'; did you mean 'shape'?"});
   // A key with no near match lists the valid ones.
-  expect_error(
+  expect_load_error(
       kHead + kSphere + kSimulate + "output: {movie: a.mp4}\n",
       {5, 10, "output.movie", "unknown key 'movie' (output takes: trajectory, animation, events)"});
 }
 
 TEST(ScenarioError, ADimensionOfAnotherShapeIsAnUnknownKey) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  b: {shape: box, size: [1, 1, 1], radius: 2, mass: 1}\n" + kSimulate,
       {3, 36, "bodies.b.radius", "'radius' is not a dimension of a box, which takes size"});
 }
 
 TEST(ScenarioError, WrongTypesAreErrors) {
-  expect_error(kHead + "bodies: prism\n" + kSimulate,
-               {2, 9, "bodies", "expected a mapping of bodies by name"});
-  expect_error(
+  expect_load_error(kHead + "bodies: prism\n" + kSimulate,
+                    {2, 9, "bodies", "expected a mapping of bodies by name"});
+  expect_load_error(
       kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1, position: [1, 2]}\n" + kSimulate,
       {3, 52, "bodies.b.position", "expected a list of 3 numbers [x, y, z], got a list of 2"});
-  expect_error(kHead + "bodies:\n  b: {shape: sphere, radius: [1], mass: 1}\n" + kSimulate,
-               {3, 30, "bodies.b.radius", "expected a number or an expression, got a list of 1"});
-  expect_error(kHead + kSphere + "simulate: {duration: 1, integrator: [rk4]}\n",
-               {4, 37, "simulate.integrator", "expected a word or text, got a list of 1"});
+  expect_load_error(
+      kHead + "bodies:\n  b: {shape: sphere, radius: [1], mass: 1}\n" + kSimulate,
+      {3, 30, "bodies.b.radius", "expected a number or an expression, got a list of 1"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1, integrator: [rk4]}\n",
+                    {4, 37, "simulate.integrator", "expected a word or text, got a list of 1"});
 }
 
 TEST(ScenarioError, AMissingRequiredKeyIsReportedAtItsParent) {
-  expect_error(kHead + kSphere + "simulate:\n  rtol: 1e-6\n",
-               {4, 1, "simulate.duration", "missing required key 'duration'"});
-  expect_error(
+  expect_load_error(kHead + kSphere + "simulate:\n  rtol: 1e-6\n",
+                    {4, 1, "simulate.duration", "missing required key 'duration'"});
+  expect_load_error(
       kHead + "bodies:\n  b:\n    shape: cylinder\n    radius: 1\n    mass: 1\n" + kSimulate,
       {3, 3, "bodies.b.length", "missing required key 'length' (a cylinder's length"});
-  expect_error(kHead + "bodies:\n  b: {shape: sphere, radius: 1}\n" + kSimulate,
-               {3, 3, "bodies.b.mass",
-                "missing required key 'mass' (kg, > 0; or density: in "
-                "kg/m^3)"});
-  expect_error(kHead + kSimulate, {1, 1, "bodies", "missing required key 'bodies'"});
-  expect_error("bodies: {}\n", {1, 1, "tumble", "missing required key 'tumble'"});
-  expect_error(kHead + kSphere, {1, 1, "simulate", "missing required key 'simulate'"});
+  expect_load_error(kHead + "bodies:\n  b: {shape: sphere, radius: 1}\n" + kSimulate,
+                    {3, 3, "bodies.b.mass",
+                     "missing required key 'mass' (kg, > 0; or density: in "
+                     "kg/m^3)"});
+  expect_load_error(kHead + kSimulate, {1, 1, "bodies", "missing required key 'bodies'"});
+  expect_load_error("bodies: {}\n", {1, 1, "tumble", "missing required key 'tumble'"});
+  expect_load_error(kHead + kSphere, {1, 1, "simulate", "missing required key 'simulate'"});
 }
 
 TEST(ScenarioError, MassMustBePositive) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  b:\n    shape: sphere\n    radius: 0.1\n    mass: -2\n" + kSimulate,
       {6, 11, "bodies.b.mass", "mass must be > 0 (kg), got -2"});
-  expect_error(kHead + "bodies:\n  b: {shape: sphere, radius: 0.1, density: 0}\n" + kSimulate,
-               {3, 44, "bodies.b.density", "density must be > 0 (kg/m^3), got 0"});
+  expect_load_error(kHead + "bodies:\n  b: {shape: sphere, radius: 0.1, density: 0}\n" + kSimulate,
+                    {3, 44, "bodies.b.density", "density must be > 0 (kg/m^3), got 0"});
 }
 
 TEST(ScenarioError, MassAndDensityTogetherAreAnError) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  b: {shape: sphere, radius: 0.1, mass: 1, density: 5}\n" + kSimulate,
       {3, 44, "bodies.b.density", "give mass or density, not both"});
 }
 
 TEST(ScenarioError, ANonPositiveDefiniteInertiaIsAnError) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1, inertia: [1, 0, 1]}\n" + kSimulate,
       {3, 51, "bodies.b.inertia", "inertia is not positive definite"});
   // A free rod has no inertia about its axis: the error says so and gives the fixes (held by a
   // hinge across it, it is a valid slender body: slender_body_test.cpp).
-  expect_error(kHead + "bodies:\n  stick: {shape: rod, length: 1, mass: 1}\n" + kSimulate,
-               {3, 18, "bodies.stick.shape",
-                "a rod has no inertia about its own axis: free, nothing would say how it turns "
-                "about that line; hold it with a hinge across it"});
+  expect_load_error(
+      kHead + "bodies:\n  stick: {shape: rod, length: 1, mass: 1}\n" + kSimulate,
+      {3, 18, "bodies.stick.shape",
+       "a rod has no inertia about its own axis: free, nothing would say how it turns "
+       "about that line; hold it with a hinge across it"});
   // Two points alone lie on one line.
-  expect_error(kHead +
-                   "bodies:\n  pair:\n    parts:\n"
-                   "      - {shape: point, mass: 1}\n"
-                   "      - {shape: point, mass: 1, position: [1, 0, 0]}\n" +
-                   kSimulate,
-               {4, 5, "bodies.pair.parts",
-                "parts on one line have no inertia about it: free, nothing would say how it "
-                "turns about that line"});
+  expect_load_error(kHead +
+                        "bodies:\n  pair:\n    parts:\n"
+                        "      - {shape: point, mass: 1}\n"
+                        "      - {shape: point, mass: 1, position: [1, 0, 0]}\n" +
+                        kSimulate,
+                    {4, 5, "bodies.pair.parts",
+                     "parts on one line have no inertia about it: free, nothing would say how it "
+                     "turns about that line"});
 }
 
 TEST(ScenarioError, TheTriangleInequalityOfPrincipalMomentsIsChecked) {
-  expect_error(kHead +
-                   "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
-                   "    inertia: [1, 1, 3]\n" +
-                   kSimulate,
-               {7, 14, "bodies.b.inertia", "break the triangle inequality: 3 > 1 + 1 by 1"});
+  expect_load_error(kHead +
+                        "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
+                        "    inertia: [1, 1, 3]\n" +
+                        kSimulate,
+                    {7, 14, "bodies.b.inertia", "break the triangle inequality: 3 > 1 + 1 by 1"});
 }
 
 TEST(ScenarioError, ImpossibleDimensionsAreErrors) {
-  expect_error(kHead + "bodies:\n  b: {shape: sphere, radius: -1, mass: 1}\n" + kSimulate,
-               {3, 30, "bodies.b.radius", "radius must be > 0 (m), got -1"});
-  expect_error(kHead + "bodies:\n  b: {shape: box, size: [1, 0, 2], mass: 1}\n" + kSimulate,
-               {3, 29, "bodies.b.size[1]", "size[1] must be > 0 (m), got 0"});
-  expect_error(
+  expect_load_error(kHead + "bodies:\n  b: {shape: sphere, radius: -1, mass: 1}\n" + kSimulate,
+                    {3, 30, "bodies.b.radius", "radius must be > 0 (m), got -1"});
+  expect_load_error(kHead + "bodies:\n  b: {shape: box, size: [1, 0, 2], mass: 1}\n" + kSimulate,
+                    {3, 29, "bodies.b.size[1]", "size[1] must be > 0 (m), got 0"});
+  expect_load_error(
       kHead +
           "bodies:\n  pipe: {shape: tube, inner_radius: 0.2, outer_radius: 0.1, "
           "length: 1, mass: 1}\n" +
@@ -581,29 +585,30 @@ TEST(ScenarioError, ImpossibleDimensionsAreErrors) {
 }
 
 TEST(ScenarioError, AZeroAxisIsAnError) {
-  expect_error(kHead +
-                   "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
-                   "    orientation: {axis: [0, 0, 0], angle: 1}\n" +
-                   kSimulate,
-               {7, 25, "bodies.b.orientation.axis", "axis [0, 0, 0] has no direction"});
+  expect_load_error(kHead +
+                        "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
+                        "    orientation: {axis: [0, 0, 0], angle: 1}\n" +
+                        kSimulate,
+                    {7, 25, "bodies.b.orientation.axis", "axis [0, 0, 0] has no direction"});
 }
 
 TEST(ScenarioError, ANonOrthonormalMatrixIsAnError) {
-  expect_error(kHead +
-                   "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
-                   "    orientation:\n      matrix: [[1, 0, 0], [0, 1, 0.01], [0, 0, 1]]\n" +
-                   kSimulate,
-               {8, 15, "bodies.b.orientation.matrix",
-                "matrix is not orthonormal: max|R^T R - I| = 0.01 exceeds 1e-09"});
-  expect_error(kHead +
-                   "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
-                   "    orientation:\n      matrix: [[1, 0, 0], [0, 1, 0], [0, 0, -1]]\n" +
-                   kSimulate,
-               {8, 15, "bodies.b.orientation.matrix", "matrix has determinant -1: a reflection"});
+  expect_load_error(kHead +
+                        "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
+                        "    orientation:\n      matrix: [[1, 0, 0], [0, 1, 0.01], [0, 0, 1]]\n" +
+                        kSimulate,
+                    {8, 15, "bodies.b.orientation.matrix",
+                     "matrix is not orthonormal: max|R^T R - I| = 0.01 exceeds 1e-09"});
+  expect_load_error(
+      kHead +
+          "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
+          "    orientation:\n      matrix: [[1, 0, 0], [0, 1, 0], [0, 0, -1]]\n" +
+          kSimulate,
+      {8, 15, "bodies.b.orientation.matrix", "matrix has determinant -1: a reflection"});
 }
 
 TEST(ScenarioError, AZeroQuaternionIsAnError) {
-  expect_error(
+  expect_load_error(
       kHead +
           "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
           "    orientation: {quaternion: [0, 0, 0, 0]}\n" +
@@ -612,51 +617,53 @@ TEST(ScenarioError, AZeroQuaternionIsAnError) {
 }
 
 TEST(ScenarioError, OneFormOfOrientationAtATime) {
-  expect_error(kHead +
-                   "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
-                   "    orientation: {axis: [0, 0, 1], angle: 1, quaternion: [1, 0, 0, 0]}\n" +
-                   kSimulate,
-               {7, 46, "bodies.b.orientation.quaternion",
-                "give one form of orientation, not both 'axis' and 'quaternion'"});
-  expect_error(kHead +
-                   "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
-                   "    orientation: sideways\n" +
-                   kSimulate,
-               {7, 18, "bodies.b.orientation", "expected identity, {axis: [x, y, z], angle: rad}"});
+  expect_load_error(kHead +
+                        "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
+                        "    orientation: {axis: [0, 0, 1], angle: 1, quaternion: [1, 0, 0, 0]}\n" +
+                        kSimulate,
+                    {7, 46, "bodies.b.orientation.quaternion",
+                     "give one form of orientation, not both 'axis' and 'quaternion'"});
+  expect_load_error(
+      kHead +
+          "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: 1\n"
+          "    orientation: sideways\n" +
+          kSimulate,
+      {7, 18, "bodies.b.orientation", "expected identity, {axis: [x, y, z], angle: rad}"});
 }
 
 TEST(ScenarioError, ABadExpressionNamesItAndMuParsersMessage) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  b:\n    shape: sphere\n    radius: 1\n    mass: \"2*(3\"\n" + kSimulate,
       {6, 11, "bodies.b.mass", "expression '2*(3': Missing parenthesis"});
 }
 
 TEST(ScenarioError, AnUnknownParameterInAnExpressionListsTheParameters) {
-  expect_error(kHead +
-                   "parameters: {L: 2}\nbodies:\n  b:\n    shape: sphere\n    radius: 1\n"
-                   "    mass: 3*Q\n" +
-                   kSimulate,
-               {7, 11, "bodies.b.mass",
-                "expression '3*Q': Unexpected token \"Q\" found at position 2.; the parameters "
-                "defined here are L"});
+  expect_load_error(
+      kHead +
+          "parameters: {L: 2}\nbodies:\n  b:\n    shape: sphere\n    radius: 1\n"
+          "    mass: 3*Q\n" +
+          kSimulate,
+      {7, 11, "bodies.b.mass",
+       "expression '3*Q': Unexpected token \"Q\" found at position 2.; the parameters "
+       "defined here are L"});
   // A parameter may use only those above it.
-  expect_error(kHead + "parameters:\n  a: 2*b\n  b: 1\n" + kSphere + kSimulate,
-               {3, 6, "parameters.a", "Unexpected token \"b\""});
+  expect_load_error(kHead + "parameters:\n  a: 2*b\n  b: 1\n" + kSphere + kSimulate,
+                    {3, 6, "parameters.a", "Unexpected token \"b\""});
 }
 
 // Every key that takes an expression refuses an assignment, located at the key (an expression
 // only reads its names: red-team finding).
 TEST(ScenarioError, AnExpressionThatAssignsIsLocated) {
   const std::string refused = "'=' would assign a value; an expression only reads its names";
-  expect_error(kHead + "parameters:\n  a: 2\n  b: a = 3\n" + kSphere + kSimulate,
-               {4, 6, "parameters.b", "expression 'a = 3': " + refused});
-  expect_error(kHead +
-                   "parameters: {a: 2}\nbodies:\n  b:\n    shape: sphere\n    radius: 1\n"
-                   "    mass: \"1 + (q = 2)\"\n" +
-                   kSimulate,
-               {7, 11, "bodies.b.mass", "expression '1 + (q = 2)': " + refused});
-  expect_error(kHead + kSphere + "simulate: {duration: \"a += 1\"}\n",
-               {4, 22, "simulate.duration", "expression 'a += 1': " + refused});
+  expect_load_error(kHead + "parameters:\n  a: 2\n  b: a = 3\n" + kSphere + kSimulate,
+                    {4, 6, "parameters.b", "expression 'a = 3': " + refused});
+  expect_load_error(kHead +
+                        "parameters: {a: 2}\nbodies:\n  b:\n    shape: sphere\n    radius: 1\n"
+                        "    mass: \"1 + (q = 2)\"\n" +
+                        kSimulate,
+                    {7, 11, "bodies.b.mass", "expression '1 + (q = 2)': " + refused});
+  expect_load_error(kHead + kSphere + "simulate: {duration: \"a += 1\"}\n",
+                    {4, 22, "simulate.duration", "expression 'a += 1': " + refused});
   // A comparison with == is a number, 1 or 0, as before.
   const Scenario scenario =
       load_text(kHead + "parameters: {a: 2, b: a == 2}\n" + kSphere + kSimulate);
@@ -665,7 +672,7 @@ TEST(ScenarioError, AnExpressionThatAssignsIsLocated) {
 
 // A comma outside a function's brackets gives two values, of which muParser would keep the last.
 TEST(ScenarioError, AnExpressionOfTwoValuesIsLocated) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  b:\n    shape: sphere\n    radius: \"1, 2\"\n    mass: 1\n" + kSimulate,
       {5, 13, "bodies.b.radius", "expression '1, 2' gives 2 values"});
 }
@@ -695,18 +702,18 @@ TEST(ScenarioError, AMillionParametersAreReadInLinearTime) {
 }
 
 TEST(ScenarioError, AReservedParameterNameIsAnError) {
-  expect_error(kHead + "parameters: {pi: 3}\n" + kSphere + kSimulate,
-               {2, 14, "parameters.pi", "'pi' is reserved"});
+  expect_load_error(kHead + "parameters: {pi: 3}\n" + kSphere + kSimulate,
+                    {2, 14, "parameters.pi", "'pi' is reserved"});
 }
 
 TEST(ScenarioError, AYamlSyntaxErrorIsReportedAtTheParsersMark) {
-  expect_error(kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1\n" + kSimulate,
-               {4, 9, "", "YAML syntax error: end of map flow not found"});
+  expect_load_error(kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1\n" + kSimulate,
+                    {4, 9, "", "YAML syntax error: end of map flow not found"});
 }
 
 TEST(ScenarioError, OnlyFormatVersionOneIsRead) {
-  expect_error("tumble: 2\n" + kSphere + kSimulate,
-               {1, 9, "tumble", "unsupported format version 2; this tumble reads 1"});
+  expect_load_error("tumble: 2\n" + kSphere + kSimulate,
+                    {1, 9, "tumble", "unsupported format version 2; this tumble reads 1"});
 }
 
 TEST(ScenarioError, AMissingFileCannotBeRead) {
@@ -722,88 +729,90 @@ TEST(ScenarioError, AMissingFileCannotBeRead) {
               path + ":0:0: cannot be read: no such file (check the path)");
   }
   EXPECT_THROW(load_scenario(test_dir().string(), {}), ScenarioError);
-  expect_error("", {1, 1, "", "the file is empty"});
+  expect_load_error("", {1, 1, "", "the file is empty"});
 }
 
 TEST(ScenarioError, AnUnknownForceTypeListsTheTypes) {
-  expect_error(
+  expect_load_error(
       kHead + kSphere + "forces:\n  - {type: forse, body: ball, value: [1, 0, 0]}\n" + kSimulate,
       {5, 12, "forces[0].type",
        "unknown type 'forse'; did you mean 'force'? (the types are force, torque, impulse, "
        "spring, torsional_spring)"});
-  expect_error(kHead + kSphere +
-                   "forces:\n  - {type: torque, body: ball, value: [1, 0, 0], at: [1, 0, 0]}\n" +
-                   kSimulate,
-               {5, 50, "forces[0].at", "a torque has no point of application"});
+  expect_load_error(
+      kHead + kSphere +
+          "forces:\n  - {type: torque, body: ball, value: [1, 0, 0], at: [1, 0, 0]}\n" + kSimulate,
+      {5, 50, "forces[0].at", "a torque has no point of application"});
 }
 
 TEST(ScenarioError, AForceMustNameABody) {
-  expect_error(
+  expect_load_error(
       kHead + kSphere + "forces:\n  - {type: force, body: bal, value: [1, 0, 0]}\n" + kSimulate,
       {5, 25, "forces[0].body",
        "no body 'bal' in bodies; did you mean 'ball'? (the bodies are ball)"});
-  expect_error(
+  expect_load_error(
       kHead + kSphere + "forces:\n  - {type: force, body: ground, value: [1, 0, 0]}\n" + kSimulate,
       {5, 25, "forces[0].body", "a load on ground does nothing"});
 }
 
 TEST(ScenarioError, AScheduleMustEndAfterItStarts) {
-  expect_error(kHead + kSphere +
-                   "forces:\n  - {type: force, body: ball, value: [1, 0, 0], from: 2, to: 1}\n" +
-                   kSimulate,
-               {5, 62, "forces[0].to", "to (1 s) must be later than from (2 s)"});
+  expect_load_error(
+      kHead + kSphere +
+          "forces:\n  - {type: force, body: ball, value: [1, 0, 0], from: 2, to: 1}\n" + kSimulate,
+      {5, 62, "forces[0].to", "to (1 s) must be later than from (2 s)"});
 }
 
 TEST(ScenarioError, AnUnknownIntegratorListsTheIntegrators) {
-  expect_error(kHead + kSphere + "simulate: {duration: 1, integrator: ode45}\n",
-               {4, 37, "simulate.integrator",
-                "unknown integrator 'ode45' (the integrators are dopri5, dop853, rk4, rkmk4, "
-                "exact)"});
-  expect_error(kHead + kSphere + "simulate: {duration: 1, integrator: dopri45}\n",
-               {4, 37, "simulate.integrator", "did you mean 'dopri5'?"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1, integrator: ode45}\n",
+                    {4, 37, "simulate.integrator",
+                     "unknown integrator 'ode45' (the integrators are dopri5, dop853, rk4, rkmk4, "
+                     "exact)"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1, integrator: dopri45}\n",
+                    {4, 37, "simulate.integrator", "did you mean 'dopri5'?"});
 }
 
 TEST(ScenarioError, Rk4NeedsAStep) {
-  expect_error(kHead + kSphere + "simulate: {duration: 1, integrator: rk4}\n",
-               {4, 37, "simulate.integrator", "rk4 takes a fixed step: give simulate.step"});
-  expect_error(kHead + kSphere + "simulate: {duration: 1, integrator: rk4, step: -1}\n",
-               {4, 48, "simulate.step", "step must be > 0 (s), got -1"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1, integrator: rk4}\n",
+                    {4, 37, "simulate.integrator", "rk4 takes a fixed step: give simulate.step"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1, integrator: rk4, step: -1}\n",
+                    {4, 48, "simulate.step", "step must be > 0 (s), got -1"});
 }
 
 TEST(ScenarioError, ExactIsForTorqueFreeBodies) {
-  expect_error(kHead + kSphere + "forces:\n  - {type: torque, body: ball, value: [0, 0, 1]}\n" +
-                   "simulate: {duration: 1, integrator: exact}\n",
-               {6, 37, "simulate.integrator",
-                "exact is for torque-free free bodies; remove forces and joints or choose dopri5"});
+  expect_load_error(
+      kHead + kSphere + "forces:\n  - {type: torque, body: ball, value: [0, 0, 1]}\n" +
+          "simulate: {duration: 1, integrator: exact}\n",
+      {6, 37, "simulate.integrator",
+       "exact is for torque-free free bodies; remove forces and joints or choose dopri5"});
 }
 
 TEST(ScenarioError, TextThatIsNotUtf8IsRefused) {
   // A Latin-1 e-acute (0xE9) in the scenario's name would reach the page's title.
-  expect_error(kHead + "name: caf\xE9\n" + kSphere + kSimulate,
-               {2, 7, "name", "the text is not valid UTF-8 (byte 0xE9 at its position 4)"});
-  expect_error(kHead + "bodies:\n  ball\xFF: {shape: sphere, radius: 0.1, mass: 2}\n" + kSimulate,
-               {3, 3, "bodies", "not valid UTF-8"});
+  expect_load_error(kHead + "name: caf\xE9\n" + kSphere + kSimulate,
+                    {2, 7, "name", "the text is not valid UTF-8 (byte 0xE9 at its position 4)"});
+  expect_load_error(
+      kHead + "bodies:\n  ball\xFF: {shape: sphere, radius: 0.1, mass: 2}\n" + kSimulate,
+      {3, 3, "bodies", "not valid UTF-8"});
   // UTF-8 itself is fine.
   const fs::path path =
-      write_file("utf8.yaml",
-                 kHead + "name: caf\xC3\xA9 \xE2\x80\x94 \xF0\x9F\x8E\xB2\n" + kSphere + kSimulate);
+      write_in_test_dir("utf8.yaml", kHead + "name: caf\xC3\xA9 \xE2\x80\x94 \xF0\x9F\x8E\xB2\n" +
+                                         kSphere + kSimulate);
   EXPECT_EQ(load_scenario(path.string(), {}).name, "caf\xC3\xA9 \xE2\x80\x94 \xF0\x9F\x8E\xB2");
 }
 
 TEST(ScenarioError, ASecondYamlDocumentIsRefused) {
   // Located at its '---'. The parser is asked for two documents at most: on some inputs
   // yaml-cpp's LoadAll finds empty documents without end (tests/data/fuzz/, FuzzRegressions).
-  expect_error(kHead + kSphere + kSimulate + "---\ntumble: 1\n",
-               {5, 1, "", "the file holds 2 YAML documents (separated by ---)"});
+  expect_load_error(kHead + kSphere + kSimulate + "---\ntumble: 1\n",
+                    {5, 1, "", "the file holds 2 YAML documents (separated by ---)"});
 }
 
 TEST(ScenarioError, AnUnclosedQuoteIsLocatedWhereItOpens) {
   // The quote runs on and swallows bodies: and simulate:, which the parser takes as its text.
-  expect_error(kHead + "name: \"tumbling\n" + kSphere + kSimulate,
-               {2, 7, "", "this quoted text is not closed on its line"});
+  expect_load_error(kHead + "name: \"tumbling\n" + kSphere + kSimulate,
+                    {2, 7, "", "this quoted text is not closed on its line"});
   // A quoted text with ': ' in it, closed on its line, is a name like any other.
   const fs::path path =
-      write_file("colon.yaml", kHead + "name: \"Cubli: jumping\"\n" + kSphere + kSimulate);
+      write_in_test_dir("colon.yaml", kHead + "name: \"Cubli: jumping\"\n" + kSphere + kSimulate);
   EXPECT_EQ(load_scenario(path.string(), {}).name, "Cubli: jumping");
 }
 
@@ -813,92 +822,95 @@ TEST(ScenarioError, ManyKeysAreReadInLinearTime) {
   // are refused at the first.
   std::string many = kHead + kSphere + kSimulate + "output:\n";
   for (int i = 0; i < 200000; ++i) many += "  k" + std::to_string(i) + ": 1\n";
-  expect_error(many + "  k0: 2\n",
-               {200006, 3, "output.k0", "duplicate key 'k0' (first given on line 6)"});
-  expect_error(many, {6, 3, "output.k0", "unknown key 'k0'"});
+  expect_load_error(many + "  k0: 2\n",
+                    {200006, 3, "output.k0", "duplicate key 'k0' (first given on line 6)"});
+  expect_load_error(many, {6, 3, "output.k0", "unknown key 'k0'"});
 }
 
 TEST(ScenarioError, OutputBeyondTheRowBudgetIsRefusedBeforeTheRun) {
   // duration / output_every rows (and t0) past simulate.max_rows: the estimate and the fix.
-  expect_error(kHead + kSphere + "simulate: {duration: 1, output_every: 1e-300}\n",
-               {4, 39, "simulate.output_every",
-                "duration / output_every is about 1e+300 rows, more than simulate.max_rows = "
-                "1000000: write less often (output_every: 1e-06 gives 1000000 rows)"});
-  expect_error(kHead + kSphere + "simulate: {duration: 1e9, output_every: 0.01}\n",
-               {4, 41, "simulate.output_every", "about 1e+11 rows"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1, output_every: 1e-300}\n",
+                    {4, 39, "simulate.output_every",
+                     "duration / output_every is about 1e+300 rows, more than simulate.max_rows = "
+                     "1000000: write less often (output_every: 1e-06 gives 1000000 rows)"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1e9, output_every: 0.01}\n",
+                    {4, 41, "simulate.output_every", "about 1e+11 rows"});
   // Raised on purpose, it is the budget.
-  const fs::path path =
-      write_file("raised.yaml",
-                 kHead + kSphere + "simulate: {duration: 1, output_every: 1e-6, max_rows: 2e6}\n");
+  const fs::path path = write_in_test_dir(
+      "raised.yaml",
+      kHead + kSphere + "simulate: {duration: 1, output_every: 1e-6, max_rows: 2e6}\n");
   EXPECT_EQ(load_scenario(path.string(), {}).simulate.max_rows, 2000000);
   // A fixed step's steps are known: past max_steps, or a row each past max_rows.
-  expect_error(kHead + kSphere + "simulate: {duration: 1e9, integrator: rk4, step: 0.01}\n",
-               {4, 50, "simulate.step",
-                "duration / step is 1e+11 steps, more than "
-                "simulate.max_steps = 10000000"});
-  expect_error(kHead + kSphere + "simulate: {duration: 1e4, integrator: rk4, step: 0.001}\n",
-               {4, 50, "simulate.step",
-                "one row per step is 1e+07 rows, more than "
-                "simulate.max_rows = 1000000: give output_every"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1e9, integrator: rk4, step: 0.01}\n",
+                    {4, 50, "simulate.step",
+                     "duration / step is 1e+11 steps, more than "
+                     "simulate.max_steps = 10000000"});
+  expect_load_error(kHead + kSphere + "simulate: {duration: 1e4, integrator: rk4, step: 0.001}\n",
+                    {4, 50, "simulate.step",
+                     "one row per step is 1e+07 rows, more than "
+                     "simulate.max_rows = 1000000: give output_every"});
 }
 
 TEST(ScenarioError, RtolAndAtolHaveTheIntegratorsRanges) {
-  expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1.5\n",
-               {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1) (e.g. 1e-8), got 1.5"});
-  expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 0\n",
-               {6, 9, "simulate.rtol", "got 0"});
+  expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1.5\n",
+                    {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1) (e.g. 1e-8), got 1.5"});
+  expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 0\n",
+                    {6, 9, "simulate.rtol", "got 0"});
   // Below 100 eps the integrators refuse it: so does the reader, at the key, with the same range.
-  expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1e-15\n",
-               {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1)"});
-  expect_error(kHead + kSphere + "simulate:\n  duration: 1\n  atol: 0\n",
-               {6, 9, "simulate.atol", "atol must be > 0 and finite"});
-  expect_error(kHead + kSphere + "simulate:\n  duration: 0\n",
-               {5, 13, "simulate.duration", "duration must be > 0 (s), got 0"});
+  expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1e-15\n",
+                    {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1)"});
+  expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  atol: 0\n",
+                    {6, 9, "simulate.atol", "atol must be > 0 and finite"});
+  expect_load_error(kHead + kSphere + "simulate:\n  duration: 0\n",
+                    {5, 13, "simulate.duration", "duration must be > 0 (s), got 0"});
 }
 
 TEST(ScenarioError, TheTrajectoryMustStayInTheOutputDirectory) {
-  expect_error(kHead + kSphere + kSimulate + "output:\n  trajectory: /tmp/run.csv\n",
-               {6, 15, "output.trajectory", "'/tmp/run.csv' is an absolute path"});
-  expect_error(kHead + kSphere + kSimulate + "output:\n  trajectory: runs/../../run.csv\n",
-               {6, 15, "output.trajectory", "leaves the output directory through '..'"});
+  expect_load_error(kHead + kSphere + kSimulate + "output:\n  trajectory: /tmp/run.csv\n",
+                    {6, 15, "output.trajectory", "'/tmp/run.csv' is an absolute path"});
+  expect_load_error(kHead + kSphere + kSimulate + "output:\n  trajectory: runs/../../run.csv\n",
+                    {6, 15, "output.trajectory", "leaves the output directory through '..'"});
 }
 
 TEST(ScenarioError, GroundIsNotABodyName) {
-  expect_error(kHead + "bodies:\n  ground: {shape: box, size: [9, 9, 1], mass: 1}\n" + kSimulate,
-               {3, 3, "bodies.ground", "'ground' is the reserved name of the fixed world"});
+  expect_load_error(
+      kHead + "bodies:\n  ground: {shape: box, size: [9, 9, 1], mass: 1}\n" + kSimulate,
+      {3, 3, "bodies.ground", "'ground' is the reserved name of the fixed world"});
 }
 
 TEST(ScenarioError, APointIsNoBodyOnItsOwn) {
-  expect_error(kHead + "bodies:\n  dot: {shape: point, mass: 1}\n" + kSimulate,
-               {3, 16, "bodies.dot.shape",
-                "a point has no inertia at all: free, nothing would say how it turns about its "
-                "COM"});
-  expect_error(kHead + "bodies:\n  b: {shape: cube, size: [1, 1, 1], mass: 1}\n" + kSimulate,
-               {3, 14, "bodies.b.shape", "unknown shape 'cube'; did you mean 'box'?"});
+  expect_load_error(
+      kHead + "bodies:\n  dot: {shape: point, mass: 1}\n" + kSimulate,
+      {3, 16, "bodies.dot.shape",
+       "a point has no inertia at all: free, nothing would say how it turns about its "
+       "COM"});
+  expect_load_error(kHead + "bodies:\n  b: {shape: cube, size: [1, 1, 1], mass: 1}\n" + kSimulate,
+                    {3, 14, "bodies.b.shape", "unknown shape 'cube'; did you mean 'box'?"});
 }
 
 TEST(ScenarioError, APointNeedsAMassNotADensity) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  b:\n    parts:\n      - {shape: point, density: 3}\n" + kSimulate,
       {5, 24, "bodies.b.parts[0].density", "a point has no size"});
 }
 
 TEST(ScenarioError, ACompositeTakesItsMassFromItsParts) {
-  expect_error(kHead +
-                   "bodies:\n  b:\n    mass: 3\n    parts:\n"
-                   "      - {shape: sphere, radius: 1, mass: 1}\n" +
-                   kSimulate,
-               {4, 5, "bodies.b.mass", "a composite body's mass is the sum of its parts'"});
+  expect_load_error(kHead +
+                        "bodies:\n  b:\n    mass: 3\n    parts:\n"
+                        "      - {shape: sphere, radius: 1, mass: 1}\n" +
+                        kSimulate,
+                    {4, 5, "bodies.b.mass", "a composite body's mass is the sum of its parts'"});
 }
 
 TEST(ScenarioError, AMissingMeshFileIsAnError) {
-  expect_error(kHead + "bodies:\n  b: {shape: mesh, file: nowhere.obj, mass: 1}\n" + kSimulate,
-               {3, 26, "bodies.b.file", "cannot read mesh file 'nowhere.obj'"});
+  expect_load_error(kHead + "bodies:\n  b: {shape: mesh, file: nowhere.obj, mass: 1}\n" + kSimulate,
+                    {3, 26, "bodies.b.file", "cannot read mesh file 'nowhere.obj'"});
 }
 
 TEST(ScenarioError, DuplicateKeysAreErrors) {
-  expect_error(kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1, mass: 2}\n" + kSimulate,
-               {3, 42, "bodies.b.mass", "duplicate key 'mass' (first given on line 3)"});
+  expect_load_error(
+      kHead + "bodies:\n  b: {shape: sphere, radius: 1, mass: 1, mass: 2}\n" + kSimulate,
+      {3, 42, "bodies.b.mass", "duplicate key 'mass' (first given on line 3)"});
 }
 
 // A force and a contact both named floor would both write floor.P and floor.W: two columns of one
@@ -909,23 +921,24 @@ TEST(ScenarioError, BodiesJointsForcesAndContactsShareOneSetOfNames) {
   const std::string spring =
       "  - {type: spring, name: floor, bodies: [ground, crate], stiffness: 1, "
       "at: [[0, 0, 0], [0, 0, 0]]}\n";
-  expect_error(kHead + crate + "forces:\n" + spring +
-                   "contacts:\n  - {name: floor, type: plane, body: crate, "
-                   "plane: {point: [0, 0, 0], normal: [0, 0, 1]}}\n" +
-                   kSimulate,
-               {7, 6, "contacts[0].name", "'floor' already names a spring (line 5, column 5)"});
-  expect_error(kHead + crate +
-                   "forces:\n  - {type: torque, name: crate, body: crate, value: [0, "
-                   "0, 1]}\n" +
-                   kSimulate,
-               {5, 20, "forces[0].name", "'crate' already names a body (line 3, column 3)"});
+  expect_load_error(
+      kHead + crate + "forces:\n" + spring +
+          "contacts:\n  - {name: floor, type: plane, body: crate, "
+          "plane: {point: [0, 0, 0], normal: [0, 0, 1]}}\n" +
+          kSimulate,
+      {7, 6, "contacts[0].name", "'floor' already names a spring (line 5, column 5)"});
+  expect_load_error(kHead + crate +
+                        "forces:\n  - {type: torque, name: crate, body: crate, value: [0, "
+                        "0, 1]}\n" +
+                        kSimulate,
+                    {5, 20, "forces[0].name", "'crate' already names a body (line 3, column 3)"});
   // A default name counts too: the second force's "force2" is taken by the first's own name.
-  expect_error(kHead + crate +
-                   "forces:\n  - {type: force, name: force2, body: crate, value: [1, 0, 0]}\n"
-                   "  - {type: force, body: crate, value: [1, 0, 0]}\n" +
-                   kSimulate,
-               {6, 5, "forces[1]", "'force2' already names a force (line 5, column 5)"});
-  expect_error(
+  expect_load_error(kHead + crate +
+                        "forces:\n  - {type: force, name: force2, body: crate, value: [1, 0, 0]}\n"
+                        "  - {type: force, body: crate, value: [1, 0, 0]}\n" +
+                        kSimulate,
+                    {6, 5, "forces[1]", "'force2' already names a force (line 5, column 5)"});
+  expect_load_error(
       kHead + crate + "joints:\n  crate: {type: ball, body: crate, at: [0, 0, 0]}\n" + kSimulate,
       {5, 3, "joints.crate", "'crate' already names a body (line 3, column 3)"});
 }
@@ -933,14 +946,14 @@ TEST(ScenarioError, BodiesJointsForcesAndContactsShareOneSetOfNames) {
 // A name heads CSV columns and shows in messages and on the animation page: a NUL byte or a
 // terminal's escape in it would cut the header short or rewrite the user's screen.
 TEST(ScenarioError, AControlCharacterInANameIsRefusedAndShownEscaped) {
-  expect_error(
+  expect_load_error(
       kHead + "bodies:\n  \"ba\\0ll\": {shape: sphere, radius: 0.1, mass: 2}\n" + kSimulate,
       {3, 3, "bodies.ba\\x00ll", "body name 'ba\\x00ll' holds a control character"});
-  expect_error(kHead + kSphere +
-                   "forces:\n  - {type: force, name: \"f\\e[2J\", body: ball, "
-                   "value: [1, 0, 0]}\n" +
-                   kSimulate,
-               {5, 19, "forces[0].name", "force name 'f\\x1B[2J' holds a control character"});
+  expect_load_error(kHead + kSphere +
+                        "forces:\n  - {type: force, name: \"f\\e[2J\", body: ball, "
+                        "value: [1, 0, 0]}\n" +
+                        kSimulate,
+                    {5, 19, "forces[0].name", "force name 'f\\x1B[2J' holds a control character"});
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 
 #include "modes_checks.hpp"
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
@@ -29,7 +30,7 @@ namespace {
 using test::Row;
 using test::run_inline_scenario;
 
-constexpr double kG = 9.81;
+using test::kG;
 
 TEST(SlenderBody, APointOnAMasslessLinkFollowsThePendulumsExactSolutionOver1000Periods) {
   const double l = 0.8, m = 2.0, theta0 = M_PI / 2;

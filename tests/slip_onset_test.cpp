@@ -11,19 +11,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "rolling_coin_scenario.hpp"
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 
 namespace tumble {
 namespace {
 
+using test::kDeg;
+using test::kG;
 using test::Row;
 using test::run_inline_scenario;
-constexpr double kG = 9.81;
-constexpr double kDeg = std::numbers::pi / 180;
 
 TEST(SlipOnset, AWobblingCoinAlternatesRollingAndSlidingUnderCoulombsLaw) {
   // The coin of examples/rolling_coin.yaml with its precession started `lean` times the steady

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "test_constants.hpp"
 #include "test_files.hpp"
 #include "tumble/scenario/scenario_document.hpp"
 #include "tumble/sweep/parameter_space.hpp"
@@ -15,7 +16,7 @@
 namespace tumble {
 namespace {
 
-constexpr double kG = 9.81;
+using test::kG;
 
 SweepSpec spec_for(const std::string& text, std::vector<std::string> varied,
                    const std::vector<std::string>& records) {

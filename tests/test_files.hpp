@@ -1,12 +1,17 @@
 #pragma once
-// Files for tests: a whole file's bytes, and an empty directory of the test's own under the
-// system's temporary directory (ctest runs tests in parallel, so each names its own).
+// Files for tests: an example's path, a whole file's bytes, and an empty directory of the test's
+// own under the system's temporary directory (ctest runs tests in parallel, so each names its own).
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 namespace tumble::test {
+
+// examples/NAME in the source tree.
+inline std::string example(const std::string& name) {
+  return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + name;
+}
 
 inline std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -25,6 +25,8 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
+#include "test_constants.hpp"
+#include "test_math.hpp"
 #include "tumble/exact/jacobi_elliptic.hpp"
 #include "tumble/exact/torque_free.hpp"
 #include "tumble/math/rotation.hpp"
@@ -32,15 +34,10 @@
 namespace tumble {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+using test::kEps;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double max_abs(const Mat3& M) {
-  return M.cwiseAbs().maxCoeff();
-}
-double max_abs(const Vec3& v) {
-  return v.cwiseAbs().maxCoeff();
-}
+using test::max_abs;
 
 // ---------------------------------------------------------------------------------------------
 // Jacobi elliptic functions
@@ -79,15 +76,19 @@ TEST(JacobiElliptic, AccurateNearModulusOne) {
   const double kp2 = 1e-18;
   const JacobiElliptic jac(1.0 - kp2, kp2);
   EXPECT_NEAR(jac.quarter_period(), 22.10956019806630178, 4 * kEps * 22.1);
-  struct Row {
+  struct JacobiReference {
     double u, sn, cn, dn;
   };
-  for (const Row& r :
-       {Row{3.0, 0.99505475368673045157, 0.099327927419433205411, 0.099327927419433210395},
-        Row{10.0, 0.99999999587769276387, 0.0000907998593350639361, 0.000090799859340570552514},
-        Row{20.7, 0.99999999999999999815, 1.9249518547904673638e-9, 2.1692025362471943569e-9},
-        Row{22.1, 1.0, 9.5603436964878066392e-12, 1.0000456990415962857e-9},
-        Row{30.0, 0.99999999999910780698, -1.3358091355375024824e-6, 1.3358095098424212355e-6}}) {
+  for (const JacobiReference& r :
+       {JacobiReference{3.0, 0.99505475368673045157, 0.099327927419433205411,
+                        0.099327927419433210395},
+        JacobiReference{10.0, 0.99999999587769276387, 0.0000907998593350639361,
+                        0.000090799859340570552514},
+        JacobiReference{20.7, 0.99999999999999999815, 1.9249518547904673638e-9,
+                        2.1692025362471943569e-9},
+        JacobiReference{22.1, 1.0, 9.5603436964878066392e-12, 1.0000456990415962857e-9},
+        JacobiReference{30.0, 0.99999999999910780698, -1.3358091355375024824e-6,
+                        1.3358095098424212355e-6}}) {
     const JacobiValues v = jac.calc(r.u);
     const double tol = 8 * kEps * (1.0 + r.u);
     EXPECT_NEAR(v.sn, r.sn, tol) << "u " << r.u;

@@ -14,6 +14,7 @@
 
 #include "modes_checks.hpp"
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble {
@@ -22,7 +23,7 @@ namespace {
 using test::Row;
 using test::run_inline_scenario;
 
-constexpr double kG = 9.81;
+using test::kG;
 
 struct Box {
   static constexpr double m = 3, a = 0.2, b = 0.5, c = 0.3, l = 0.6;

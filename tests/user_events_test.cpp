@@ -13,6 +13,7 @@
 #include <string>
 
 #include "scenario_run.hpp"
+#include "test_constants.hpp"
 #include "test_files.hpp"
 #include "tumble/exact/torque_free.hpp"
 #include "tumble/simulation/table_run.hpp"
@@ -22,7 +23,8 @@
 namespace tumble {
 namespace {
 
-constexpr double kMu = 0.3, kV0 = 3.0, kG = 9.81;
+using test::kG;
+constexpr double kMu = 0.3, kV0 = 3.0;
 
 std::string crate(const std::string& d, const std::string& events) {
   return R"(tumble: 1

@@ -335,8 +335,8 @@ TEST(Cli, AStepSizeThatCollapsesEndsTheRunWithExitFour) {
 // max_steps. A thousand events within a millionth of the run's span end it at once, with exit 4,
 // saying where and why, and the rows and events so far.
 TEST(Cli, ChatteringEventsEndTheRunWithExitFour) {
-  const fs::path dir = fresh_dir("chatter");
-  std::string text = slurp(example("modes/sleeping_top.yaml"));
+  const fs::path dir = fresh_run_dir("chatter");
+  std::string text = read_file(example("modes/sleeping_top.yaml"));
   const std::string spin = "angular_velocity: [0, 0, w]";
   ASSERT_NE(text.find(spin), std::string::npos);
   text.replace(text.find(spin), spin.size(), "angular_velocity: [0.01, 0, w]");
@@ -525,7 +525,7 @@ TEST(Cli, TheSummaryHasTenDigitsAndSeventeenOnRequest) {
   const double I_O = M * (3 * r * r + length * length) / 12 + M * L * L;
   const double d = I_O / (M * L);
   const double KE = (P * d) * (P * d) / (2 * I_O);
-  const fs::path dir = fresh_dir("digits");
+  const fs::path dir = fresh_run_dir("digits");
   const auto ke_after = [&](const std::string& flags) {
     const CommandResult r_run =
         run_tumble("run " + example("bat_struck.yaml") + " --out " + dir.string() + flags);

@@ -48,13 +48,6 @@ bool is_unit(std::string_view name) {
                      [&](const Unit& unit) { return name == unit.name; });
 }
 
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
-}
-
 // A plain decimal number, read exactly; nullopt for anything else (left to muParser).
 std::optional<double> plain_number(std::string_view text) {
   double value = 0.0;
@@ -215,7 +208,7 @@ void ExpressionEvaluator::redefine(const std::string& name, double value) {
 }
 
 double ExpressionEvaluator::evaluate(const std::string& expression) const {
-  const std::string_view text = trim(expression);
+  const std::string_view text = trim_blanks(expression);
   if (text.empty()) throw ExpressionError("expected a number or an expression, got nothing", "");
   std::optional<double> value = plain_number(text);
   if (!value) {
@@ -368,7 +361,7 @@ BoundExpression::BoundExpression(std::string text, std::span<const Variable> var
     if (parser.GetNumResults() != 1) throw several_values_error(text_, parser.GetNumResults());
     // A lone variable ("ball.vx", a sweep's usual record) is read without muParser's evaluation:
     // the same double, a sixth of the cost.
-    if (used_names_.size() == 1 && trim(text_) == used_names_[0]) {
+    if (used_names_.size() == 1 && trim_blanks(text_) == used_names_[0]) {
       direct_ = found.at(used_names_[0]);
     }
   } catch (const mu::Parser::exception_type& error) {

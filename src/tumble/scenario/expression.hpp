@@ -13,6 +13,13 @@
 
 namespace tumble {
 
+// The text without its leading and trailing spaces and tabs (an expression, a --record's name).
+inline std::string_view trim_blanks(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
 // An expression that cannot be evaluated. what() reads "expression 'L*q': <muParser's message>"
 // with a hint of the names that are defined; unknown_name() is the name muParser did not know, if
 // that was the trouble.

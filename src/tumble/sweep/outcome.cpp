@@ -1,5 +1,7 @@
 #include "tumble/sweep/outcome.hpp"
 
+#include "tumble/scenario/expression.hpp"
+
 #include <fmt/format.h>
 #include <algorithm>
 #include <stdexcept>
@@ -23,12 +25,6 @@ constexpr NamedReduction kReductions[] = {{"final", ReductionKind::Final},
 bool name_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
          c == '.';
-}
-
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
 // The first word of an event's text, without its punctuation ("slides: the friction..." ->
@@ -96,7 +92,8 @@ Outcome parse_outcome(std::string name, const std::string& text) {
       throw std::invalid_argument(
           fmt::format("'{}': {}( at column {} is not closed", text, word, i + 1));
     }
-    const std::string argument(trim(std::string_view(text).substr(open + 1, close - open - 1)));
+    const std::string argument(
+        trim_blanks(std::string_view(text).substr(open + 1, close - open - 1)));
     if (argument.empty()) {
       throw std::invalid_argument(fmt::format(
           "'{}': {}() needs {}", text, word,
@@ -128,7 +125,7 @@ Outcome parse_outcome(std::string name, const std::string& text) {
 
 Outcome parse_record(const std::string& argument) {
   const auto eq = argument.find('=');
-  const std::string name(trim(std::string_view(argument).substr(0, eq)));
+  const std::string name(trim_blanks(std::string_view(argument).substr(0, eq)));
   const bool identifier =
       !name.empty() && !(name[0] >= '0' && name[0] <= '9') &&
       std::all_of(name.begin(), name.end(), [](char c) { return name_char(c) && c != '.'; });

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 std::string resolved(const fs::path& path) {
   std::error_code error;
   fs::path canonical = fs::weakly_canonical(fs::absolute(path, error), error);
-  if (error) canonical = fs::absolute(path).lexically_normal();
+  if (error) canonical = path.lexically_normal();  // no working directory: as given
   std::string text = canonical.string();
   std::transform(text.begin(), text.end(), text.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });

@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
-#include <map>
 #include <set>
 #include <unordered_map>
 #include <unordered_set>

@@ -7,9 +7,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <numbers>
-#include <unordered_map>
 
 #include "tumble/multibody/joints/joint_kind.hpp"
 #include "tumble/scenario/readers.hpp"
@@ -292,11 +290,7 @@ JointSpec read_drive(const Reader& reader, const MapReader& map, JointSpec& join
 std::string read_body_or_ground(const Reader& reader, const Field& field,
                                 const std::vector<BodySpec>& bodies, bool ground_allowed) {
   const std::string name = reader.text(field);
-  if (reader.bodies_indexed() ? reader.body_position(name).has_value()
-                              : std::any_of(bodies.begin(), bodies.end(),
-                                            [&](const BodySpec& b) { return b.name == name; })) {
-    return name;
-  }
+  if (reader.body_position(name)) return name;
   std::vector<std::string> names;  // for the message
   for (const BodySpec& body : bodies) names.push_back(body.name);
   if (name == kGroundName) {

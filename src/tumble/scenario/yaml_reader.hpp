@@ -83,7 +83,6 @@ class Reader {
   void index_body(const std::string& name, std::size_t position) {
     body_positions_.emplace(name, position);
   }
-  bool bodies_indexed() const { return !body_positions_.empty(); }
   // The body's position in `bodies:`, if there is one of that name.
   std::optional<std::size_t> body_position(const std::string& name) const {
     const auto it = body_positions_.find(name);

@@ -10,6 +10,7 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
     most_vertices = std::max(most_vertices, contact.surface.vertices.size());
   }
   touching.reserve(most_vertices);
+  reserve_feature(landing.feature, most_vertices);
   // Rows per contact at most: a face's six; a held polyhedron's three at each of three points.
   constexpr std::size_t kMostRows = 9;
   now.resize(contacts.size());

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tumble/contact/contact_dynamics.hpp"
+#include "tumble/contact/contact_status.hpp"
 #include "tumble/contact/plane_contact.hpp"
 #include "tumble/math/constraint_solve.hpp"
 
@@ -71,7 +72,8 @@ struct ContactData {
   std::vector<BodyWrench> wrenches;      // as many: forces or impulses on bodies
   std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                         // impact()'s
-  VecX onset_y, onset_dydt;              // turn_starting_slip()'s
+  ContactStatus landing;     // impact()'s: the part it lands on, reserved for the most vertices
+  VecX onset_y, onset_dydt;  // turn_starting_slip()'s
   // The time of the state being evaluated: a starting slip's direction turns with it.
   double time_now = 0.0;
 };

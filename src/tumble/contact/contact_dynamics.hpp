@@ -49,11 +49,15 @@ class ContactDynamics {
 
   // Every body's pose at y, and with `with_velocities` its twist.
   virtual void calc_motion(const VecX& y, bool with_velocities) const = 0;
-  // Every body's motion at y under its loads and the contacts' forces in their current modes:
-  // what the right-hand side uses (it calls ContactSystem::solve_forces).
-  virtual void calc_accelerations(const VecX& y) const = 0;
-  // dy/dt at (t, y) in the current modes.
-  virtual void calc_rates(double t, const VecX& y, VecX& dydt) const = 0;
+  // After calc_motion with velocities: the applied loads and force elements at y, kept for the
+  // solves below; with `dydt`, their powers written into its ledger entries.
+  virtual void gather_loads(const VecX& y) const = 0;
+  virtual void gather_loads(const VecX& y, VecX& dydt) const = 0;
+  // After the last solve (solve_under_loads_and): dy/dt's coordinates and speeds, and the
+  // joints' powers into the ledger (the contacts' entries are the contact subsystem's to write).
+  // Contact composes its accelerations and rates from these calls and its own force solve, so
+  // the dynamics never call back into contact from inside a contact's question.
+  virtual void write_rates(const VecX& y, VecX& dydt) const = 0;
 
   // After calc_motion with velocities and the loads gathered: the accelerations under the
   // loads alone; then under the loads and these wrenches (the loads are kept between the two).

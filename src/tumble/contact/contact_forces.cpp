@@ -59,13 +59,34 @@ ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const PlaneContact& contact = contacts_[c];
     reserve_feature(s_.contacts[c].feature, contact.surface.vertices.size());
+    pairs_.push_back(&contact_pair(contact.surface.kind));
     const bool held = !dynamics_.moves_freely(contact.body);
-    held_polyhedron_.push_back(held && contact.surface.kind == ContactSurface::Kind::Polyhedron);
+    held_polyhedron_.push_back(held && pairs_.back()->held_point_by_point());
     any_held_ = any_held_ || held;
     heaviest = std::max(heaviest, bodies_[contact.body].mass);
   }
   // A free body's response to a unit force is at least 1/m: a floor far below every real one.
   if (heaviest > 0.0) least_response_ = kRoundOffResponse / heaviest;
+}
+
+void ContactSystem::calc_accelerations(const VecX& y) const {
+  dynamics_.calc_motion(y, true);
+  dynamics_.gather_loads(y);
+  solve_forces();
+}
+
+void ContactSystem::calc_rates(double t, const VecX& y, VecX& dydt) const {
+  set_time(t);
+  dynamics_.calc_motion(y, true);
+  dynamics_.gather_loads(y, dydt);
+  solve_forces();
+  dynamics_.write_rates(y, dydt);
+  write_powers(dydt, dynamics_.ledger_start());
+}
+
+PairView ContactSystem::view(std::size_t c) const {
+  return {contacts_[c], dynamics_.motion(contacts_[c].body), s_.contacts[c], d_.now[c],
+          d_.touching};
 }
 
 void ContactSystem::calc_contact_points() const {
@@ -78,44 +99,17 @@ void ContactSystem::calc_contact_points() const {
     now.n_B = w.R_WB.transpose() * n;
     const Vec3 omega_B = w.velocity.head<3>();
     const Vec3 v_G_B = w.velocity.tail<3>();
-    const ContactSurface& surface = contact.surface;
-    const ContactFeature& feature = status.feature;
     now.normal_point_rates_B.fill(Vec3::Zero());
-    now.spin_radius = feature.spin_radius;
-    if (status.round_part != RoundPart::None) {
-      calc_round_contact_points(c, omega_B);
-    } else if (feature.size() == 0) {
-      // A sphere, or a polyhedron or round body apart: its support point is the contact point.
+    now.spin_radius = status.feature.spin_radius;
+    PairView v = view(c);
+    if (!pairs_[c]->calc_part_points(v, omega_B)) {
+      // A sphere, or any surface apart: its support point is the contact point.
       now.support = support_point(contact, w.r_G_W, w.R_WB);
       now.reference_B = now.support.p_GC_B;
       now.reference_rate_B = support_rate_B(contact, now.n_B, omega_B);
       now.normal_points_B[0] = now.reference_B;
       now.normal_point_rates_B[0] = now.reference_rate_B;
       now.normal_point_count = 1;
-    } else {
-      // A polyhedron on a feature; touchdown watches its lowest vertex not already touching.
-      int lowest = -1;
-      double lowest_depth = 0.0;
-      for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
-        if (feature.contains(static_cast<int>(i))) continue;
-        const double depth = surface.vertices[i].dot(now.n_B);
-        if (lowest < 0 || depth < lowest_depth) {
-          lowest = static_cast<int>(i);
-          lowest_depth = depth;
-        }
-      }
-      now.support.p_GC_B =
-          lowest >= 0 ? surface.vertices[static_cast<std::size_t>(lowest)] : Vec3::Zero();
-      now.support.height = lowest >= 0 ? height_above_plane(c, now.support.p_GC_B)
-                                       : 1.0;  // every vertex touches: nothing left to land
-      now.reference_B = feature.reference_B;
-      now.reference_rate_B.setZero();
-      now.normal_point_count = feature.normal_point_count;
-      for (int k = 0; k < feature.normal_point_count; ++k) {
-        now.normal_points_B[static_cast<std::size_t>(k)] =
-            surface.vertices[static_cast<std::size_t>(
-                feature.normal_points[static_cast<std::size_t>(k)])];
-      }
     }
     now.support_normal_speed = normal_speed(c, now.support.p_GC_B);
     now.velocity_W = w.R_WB * (v_G_B + omega_B.cross(now.reference_B));
@@ -126,47 +120,6 @@ void ContactSystem::calc_contact_points() const {
     now.friction_W.setZero();
     now.moment_about_O_B.setZero();
     now.normal_force = 0.0;
-  }
-}
-
-void ContactSystem::calc_round_contact_points(std::size_t c, const Vec3& omega_B) const {
-  const PlaneContact& contact = contacts_[c];
-  const ContactStatus& status = s_.contacts[c];
-  ContactNow& now = d_.now[c];
-  const RoundEnds ends = round_ends(contact.surface);
-  const RoundPartPoints part =
-      round_part_points(ends, status.round_part, now.n_B, omega_B, status.rim_direction_B);
-  now.normal_points_B = part.points_B;
-  now.normal_point_rates_B = part.rates_B;
-  now.normal_point_count = part.count;
-  now.reference_B = part.reference_B;
-  now.reference_rate_B = part.reference_rate_B;
-  now.spin_radius = part.spin_radius;
-  // Touchdown watches what may land next, on one end's rim point (a cone's apex): the other
-  // end's lowest rim point, or this end's face: its highest rim point, 2 r sin(tilt) above the
-  // plane, lands with the rest of the rim within the landing height of it. (Nearer flat, a rim
-  // point that rolls or slides runs round the rim ever faster, as 1 / sin(tilt): Euler's disk.)
-  // On the side or a face: nothing (they tip onto a rim point first).
-  now.support.p_GC_B.setZero();
-  now.support.height = 1.0;  // nothing left to land
-  if (!is_end(status.round_part)) return;
-  const int end = end_of(status.round_part);
-  const double radius = ends.radius[static_cast<std::size_t>(end)];
-  // The rim point's direction u (part.points_B[0] = C + r u): the lowest point, to ~1e-12.
-  const Vec3& centre = ends.centre_B[static_cast<std::size_t>(end)];
-  const Vec3 u = radius > 0.0 ? Vec3((part.points_B[0] - centre) / radius)
-                              : rim_direction(now.n_B, status.rim_direction_B);
-  if (radius > 0.0) {
-    now.support.p_GC_B = rim_point(ends, end, -u);
-    now.support.height =
-        2.0 * radius * std::hypot(now.n_B.x(), now.n_B.y()) - status.landing_height;
-  }
-  if (ends.one_rim) return;
-  const Vec3 other = rim_point(ends, 1 - end, u);
-  const double other_height = height_above_plane(c, other);
-  if (radius == 0.0 || other_height <= now.support.height) {
-    now.support.p_GC_B = other;
-    now.support.height = other_height;
   }
 }
 
@@ -472,13 +425,8 @@ void ContactSystem::project(double t, VecX& y) const {
   bool features = false;
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode == ContactMode::Apart) continue;
-    const ContactSurface::Kind kind = contacts_[c].surface.kind;
-    const RoundPart part = s_.contacts[c].round_part;
-    const bool rim_point =
-        (kind == ContactSurface::Kind::Circle || kind == ContactSurface::Kind::Cylinder) &&
-        is_end(part);
-    features |= (kind != ContactSurface::Kind::Sphere && !rim_point) ||
-                !dynamics_.moves_freely(contacts_[c].body);
+    features |=
+        !pairs_[c]->projects_along_normal(view(c)) || !dynamics_.moves_freely(contacts_[c].body);
   }
   if (features) {
     dynamics_.calc_motion(y, true);
@@ -491,17 +439,7 @@ void ContactSystem::project(double t, VecX& y) const {
     for (std::size_t c = 0; c < contacts_.size(); ++c) {
       if (s_.contacts[c].mode == ContactMode::Apart) continue;
       const PlaneContact& contact = contacts_[c];
-      const BodyMotion w = dynamics_.motion(contact.body);
-      const RoundPart part = s_.contacts[c].round_part;
-      double height = 0.0;
-      if (part == RoundPart::None) {
-        height = support_point(contact, w.r_G_W, w.R_WB).height;
-      } else {
-        // The rim point it touches at (not the other end's, which may be as low).
-        const Vec3 n_B = w.R_WB.transpose() * contact.normal_W;
-        const Vec3 u = rim_direction(n_B, s_.contacts[c].rim_direction_B);
-        height = height_above_plane(c, rim_point(round_ends(contact.surface), end_of(part), u));
-      }
+      const double height = pairs_[c]->point_height(view(c));
       dynamics_.translate(contact.body, -height * contact.normal_W, y);
     }
   }

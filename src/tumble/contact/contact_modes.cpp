@@ -33,8 +33,6 @@ constexpr double kSlipFloor = 1e-3;
 // A grown slip that a step leaves below slip_zero stops this fraction of the time scale later
 // (the slip-stop event), unless it crosses zero first.
 constexpr double kSlipStopWait = 1e-6;
-// A rim point's direction is kept up with, step by step, where its tilt's sine is below this.
-constexpr double kRimKeptUpTilt = 1e-2;
 // Where the slip's component along its direction vanishes (the slip-stop event), a slip left
 // within this many slip_zero (1e-6 of the speed scale) has stopped: in 3D it passes near zero,
 // not through it, turning faster than steps resolve, and would hover there, friction flipping.
@@ -64,10 +62,6 @@ constexpr double kFrictionEdge = 1e-9;
 // elastic impact's is zero up to round-off.
 constexpr double kWorkRoundOff = 1e-12;
 
-const char* feature_name(int size) {
-  return size == 1 ? "a vertex" : size == 2 ? "an edge" : "a face";
-}
-
 // A face's or an edge's support (N times the CoP's distance inside it) reaches zero where its
 // centre of pressure reaches a side (the body tips onto that side), or where N itself reaches
 // zero (it lifts off: a ladder's top leaving a frictionless wall). At the located zero of a
@@ -82,20 +76,12 @@ bool still_presses(double N, double mass, const Vec3& gravity_W) {
 }  // namespace
 
 double ContactSystem::support_margin_of(std::size_t c, int& side) const {
-  const ContactNow& now = d_.now[c];
-  const ContactStatus& status = s_.contacts[c];
-  const ContactSurface& surface = contacts_[c].surface;
   if (held_polyhedron_[c]) {
     // The plane pushes at each point it holds, or the point leaves (drop_point).
     side = -1;
-    return now.least_point_force;
+    return d_.now[c].least_point_force;
   }
-  if (status.round_part != RoundPart::None) {
-    return round_support_margin(surface, status.round_part, now.normal_points_B, now.reference_B,
-                                now.n_B, now.normal_force, now.moment_about_O_B, side);
-  }
-  return support_margin(status.feature, surface.vertices, now.n_B, now.normal_force,
-                        now.moment_about_O_B, side);
+  return pairs_[c]->support_margin(view(c), side);
 }
 
 Vec3 ContactSystem::pushed_direction(std::size_t c) const {
@@ -111,32 +97,6 @@ Vec3 ContactSystem::friction_demand(std::size_t c) const {
   const Vec3& n = contacts_[c].normal_W;
   if (!(rho > 0.0)) return now.friction_W;
   return now.friction_W + (now.moment_about_O_B.dot(now.n_B) / rho) * n;
-}
-
-bool ContactSystem::lands_with(std::size_t c, double height, double normal_speed) const {
-  // Not moving away from the plane; or at it (a landing located to round-off), unless it leaves
-  // faster than a settling touchdown lands: that point has just bounced off, and an impulse or a
-  // contact that held it there would take its bounce.
-  const ContactStatus& status = s_.contacts[c];
-  return normal_speed <= status.slip_zero ||
-         (height <= status.touching_height && normal_speed <= status.settle_speed);
-}
-
-void ContactSystem::find_touching_vertices(std::size_t c, double within) const {
-  const PlaneContact& contact = contacts_[c];
-  const BodyMotion w = dynamics_.motion(contact.body);
-  const Vec3& n = contact.normal_W;
-  d_.touching.clear();
-  for (std::size_t i = 0; i < contact.surface.vertices.size(); ++i) {
-    const Vec3& p = contact.surface.vertices[i];
-    const double height = height_above_plane(c, p);
-    if (height > within) continue;
-    if (lands_with(c, height, normal_speed(c, p))) d_.touching.push_back(static_cast<int>(i));
-  }
-  // At least the lowest vertex (a landing located to round-off is at the plane).
-  if (d_.touching.empty()) {
-    d_.touching.push_back(lowest_vertex(contact.surface, w.R_WB.transpose() * n));
-  }
 }
 
 double ContactSystem::watched_height(std::size_t c, double height, double normal_speed) const {
@@ -162,8 +122,6 @@ double ContactSystem::landing_watch(std::size_t c, Vec3& landing_B) const {
   // Every point that may land first: a polyhedron's vertices (the lowest may be leaving the plane
   // while another comes down through it), a round body's ends' lowest rim points, a sphere's
   // lowest point.
-  const PlaneContact& contact = contacts_[c];
-  const ContactNow& now = d_.now[c];
   double least = std::numeric_limits<double>::infinity();
   const auto watch = [&](const Vec3& p_B) {
     const double g = watched_height(c, height_above_plane(c, p_B), normal_speed(c, p_B));
@@ -172,16 +130,7 @@ double ContactSystem::landing_watch(std::size_t c, Vec3& landing_B) const {
       landing_B = p_B;
     }
   };
-  if (contact.surface.kind == ContactSurface::Kind::Polyhedron) {
-    for (const Vec3& p : contact.surface.vertices) watch(p);
-  } else if (is_round(contact.surface)) {
-    const RoundEnds ends = round_ends(contact.surface);
-    double projected = 0.0;
-    const Vec3 u = lowest_in_plane(now.n_B, projected);
-    for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) watch(rim_point(ends, k, u));
-  } else {
-    watch(now.support.p_GC_B);
-  }
+  pairs_[c]->for_each_landing_point(view(c), watch);
   return least;
 }
 
@@ -191,7 +140,7 @@ void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
       std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
   if (touching) {
-    dynamics_.calc_accelerations(y);
+    calc_accelerations(y);
   } else {
     dynamics_.calc_motion(y, true);
     calc_contact_points();
@@ -207,7 +156,7 @@ void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
     Vec3 landing_B = Vec3::Zero();
     if (status.mode == ContactMode::Apart) {
       g(base) = landing_watch(c, landing_B);
-    } else if (contact.surface.kind != ContactSurface::Kind::Sphere) {
+    } else if (pairs_[c]->lands_while_touching()) {
       g(base) = watched_height(c, now.support.height, now.support_normal_speed);
     }
     if (status.mode == ContactMode::Apart) continue;
@@ -235,7 +184,7 @@ bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
   bool refresh = false;
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const ContactStatus& s = s_.contacts[c];
-    refresh |= s.mode == ContactMode::Sliding || rim_direction_kept_up(c);
+    refresh |= s.mode == ContactMode::Sliding || pairs_[c]->follows_direction(view(c));
   }
   if (!refresh) return false;
   // The slip-stop event watches the slip's component along the direction it had at the start of
@@ -269,20 +218,10 @@ bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
         in_band || hovers ||
         (status.slip_stop_armed && sliding && status.slip_left_near && slip <= near);
     status.slip_last_step = sliding ? slip : 0.0;
-    if (rim_direction_kept_up(c)) {
-      status.rim_direction_B = rim_direction(d_.now[c].n_B, status.rim_direction_B);
-    }
+    PairView v = view(c);
+    if (pairs_[c]->follows_direction(v)) pairs_[c]->follow_direction(v);
   }
   return true;
-}
-
-bool ContactSystem::rim_direction_kept_up(std::size_t c) const {
-  // Only near flat does the lean towards the last direction count (round_contact.hpp); above
-  // kRimKeptUpTilt it moves the rim point by less than 1e-10 of the radius, so the direction is
-  // kept up with only there (judged by the last evaluation's normal in body axes).
-  const Vec3& n_B = d_.now[c].n_B;
-  return holds_rim_point(contacts_[c].surface, s_.contacts[c].round_part) &&
-         std::hypot(n_B.x(), n_B.y()) < kRimKeptUpTilt;
 }
 
 void ContactSystem::note_contact(double t, std::size_t contact, std::string what) {
@@ -291,15 +230,12 @@ void ContactSystem::note_contact(double t, std::size_t contact, std::string what
 
 double ContactSystem::height_above_plane(std::size_t c, const Vec3& p_B) const {
   const PlaneContact& contact = contacts_[c];
-  const BodyMotion w = dynamics_.motion(contact.body);
-  return (w.r_G_W + w.R_WB * p_B - contact.point_W).dot(contact.normal_W);
+  return tumble::height_above_plane(contact, dynamics_.motion(contact.body), p_B);
 }
 
 double ContactSystem::normal_speed(std::size_t c, const Vec3& p_B) const {
   const PlaneContact& contact = contacts_[c];
-  const BodyMotion w = dynamics_.motion(contact.body);
-  const Vec3 v_P_B = w.velocity.tail<3>() + w.velocity.head<3>().cross(p_B);
-  return contact.normal_W.dot(w.R_WB * v_P_B);
+  return tumble::normal_speed(contact, dynamics_.motion(contact.body), p_B);
 }
 
 double ContactSystem::normal_acceleration(std::size_t c, const Vec3& p_B) const {
@@ -334,7 +270,7 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
   // gives together: then it cannot roll or stick, and slides the way it is pushed.
   bool can_roll = true;
   try {
-    dynamics_.calc_accelerations(y);
+    calc_accelerations(y);
   } catch (const InconsistentConstraints&) {
     can_roll = false;
   }
@@ -349,7 +285,7 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
     status.slip_grown = true;
     status.slip_left_near = false;
     status.slip_stop_armed = false;
-    dynamics_.calc_accelerations(y);
+    calc_accelerations(y);
   } else if (contact.friction > 0.0 && now.normal_force > 0.0 &&
              demand.norm() <= (1.0 + kFrictionEdge) * contact.friction * now.normal_force) {
     if (!consistent()) return false;
@@ -364,11 +300,9 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
 
 void ContactSystem::classify_contact(std::size_t c, double t, VecX& y, bool always_note) {
   ContactStatus& status = s_.contacts[c];
-  const PlaneContact& contact = contacts_[c];
   const ContactMode before = status.mode;
   const int size_before = status.feature.size();
   const RoundPart part_before = status.round_part;
-  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
   const bool held = settle_on_candidates(c, t, y);
   if (!held) set_apart(c);
   const int size = status.feature.size();
@@ -379,99 +313,15 @@ void ContactSystem::classify_contact(std::size_t c, double t, VecX& y, bool alwa
                      : status.mode == ContactMode::Sliding ? "slides"
                      : anchored(c) || held_polyhedron_[c]  ? "sticks"
                                                            : "rolls";
-  if (polyhedron && size > 0) what += fmt::format(" on {}", feature_name(size));
-  if (status.round_part != RoundPart::None)
-    what += fmt::format(" on {}", round_part_name(contact.surface, status.round_part));
+  if (const char* part = pairs_[c]->part_name(view(c))) what += fmt::format(" on {}", part);
   note_contact(t, c, std::move(what));
 }
 
 bool ContactSystem::settle_on_candidates(std::size_t c, double t, VecX& y) {
-  ContactStatus& status = s_.contacts[c];
-  const PlaneContact& contact = contacts_[c];
-  // The candidates, in order: the whole feature; a face's edges; its (or an edge's) vertices;
-  // apart. The first whose forces are consistent is the one (for these few, enumerating them
-  // solves the complementarity problem exactly).
-  if (status.round_part != RoundPart::None) return settle_round(c, t, y);
-  d_.touching.assign(status.feature.polygon.begin(), status.feature.polygon.end());
-  const int k = static_cast<int>(d_.touching.size());
-  const int edges = k >= 3 ? k : 0;
-  const int vertices = k >= 2 ? k : 0;
   dynamics_.calc_motion(y, false);
-  const Vec3 n_B = dynamics_.motion(contact.body).R_WB.transpose() * contact.normal_W;
-  for (int candidate = 0; candidate <= edges + vertices; ++candidate) {
-    if (candidate > 0) {
-      std::array<int, 2> pick{};
-      std::size_t count = 1;
-      if (candidate <= edges) {
-        pick = {d_.touching[static_cast<std::size_t>(candidate - 1)],
-                d_.touching[static_cast<std::size_t>(candidate % k)]};
-        count = 2;
-      } else {
-        pick[0] = d_.touching[static_cast<std::size_t>(candidate - 1 - edges)];
-      }
-      make_feature(contact.surface.vertices, std::span<const int>(pick.data(), count), n_B,
-                   status.feature);
-    }
-    if (settle_on_feature(c, t, y)) return true;
-  }
-  return false;
-}
-
-bool ContactSystem::settle_round(std::size_t c, double t, VecX& y) {
-  ContactStatus& status = s_.contacts[c];
-  const RoundEnds ends = round_ends(contacts_[c].surface);
-  d_.touching.clear();  // the round body's left-out points are named per candidate
-  dynamics_.calc_motion(y, false);
-  const Vec3 n_B = dynamics_.motion(contacts_[c].body).R_WB.transpose() * contacts_[c].normal_W;
-  const Vec3 u = rim_direction(n_B, status.rim_direction_B);
-  const std::array<Vec3, 2> end_points = {rim_point(ends, 0, u), rim_point(ends, 1, u)};
-  const auto one = [](const Vec3& p) { return std::span<const Vec3>(&p, 1); };
-  const RoundPart part = status.round_part;
-  switch (part) {
-    case RoundPart::Side:
-      if (settle_on_feature(c, t, y)) return true;
-      status.round_part = RoundPart::EndA;  // end B's rim point lifts
-      if (settle_on_feature(c, t, y, one(end_points[1]))) return true;
-      status.round_part = RoundPart::EndB;  // end A's lifts
-      return settle_on_feature(c, t, y, one(end_points[0]));
-    case RoundPart::FaceA:
-    case RoundPart::FaceB:
-      if (settle_on_feature(c, t, y)) return true;
-      tip_round(c, 0);  // onto the rim where the CoP went (the face's forces, in d_.now)
-      return settle_on_feature(c, t, y, one(ends.centre_B[static_cast<std::size_t>(end_of(part))]));
-    case RoundPart::EndA:
-    case RoundPart::EndB: {
-      // The other end, if it is at the plane too, must not go into it.
-      Vec3 other = Vec3::Zero();
-      const bool at_plane =
-          round_other_end_B(c, other) && height_above_plane(c, other) <= status.touching_height;
-      return settle_on_feature(c, t, y, at_plane ? one(other) : std::span<const Vec3>());
-    }
-    default:
-      return settle_on_feature(c, t, y);
-  }
-}
-
-bool ContactSystem::round_other_end_B(std::size_t c, Vec3& other_B) const {
-  const ContactStatus& status = s_.contacts[c];
-  const RoundEnds ends = round_ends(contacts_[c].surface);
-  if (ends.one_rim || !is_end(status.round_part)) return false;
-  const Vec3 n_B = dynamics_.motion(contacts_[c].body).R_WB.transpose() * contacts_[c].normal_W;
-  const int other = status.round_part == RoundPart::EndA ? 1 : 0;
-  other_B = rim_point(ends, other, rim_direction(n_B, status.rim_direction_B));
-  return true;
-}
-
-void ContactSystem::tip_round(std::size_t c, int side) {
-  ContactStatus& status = s_.contacts[c];
-  const ContactNow& now = d_.now[c];
-  if (status.round_part == RoundPart::Side) {
-    status.round_part = side == 0 ? RoundPart::EndA : RoundPart::EndB;
-  } else if (is_face(status.round_part)) {
-    status.rim_direction_B =
-        face_tip_direction(now.n_B, now.moment_about_O_B, status.rim_direction_B);
-    status.round_part = end_of(status.round_part) == 0 ? RoundPart::EndA : RoundPart::EndB;
-  }
+  PairView v = view(c);
+  return pairs_[c]->settle_on_candidates(
+      v, [&](std::span<const Vec3> left_out_B) { return settle_on_feature(c, t, y, left_out_B); });
 }
 
 void ContactSystem::set_apart(std::size_t c) {
@@ -488,62 +338,7 @@ void ContactSystem::set_apart(std::size_t c) {
 bool ContactSystem::anchored(std::size_t c) const {
   // A held polyhedron's points are held one by one, and the joint holds the rest.
   if (held_polyhedron_[c]) return false;
-  const ContactSurface& surface = contacts_[c].surface;
-  const RoundPart part = s_.contacts[c].round_part;
-  if (surface.kind == ContactSurface::Kind::Polyhedron || is_face(part)) return true;
-  // A point fixed in the body: a cone's apex (an end of radius 0).
-  return part == RoundPart::EndA && round_ends(surface).radius[0] == 0.0;
-}
-
-void ContactSystem::find_touching_round_part(std::size_t c, double within, bool resting) {
-  const PlaneContact& contact = contacts_[c];
-  ContactStatus& status = s_.contacts[c];
-  const BodyMotion w = dynamics_.motion(contact.body);
-  const RoundEnds ends = round_ends(contact.surface);
-  const Vec3& n = contact.normal_W;
-  const Vec3 n_B = w.R_WB.transpose() * n;
-  const Vec3 omega_B = w.velocity.head<3>();
-  const auto touches = [&](const Vec3& p_B) {
-    const double height = height_above_plane(c, p_B);
-    if (height > within) return false;
-    const double speed = normal_speed(c, p_B);
-    return resting ? speed <= status.slip_zero : lands_with(c, height, speed);
-  };
-  // The rims' lowest points; with a whole rim within `within` (a face nearly flat), the rim
-  // point moving down the fastest, which leads if the face tilts: a point C + r e has normal
-  // speed v_C.n + r e.(n x omega).
-  double projected = 0.0;
-  Vec3 u = lowest_in_plane(n_B, projected);
-  const double widest = std::max(ends.radius[0], ends.radius[1]);
-  if (2.0 * widest * projected <= within) {
-    const Vec3 tilting = n_B.cross(omega_B);
-    const Vec3 in_plane(tilting.x(), tilting.y(), 0.0);
-    u = in_plane.norm() > 0.0 ? Vec3(-in_plane.normalized()) : status.rim_direction_B;
-  }
-  status.rim_direction_B = u;
-  // Per end: its lowest rim point touches; its whole face does (the far rim point too).
-  std::array<bool, 2> low{}, face{};
-  for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) {
-    const auto e = static_cast<std::size_t>(k);
-    low[e] = touches(rim_point(ends, k, u));
-    face[e] = low[e] && ends.radius[e] > 0.0 && touches(rim_point(ends, k, -u));
-  }
-  if (face[1]) {
-    status.round_part = RoundPart::FaceB;
-  } else if (face[0]) {
-    status.round_part = RoundPart::FaceA;
-  } else if (low[0] && low[1]) {
-    status.round_part = RoundPart::Side;
-  } else if (low[0] || low[1]) {
-    status.round_part = low[0] ? RoundPart::EndA : RoundPart::EndB;
-  } else if (resting) {
-    status.round_part = RoundPart::None;
-  } else {
-    // A landing located to round-off is at the plane: at least the lower end.
-    const bool a_lower =
-        !ends.one_rim && rim_point(ends, 0, u).dot(n_B) < rim_point(ends, 1, u).dot(n_B);
-    status.round_part = a_lower ? RoundPart::EndA : RoundPart::EndB;
-  }
+  return pairs_[c]->anchored(view(c));
 }
 
 void ContactSystem::anchor_contact(std::size_t c) {
@@ -566,9 +361,8 @@ void ContactSystem::anchor_contact(std::size_t c) {
 void ContactSystem::impact(std::size_t c, double t, VecX& y) {
   const PlaneContact& contact = contacts_[c];
   ContactStatus& status = s_.contacts[c];
-  const Vec3& n = contact.normal_W;
-  const bool polyhedron = contact.surface.kind == ContactSurface::Kind::Polyhedron;
-  const bool round = is_round(contact.surface);
+  const ContactPair& pair = *pairs_[c];
+  PairView v = view(c);
   dynamics_.calc_motion(y, true);
   calc_contact_points();
   // The point that landed: apart, the one the event watched (not always the lowest).
@@ -577,12 +371,11 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
   const double vn_before = normal_speed(c, landing_B);
   const bool settles = -vn_before <= status.settle_speed || contact.restitution == 0.0;
   const double energy_before = dynamics_.kinetic_energy();
-  // Vertices about to land with it (within the settling height) land together: a box falling
-  // flat would otherwise rattle between its corners in ever shorter bounces.
-  if (polyhedron) find_touching_vertices(c, status.landing_height);
-  if (round) find_touching_round_part(c, status.landing_height, false);
-  const RoundPart landing_part = status.round_part;
-  const Vec3 landing_rim_direction_B = status.rim_direction_B;
+  // Points about to land with it (within the settling height) land together: a box falling
+  // flat would otherwise rattle between its corners in ever shorter bounces. Each law starts
+  // from that landing part (an attempt may tip it).
+  pair.find_touching_part(v, status.landing_height, false);
+  d_.landing = status;
 
   // Newton's restitution on the normal motion, Coulomb on the tangential impulse: the impulse
   // that leaves no slip if it lies in the cone, else a sliding impulse (normal impulses, each
@@ -601,10 +394,7 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
   double work = 0.0;
   Eigen::Index count = 0;
   for (const ImpactLaw& law : laws) {
-    if (polyhedron)
-      make_feature(contact.surface.vertices, d_.touching, d_.now[c].n_B, status.feature);
-    status.round_part = landing_part;
-    status.rim_direction_B = landing_rim_direction_B;
+    status = d_.landing;
     for (int attempt = 0; attempt < 3; ++attempt) {
       dynamics_.calc_motion(y, true);
       calc_contact_points();
@@ -642,16 +432,12 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
         solve_for_restitution();
       }
       int side = -1;
-      if (status.feature.size() >= 2 && support_margin_of(c, side) < 0.0) {
+      if (pair.can_tip(v) && support_margin_of(c, side) < 0.0) {
         if (held_polyhedron_[c]) {
           drop_point(c, now.least_point_B);
-        } else {
-          tip_onto_side(contact.surface.vertices, side, now.n_B, status.feature);
+        } else if (!pair.tip_at_impact(v, side)) {
+          break;
         }
-        continue;
-      }
-      if (round && support_margin_of(c, side) < 0.0 && side >= 0) {
-        tip_round(c, side);
         continue;
       }
       break;
@@ -665,24 +451,13 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
   y = d_.impact_y;
   add_work(c, work, y);
   dynamics_.calc_motion(y, true);
-  const BodyMotion w = dynamics_.motion(contact.body);
   const double vn_after = normal_speed(c, landing_B);
-  const std::string on =
-      polyhedron ? fmt::format(" on {}", feature_name(status.feature.size()))
-      : round    ? fmt::format(" on {}", round_part_name(contact.surface, status.round_part))
-                 : std::string();
+  const char* part = pair.part_name(v);
+  const std::string on = part ? fmt::format(" on {}", part) : std::string();
   if (settles) {
     note_contact(t, c,
                  fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before));
-    if (polyhedron) {
-      // On everything now at the plane: which part carries it is the classification's to find
-      // (the impulse's own centre may have left a vertex out that the forces need).
-      find_touching_vertices(c, status.touching_height);
-      make_feature(contact.surface.vertices, d_.touching, w.R_WB.transpose() * n, status.feature);
-    }
-    // A round body on what landed with it: its points within the landing height that the
-    // plastic impulse stopped (a face lands with its far side that high, not yet at the plane).
-    if (round) find_touching_round_part(c, status.landing_height, false);
+    pair.find_settled_part(v);
     classify_contact(c, t, y, true);  // the impact set the part: say what holds it
     check_landing_cascade(c, t, -vn_before);
     return;
@@ -690,28 +465,10 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
   note_contact(t, c,
                fmt::format("impact{}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", on,
                            -vn_before, vn_after, -work));
-  if (round) {
-    // The part's points that did not bounce off stay on the plane.
-    find_touching_round_part(c, status.touching_height, true);
-    if (status.round_part == RoundPart::None) {
-      set_apart(c);
-      return;
-    }
-    classify_contact(c, t, y);
+  if (!pair.keep_unbounced_part(v)) {
+    set_apart(c);  // it bounces (a sphere: it was apart)
     return;
   }
-  if (!polyhedron) return;  // it bounces: apart
-  // The feature's vertices that did not bounce off stay on the plane.
-  d_.touching.clear();
-  for (const int i : status.feature.polygon) {
-    const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
-    if (normal_speed(c, p) <= status.slip_zero) d_.touching.push_back(i);
-  }
-  if (d_.touching.empty()) {
-    set_apart(c);
-    return;
-  }
-  make_feature(contact.surface.vertices, d_.touching, w.R_WB.transpose() * n, status.feature);
   classify_contact(c, t, y);
 }
 
@@ -754,32 +511,25 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
       }
       break;
     case 1: {  // support: lift-off, or the CoP at the feature's side
-      dynamics_.calc_accelerations(y);
+      calc_accelerations(y);
       int side = -1;
       support_margin_of(c, side);
-      if (held_polyhedron_[c] && status.feature.size() >= 2 && d_.now[c].normal_force > 0.0) {
+      const ContactPair& pair = *pairs_[c];
+      PairView v = view(c);
+      if (held_polyhedron_[c] && pair.can_tip(v) && d_.now[c].normal_force > 0.0) {
         drop_point(c, d_.now[c].least_point_B);
-        if (status.feature.size() == 0) {
-          set_apart(c);
+        if (status.mode == ContactMode::Apart) {
           note_contact(t, c, "lifts off");
           break;
         }
-        note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
+        note_contact(t, c, fmt::format("tips onto {}", pair.part_name(v)));
         classify_contact(c, t, y);
         break;
       }
-      if (status.feature.size() >= 2 &&
-          still_presses(d_.now[c].normal_force, bodies_[contacts_[c].body].mass, gravity_W_)) {
-        tip_onto_side(contacts_[c].surface.vertices, side, d_.now[c].n_B, status.feature);
-        note_contact(t, c, fmt::format("tips onto {}", feature_name(status.feature.size())));
-        classify_contact(c, t, y);
-        break;
-      }
-      if (side >= 0 && status.round_part != RoundPart::None && d_.now[c].normal_force > 0.0) {
-        tip_round(c, side);
-        note_contact(
-            t, c,
-            fmt::format("tips onto {}", round_part_name(contacts_[c].surface, status.round_part)));
+      const bool presses =
+          still_presses(d_.now[c].normal_force, bodies_[contacts_[c].body].mass, gravity_W_);
+      if (pair.tip_on_support(v, side, presses)) {
+        note_contact(t, c, fmt::format("tips onto {}", pair.part_name(v)));
         classify_contact(c, t, y);
         break;
       }
@@ -810,7 +560,7 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
         }
         classify_contact(c, t, y);
       } else {
-        dynamics_.calc_accelerations(y);
+        calc_accelerations(y);
         if (start_sliding(c, t, y)) {
           note_contact(t, c, "slides: the friction sticking needs leaves the cone");
           break;
@@ -905,13 +655,8 @@ void ContactSystem::begin(double t0, const VecX& y) {
         now.support_normal_speed > status.slip_zero) {
       continue;
     }
-    if (contacts_[c].surface.kind == ContactSurface::Kind::Polyhedron) {
-      find_touching_vertices(c, s_.contacts[c].touching_height);
-      make_feature(contacts_[c].surface.vertices, d_.touching, now.n_B, s_.contacts[c].feature);
-    }
-    if (is_round(contacts_[c].surface)) {
-      find_touching_round_part(c, s_.contacts[c].touching_height, false);
-    }
+    PairView v = view(c);
+    pairs_[c]->find_touching_part(v, status.touching_height, false);
     classify_contact(c, t0, y_start);
   }
 }
@@ -929,7 +674,6 @@ void ContactSystem::reclassify(double t, VecX& y, bool speeds_jumped) {
 }
 
 bool ContactSystem::still_touches_after_jump(std::size_t c, const VecX& y) {
-  const PlaneContact& contact = contacts_[c];
   ContactStatus& status = s_.contacts[c];
   dynamics_.calc_motion(y, true);
   calc_contact_points();
@@ -944,35 +688,13 @@ bool ContactSystem::still_touches_after_jump(std::size_t c, const VecX& y) {
   if (leaving == now.normal_point_count) return false;
   // Some of its points leave, some stay: it touches with those that stay (a frame hinged at one
   // edge of its face, thrown up: the hinge's edge stays).
-  if (contact.surface.kind == ContactSurface::Kind::Polyhedron) {
-    d_.touching.clear();
-    for (std::size_t i = 0; i < contact.surface.vertices.size(); ++i) {
-      const Vec3& p = contact.surface.vertices[i];
-      if (height_above_plane(c, p) <= status.touching_height &&
-          normal_speed(c, p) <= status.slip_zero) {
-        d_.touching.push_back(static_cast<int>(i));
-      }
-    }
-    if (d_.touching.empty()) return false;
-    make_feature(contact.surface.vertices, d_.touching, now.n_B, status.feature);
-    return true;
-  }
-  find_touching_round_part(c, status.touching_height, true);
-  return status.round_part != RoundPart::None;
+  PairView v = view(c);
+  return pairs_[c]->find_touching_part(v, status.touching_height, true);
 }
 
 void ContactSystem::drop_point(std::size_t c, const Vec3& p_B) {
-  const ContactSurface& surface = contacts_[c].surface;
-  ContactStatus& status = s_.contacts[c];
-  d_.touching.clear();
-  for (const int i : status.feature.polygon) {
-    if (surface.vertices[static_cast<std::size_t>(i)] != p_B) d_.touching.push_back(i);
-  }
-  if (d_.touching.empty()) {
-    set_apart(c);
-    return;
-  }
-  make_feature(surface.vertices, d_.touching, d_.now[c].n_B, status.feature);
+  PairView v = view(c);
+  if (!pairs_[c]->drop_point(v, p_B)) set_apart(c);
 }
 
 }  // namespace tumble

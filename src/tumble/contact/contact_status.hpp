@@ -20,7 +20,7 @@ struct ContactStatus {
   ContactFeature feature;  // a polyhedron's touching vertex, edge or face (empty: apart)
   RoundPart round_part = RoundPart::None;  // a round body's touching part
   // Where a round body's rim points were at the last step (body axes, unit): refreshed after
-  // each step near flat (rim_direction_kept_up), it fixes them where a face is flat
+  // each step near flat (the round pair's follow_direction), it fixes them where a face is flat
   // (round_contact.hpp's rim_direction).
   Vec3 rim_direction_B = Vec3::UnitX();
   // Slip direction (slip_W's) while the slip speed is ~0.

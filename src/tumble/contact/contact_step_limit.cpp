@@ -28,8 +28,7 @@ double ContactSystem::step_limit(double t, const VecX& y) const {
                   [](const ContactStatus& s) { return s.mode == ContactMode::Apart; });
   if (!any_apart) return limit;
   d_.time_now = t;
-  dynamics_.calc_accelerations(
-      y);  // the accelerations, for how fast the points' normal velocities turn
+  calc_accelerations(y);  // for how fast the points' normal velocities turn
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode != ContactMode::Apart) continue;
     const PlaneContact& contact = contacts_[c];
@@ -40,8 +39,7 @@ double ContactSystem::step_limit(double t, const VecX& y) const {
     const Vec3 a_G_W = moving_point_acceleration_W(w, Vec3::Zero(), Vec3::Zero());
     // A point r from the COM: n . (a_G + alpha x r + omega x (omega x r)) >= -turning; a
     // sphere's lowest point does not move with its turning.
-    const double reach =
-        contact.surface.kind == ContactSurface::Kind::Sphere ? 0.0 : contact_size(contact.surface);
+    const double reach = pairs_[c]->turning_reach(contact.surface);
     const double turning =
         std::max(0.0, -n.dot(a_G_W)) +
         kTurningMargin * (w.acceleration.head<3>().norm() + motion.omega_W.squaredNorm()) * reach;

@@ -25,6 +25,7 @@
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/contact/contact_data.hpp"
 #include "tumble/contact/contact_dynamics.hpp"
+#include "tumble/contact/contact_pair.hpp"
 #include "tumble/contact/contact_status.hpp"
 #include "tumble/contact/plane_contact.hpp"
 
@@ -86,10 +87,15 @@ class ContactSystem {
   double step_limit(double t, const VecX& y) const;
 
  private:
+  // Every body's motion at y under its loads and the contacts' forces in their current modes,
+  // and dy/dt at (t, y): from the dynamics' motion, loads and rates around this system's own
+  // solve_forces (the dynamics are asked, never re-entered).
+  void calc_accelerations(const VecX& y) const;
+  void calc_rates(double t, const VecX& y, VecX& dydt) const;
+  // Contact c as its pair (contact_pair.hpp) sees it.
+  PairView view(std::size_t contact) const;
   // Contact points, reference points and their velocities, after the dynamics' calc_motion.
   void calc_contact_points() const;
-  // calc_contact_points for a touching round body: its part's points, and what may land next.
-  void calc_round_contact_points(std::size_t contact, const Vec3& omega_B) const;
   // Which constraints a contact's unknowns hold:
   //  - Motion: its mode's (sliding: the normal motion, with Coulomb's friction riding on each
   //    normal force; rolling or sticking: all its motion the feature allows);
@@ -152,49 +158,26 @@ class ContactSystem {
   // moment about the normal over the spin radius along the normal. Its length is what the
   // cone bounds by mu N; from d_.now.
   Vec3 friction_demand(std::size_t contact) const;
-  // The touching vertices of a polyhedron contact into d_.touching, after calc_motion: those
-  // within touching_height of the plane, and those within `within` not moving away from it (at
-  // least the lowest).
-  void find_touching_vertices(std::size_t contact, double within) const;
   // The mode a touching contact takes now (slip stopped, touchdown settled, start): rolling or
   // sticking if the friction that needs fits in the cone, else sliding the way the body is
   // pushed; a polyhedron tips onto a smaller feature while its CoP would leave the feature.
   // Notes the mode if it changed (or, with always_note, in any case).
   void classify_contact(std::size_t contact, double t, VecX& y, bool always_note = false);
-  // Tries contact c on its current feature: sticking if the friction fits, else sliding; true
-  // if the forces are consistent (N > 0, the CoP in the feature, no touching vertex left out
-  // going into the plane). Touching vertices: d_.touching.
-  // A round body's candidates also name the points they leave out (left_out_B).
+  // Tries contact c on its current feature or part: sticking if the friction fits, else
+  // sliding; true if the forces are consistent (N > 0, the CoP in the part, no touching vertex
+  // (d_.touching) or other point the candidate leaves out (left_out_B) going into the plane).
   bool settle_on_feature(std::size_t contact, double t, VecX& y,
                          std::span<const Vec3> left_out_B = {});
-  // classify_contact's candidates for contact c (settle_on_feature on the feature, its edges,
-  // its vertices; settle_round); true if one holds.
+  // classify_contact's candidates for contact c, its pair's (settle_on_feature on the part, then
+  // on each part it may tip onto); true if one holds.
   bool settle_on_candidates(std::size_t contact, double t, VecX& y);
-  // classify_contact for a round body: its touching part, then (if that is inconsistent) the
-  // parts it may tip onto: the side onto either end's rim point, a face onto the rim point where
-  // its CoP left. True if one holds.
-  bool settle_round(std::size_t contact, double t, VecX& y);
-  // A round body on one end's rim point (a cone's apex): the other end's lowest rim point, into
-  // other_B; false on no end's rim point, or for a disk or ring, whose ends are one rim (after
-  // calc_motion).
-  bool round_other_end_B(std::size_t contact, Vec3& other_B) const;
-  // A round body on its side or a face tips onto the end of the side (support margin's side 0:
-  // end A's rim point, 1: end B's), or the face's rim point where the CoP leaves it (after a
-  // solve).
-  void tip_round(std::size_t contact, int side);
   void set_apart(std::size_t contact);
-  // Whether contact c holds a rim point near flat, where its direction is kept up with after
-  // each step.
-  bool rim_direction_kept_up(std::size_t contact) const;
   // The acceleration along the plane's normal of the body's material point p_B (after a solve).
   double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
   // The height above the plane of the body's point p_B, and its material velocity along the
   // plane's normal (after calc_motion).
   double height_above_plane(std::size_t contact, const Vec3& p_B) const;
   double normal_speed(std::size_t contact, const Vec3& p_B) const;
-  // Whether a point at this height (within the landing height) moving at this normal speed lands
-  // with the one that touches down.
-  bool lands_with(std::size_t contact, double height, double normal_speed) const;
   // What the touchdown event sees of a point at this height moving at this normal speed.
   double watched_height(std::size_t contact, double height, double normal_speed) const;
   // Apart: the touchdown event's value, the least watched height over the points that may land
@@ -202,15 +185,9 @@ class ContactSystem {
   double landing_watch(std::size_t contact, Vec3& landing_B) const;
   // A polyhedron that starts sticking: its anchor where it is now (after calc_contact_points).
   void anchor_contact(std::size_t contact);
-  // Whether contact c, sticking, is held at an anchor: a polyhedron, a cone on its apex, a round
-  // body on a face (the parts fixed in the body); rolling parts move over the body and are not.
+  // Whether contact c, sticking, is held at an anchor (its pair's answer; a held polyhedron's
+  // points are held one by one instead).
   bool anchored(std::size_t contact) const;
-  // The part of a round body that touches (into its status, after calc_motion): a face if
-  // its whole rim is within `within` of the plane, else the side if both ends' lowest rim points
-  // are, else the end that is (at least the lower). A point counts if it lands with the touchdown
-  // (lands_with: within `within` and not moving away, or at the plane and not bouncing off);
-  // with `resting`, only if not moving away.
-  void find_touching_round_part(std::size_t contact, double within, bool resting);
   void impact(std::size_t contact, double t, VecX& y);
   // After a settled landing at `speed`: throws std::runtime_error where such landings have
   // come kCascadeLandings in a row, each going apart at once (no consistent mode).
@@ -222,10 +199,11 @@ class ContactSystem {
   // the plane and not leaving it); its feature or part becomes those points.
   bool still_touches_after_jump(std::size_t contact, const VecX& y);
   // A held polyhedron's point p_B (least_point_B) leaves its feature: the feature becomes the
-  // rest of its vertices, or none.
+  // rest of its vertices, or none (apart).
   void drop_point(std::size_t contact, const Vec3& p_B);
 
   std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run
+  std::vector<const ContactPair*> pairs_;   // per contact: its pair, from contact_pair()'s table
   std::span<const RigidBody> bodies_;
   Vec3 gravity_W_;
   const ContactDynamics& dynamics_;

@@ -4,13 +4,11 @@
 #include <cmath>
 #include <limits>
 
-#include "tumble/contact/round_contact.hpp"
+#include "tumble/contact/contact_pair.hpp"
 
 namespace tumble {
 
 namespace {
-
-constexpr double kNever = std::numeric_limits<double>::infinity();
 
 // The first t > 0 with c + b t - A t^2 / 2 = 0, for c > 0 (the height above the depth), b its
 // rate, A >= 0; in the form that keeps its digits when b^2 >> A c. A point already deeper has
@@ -54,45 +52,40 @@ double circle_time(const CircleHeight& f) {
 
 }  // namespace
 
+double point_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion,
+                           const Vec3& p_B, double turning, double depth) {
+  const Vec3& n = contact.normal_W;
+  const Vec3 r_W = motion.R_WB * p_B;
+  const Vec3 v_W = motion.v_G_W + motion.omega_W.cross(r_W);
+  return first_root(n.dot(motion.r_G_W + r_W - contact.point_W) + depth, n.dot(v_W), turning);
+}
+
+double centre_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion, double radius,
+                            double turning, double depth) {
+  const Vec3& n = contact.normal_W;
+  return first_root(n.dot(motion.r_G_W - contact.point_W) + depth - radius, n.dot(motion.v_G_W),
+                    turning);
+}
+
+double circle_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion,
+                            const Vec3& centre_B, double radius, double turning, double depth) {
+  const Vec3& n = contact.normal_W;
+  const Vec3 e1 = motion.R_WB.col(0), e2 = motion.R_WB.col(1);
+  const Vec3 c_W = motion.R_WB * centre_B;
+  const CircleHeight f{n.dot(motion.r_G_W + c_W - contact.point_W) + depth,
+                       n.dot(motion.v_G_W + motion.omega_W.cross(c_W)),
+                       n.dot(e1),
+                       n.dot(motion.omega_W.cross(e1)),
+                       n.dot(e2),
+                       n.dot(motion.omega_W.cross(e2)),
+                       radius,
+                       turning};
+  return circle_time(f);
+}
+
 double time_to_reach_depth(const PlaneContact& contact, const SurfaceMotion& motion, double turning,
                            double depth) {
-  const Vec3& n = contact.normal_W;
-  const ContactSurface& surface = contact.surface;
-  const auto height_of = [&](const Vec3& x_W) { return n.dot(x_W - contact.point_W) + depth; };
-  const auto point_time = [&](const Vec3& p_B) {
-    const Vec3 r_W = motion.R_WB * p_B;
-    const Vec3 v_W = motion.v_G_W + motion.omega_W.cross(r_W);
-    return first_root(height_of(motion.r_G_W + r_W), n.dot(v_W), turning);
-  };
-  if (surface.kind == ContactSurface::Kind::Sphere) {
-    // Turning moves no point of a sphere lower: its lowest point is its centre's less r.
-    return first_root(height_of(motion.r_G_W) - surface.radius, n.dot(motion.v_G_W), turning);
-  }
-  if (surface.kind == ContactSurface::Kind::Polyhedron) {
-    double t = kNever;
-    for (const Vec3& p : surface.vertices) t = std::min(t, point_time(p));
-    return t;
-  }
-  const RoundEnds ends = round_ends(surface);
-  const Vec3 e1 = motion.R_WB.col(0), e2 = motion.R_WB.col(1);
-  double t = kNever;
-  for (std::size_t k = ends.one_rim ? 1 : 0; k < 2; ++k) {
-    if (ends.radius[k] == 0.0) {  // a cone's apex
-      t = std::min(t, point_time(ends.centre_B[k]));
-      continue;
-    }
-    const Vec3 c_W = motion.R_WB * ends.centre_B[k];
-    const CircleHeight f{height_of(motion.r_G_W + c_W),
-                         n.dot(motion.v_G_W + motion.omega_W.cross(c_W)),
-                         n.dot(e1),
-                         n.dot(motion.omega_W.cross(e1)),
-                         n.dot(e2),
-                         n.dot(motion.omega_W.cross(e2)),
-                         ends.radius[k],
-                         turning};
-    t = std::min(t, circle_time(f));
-  }
-  return t;
+  return contact_pair(contact.surface.kind).time_to_reach_depth(contact, motion, turning, depth);
 }
 
 }  // namespace tumble

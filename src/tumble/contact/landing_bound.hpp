@@ -15,6 +15,8 @@
 // a rim circle it is the circle's centre term less r |(n.e1(t), n.e2(t))|, with e_i(t) = e_i +
 // t omega x e_i (a concave function). The first root of that minimum less A t^2 / 2 plus the depth
 // is the time returned.
+#include <limits>
+
 #include "tumble/contact/plane_contact.hpp"
 #include "tumble/math/types.hpp"
 
@@ -31,7 +33,19 @@ struct SurfaceMotion {
 // The first time (s, > 0) at which a point of the contact's surface could be `depth` (m, > 0)
 // below the plane, for points whose normal velocities turn towards the plane at most at
 // `turning` (m/s^2, >= 0); +infinity if none could. Points that deep already are left out.
+// Each surface's bound is its contact pair's (contact_pair.hpp), from the pieces below.
 double time_to_reach_depth(const PlaneContact& contact, const SurfaceMotion& motion, double turning,
                            double depth);
+
+inline constexpr double kNever = std::numeric_limits<double>::infinity();
+// The bound for one point of the body (p_B, body axes from the COM); for the COM less `radius`
+// along the normal (a sphere's lowest point, which turning does not move); for a circle of the
+// body about its z axis (centre_B, radius: a rim).
+double point_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion,
+                           const Vec3& p_B, double turning, double depth);
+double centre_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion, double radius,
+                            double turning, double depth);
+double circle_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion,
+                            const Vec3& centre_B, double radius, double turning, double depth);
 
 }  // namespace tumble

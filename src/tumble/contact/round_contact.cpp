@@ -27,12 +27,6 @@ double face_spin_radius(double r, double q) {
 
 }  // namespace
 
-bool is_round(const ContactSurface& surface) {
-  return surface.kind == ContactSurface::Kind::Circle ||
-         surface.kind == ContactSurface::Kind::Cylinder ||
-         surface.kind == ContactSurface::Kind::Cone;
-}
-
 RoundEnds round_ends(const ContactSurface& surface) {
   RoundEnds ends;
   ends.face_inner_radius = surface.face_inner_radius;

@@ -32,7 +32,6 @@ struct RoundEnds {
   bool one_rim = false;            // a disk or ring: A and B are the same circle
 };
 
-bool is_round(const ContactSurface& surface);
 RoundEnds round_ends(const ContactSurface& surface);
 
 // 0 for the parts at end A, 1 at end B (its rim point or its face).

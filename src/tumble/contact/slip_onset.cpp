@@ -51,7 +51,7 @@ bool ContactSystem::start_sliding(std::size_t c, double t, const VecX& y) {
     // At the cone's edge: the jerk decides, and the direction turns as it needs.
     grows = turn_starting_slip(c, t, y);
   }
-  dynamics_.calc_accelerations(y);
+  calc_accelerations(y);
   return grows;
 }
 
@@ -62,7 +62,7 @@ bool ContactSystem::turn_starting_slip(std::size_t c, double t, const VecX& y) {
 
   // The jerk with the direction held, along the motion the derivative gives.
   const double dt = kOnsetTimeStep * status.time_scale;
-  dynamics_.calc_rates(t, y, d_.onset_dydt);
+  calc_rates(t, y, d_.onset_dydt);
   d_.onset_y = y + dt * d_.onset_dydt;
   const Vec3 after = slip_acceleration_at(c, d_.onset_y, d0);
   d_.onset_y = y - dt * d_.onset_dydt;
@@ -114,11 +114,12 @@ void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& 
     points_B[count++] = now.normal_points_B[static_cast<std::size_t>(k)];
   }
   Vec3 other = Vec3::Zero();
-  if (round_other_end_B(c, other) && height_above_plane(c, other) <= status.touching_height) {
+  if (pairs_[c]->other_end_B(view(c), other) &&
+      height_above_plane(c, other) <= status.touching_height) {
     points_B[count++] = other;
   }
   set_apart(c);
-  dynamics_.calc_accelerations(y);
+  calc_accelerations(y);
   // A zero of what the normal acceleration is measured against (gravity's scale).
   const double tolerance = status.slip_zero / status.time_scale;
   bool leaves = true;
@@ -133,13 +134,13 @@ void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& 
   // tangential impulse, not built): it slides along the pushed direction, held.
   status = sliding;
   status.slide_turn_W.setZero();
-  dynamics_.calc_accelerations(y);
+  calc_accelerations(y);
   note_contact(t, c, "slides: the friction sticking needs leaves the cone (inconsistent)");
 }
 
 Vec3 ContactSystem::slip_acceleration_at(std::size_t c, const VecX& y, const Vec3& slide_W) {
   s_.contacts[c].slide_direction_W = slide_W;
-  dynamics_.calc_accelerations(y);
+  calc_accelerations(y);
   return slip_acceleration(c);
 }
 

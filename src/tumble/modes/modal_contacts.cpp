@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "tumble/contact/round_contact.hpp"
+#include "tumble/contact/contact_pair.hpp"
 #include "tumble/modes/not_steady.hpp"
 
 namespace tumble {
@@ -26,59 +26,10 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
     ModalContact held;
     held.contact = c;
     held.rolls = contact.friction > 0.0;
-    const ContactSurface& surface = contact.surface;
-    if (surface.kind == ContactSurface::Kind::Sphere) {
-      held.point.kind = ContactPoint::Kind::Lowest;
-      held.point.radius = surface.radius;
-    } else if (surface.kind == ContactSurface::Kind::Polyhedron) {
-      int count = 0;
-      for (const Vec3& vertex : surface.vertices) count += height_of(vertex) <= within ? 1 : 0;
-      if (count > 1) {
-        throw NotSteady(fmt::format(
-            "contact {}: the body rests on an edge or a face ({} vertices on the plane), where a "
-            "small tilt moves the plane's force to one side: no linearisation; balance it on one "
-            "vertex, or remove the contact",
-            name, count));
-      }
-      held.point.kind = ContactPoint::Kind::Material;
-      held.point.p_B = lowest.p_GC_B;
-    } else {
-      const RoundEnds ends = round_ends(surface);
-      const Vec3 n_B = R.transpose() * contact.normal_W;
-      double tilt = 0.0;
-      const Vec3 u_B = lowest_in_plane(n_B, tilt);
-      // A cone on its apex, the base's rim off the plane (a top, upright or leaning): a point of
-      // the body, whatever the tilt.
-      const bool apex_down =
-          ends.radius[0] == 0.0 && !ends.one_rim && height_of(ends.centre_B[0]) <= within;
-      if (apex_down && height_of(rim_point(ends, 1, u_B)) > within) {
-        held.point.kind = ContactPoint::Kind::Material;
-        held.point.p_B = ends.centre_B[0];
-        touching.push_back(held);
-        continue;
-      }
-      if (tilt <= 1e-9) {
-        throw NotSteady(fmt::format(
-            "contact {}: the body lies flat on an end face, where a small tilt moves the plane's "
-            "force to its rim: no linearisation",
-            name));
-      }
-      std::vector<int> ends_down;
-      for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) {
-        if (height_of(rim_point(ends, k, u_B)) <= within) ends_down.push_back(k);
-      }
-      if (ends_down.size() != 1) {
-        throw NotSteady(fmt::format(
-            "contact {}: the body rests along a line of its side, where a small tilt moves the "
-            "plane's force to one end: no linearisation",
-            name));
-      }
-      const auto k = static_cast<std::size_t>(ends_down.front());
-      held.point.p_B = ends.centre_B[k];
-      held.point.radius = ends.radius[k];
-      held.point.kind =
-          held.point.radius > 0.0 ? ContactPoint::Kind::Rim : ContactPoint::Kind::Material;
-    }
+    const std::string why = contact_pair(contact.surface.kind)
+                                .resting_point(contact.surface, R.transpose() * contact.normal_W,
+                                               lowest, within, height_of, held.point);
+    if (!why.empty()) throw NotSteady(fmt::format("contact {}: {}", name, why));
     touching.push_back(held);
   }
   return touching;

@@ -32,14 +32,16 @@ void ArticulatedFormulation::ContactBodies::calc_motion(const VecX& y, bool with
   f_.calc_kinematics(y, with_velocities);
 }
 
-void ArticulatedFormulation::ContactBodies::calc_accelerations(const VecX& y) const {
-  f_.calc_kinematics(y, true);
+void ArticulatedFormulation::ContactBodies::gather_loads(const VecX& y) const {
   f_.accumulate_element_loads(y, f_.s_.schedule_time, f_.d_.rates, 0, nullptr);
-  f_.solve_with_contacts();
 }
 
-void ArticulatedFormulation::ContactBodies::calc_rates(double t, const VecX& y, VecX& dydt) const {
-  f_.derivative(t, y, dydt);
+void ArticulatedFormulation::ContactBodies::gather_loads(const VecX& y, VecX& dydt) const {
+  f_.accumulate_element_loads(y, f_.s_.schedule_time, dydt, f_.m_.ledger, nullptr);
+}
+
+void ArticulatedFormulation::ContactBodies::write_rates(const VecX& y, VecX& dydt) const {
+  f_.write_state_rates(y, dydt);
 }
 
 void ArticulatedFormulation::ContactBodies::solve_under_loads() const {

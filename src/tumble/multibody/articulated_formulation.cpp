@@ -313,6 +313,11 @@ void ArticulatedFormulation::derivative(double t, const VecX& y, VecX& dydt) con
   calc_kinematics(y, true);
   accumulate_element_loads(y, s_.schedule_time, dydt, m_.ledger, nullptr);
   solve_with_contacts();
+  write_state_rates(y, dydt);
+  contacts_.write_powers(dydt, m_.ledger);
+}
+
+void ArticulatedFormulation::write_state_rates(const VecX& y, VecX& dydt) const {
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
     const Workspace& w = d_.work[k];
@@ -320,7 +325,6 @@ void ArticulatedFormulation::derivative(double t, const VecX& y, VecX& dydt) con
     if (joint.nv > 0) dydt.segment(joint.v, joint.nv) = w.qdd;
   }
   write_joint_powers(y, dydt, m_.ledger);
-  contacts_.write_powers(dydt, m_.ledger);
 }
 
 void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,

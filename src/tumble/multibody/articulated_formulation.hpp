@@ -119,6 +119,9 @@ class ArticulatedFormulation final : public Formulation {
   // Motors' powers (tau theta', after solve()) and zero for impulses and locks, into rates from
   // offset + first_motor_entry() to the end.
   void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
+  // After the last solve: every joint's coordinate rates and accelerations into dydt, and the
+  // joints' powers into its ledger (write_joint_powers).
+  void write_state_rates(const VecX& y, VecX& dydt) const;
   JointReaction reaction_of(std::size_t model_joint) const;
   // Impulses, locks and starting motors at a breakpoint; whether any jumped the speeds.
   bool apply_jumps_at(double t, VecX& y);
@@ -133,8 +136,9 @@ class ArticulatedFormulation final : public Formulation {
     explicit ContactBodies(const ArticulatedFormulation& f);
     const BodyState& state(std::size_t body) const override;
     void calc_motion(const VecX& y, bool with_velocities) const override;
-    void calc_accelerations(const VecX& y) const override;
-    void calc_rates(double t, const VecX& y, VecX& dydt) const override;
+    void gather_loads(const VecX& y) const override;
+    void gather_loads(const VecX& y, VecX& dydt) const override;
+    void write_rates(const VecX& y, VecX& dydt) const override;
     void solve_under_loads() const override;
     void solve_under_loads_and(std::span<const BodyWrench> wrenches) const override;
     void respond_to_unit_wrench(const BodyWrench& unit) const override;

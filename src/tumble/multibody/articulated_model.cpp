@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tumble/contact/contact_pair.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
@@ -63,8 +64,7 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
     // Held by a joint, a body's contact rows may be redundant with it (the solve allows that);
     // a round body's parts on such a body are not modelled yet (the reader says so).
     if (tree[slot_of_body[contact.body]].type != JointType::Free &&
-        contact.surface.kind != ContactSurface::Kind::Sphere &&
-        contact.surface.kind != ContactSurface::Kind::Polyhedron) {
+        !contact_pair(contact.surface.kind).on_held_bodies()) {
       throw std::invalid_argument("contact '" + contact.name + "': body '" +
                                   model.bodies[contact.body].name +
                                   "' is held by a joint; only a sphere's, a shell's or a "

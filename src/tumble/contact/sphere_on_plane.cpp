@@ -1,0 +1,66 @@
+// A sphere or a shell (its centre at the COM) on a plane (contact_pair.hpp): it touches at its
+// lowest point, which moves over it as it turns, and has no part to settle, tip or stick on.
+#include "tumble/contact/contact_pairs.hpp"
+
+namespace tumble {
+
+namespace {
+
+class SphereOnPlane final : public ContactPair {
+ public:
+  Vec3 lowest_point_B(const ContactSurface& surface, const Vec3& n_B) const override {
+    return -surface.radius * n_B;
+  }
+  Vec3 lowest_point_rate_B(const ContactSurface& surface, const Vec3& n_B,
+                           const Vec3& omega_B) const override {
+    return -surface.radius * n_B.cross(omega_B);
+  }
+  double size(const ContactSurface& surface) const override { return surface.radius; }
+  double time_to_reach_depth(const PlaneContact& contact, const SurfaceMotion& motion,
+                             double turning, double depth) const override {
+    // Turning moves no point of a sphere lower: its lowest point is its centre's less r.
+    return centre_time_to_depth(contact, motion, contact.surface.radius, turning, depth);
+  }
+
+  std::string resting_point(const ContactSurface& surface, const Vec3&, const SupportPoint&, double,
+                            FunctionRef<double(const Vec3&)>, ContactPoint& point) const override {
+    point.kind = ContactPoint::Kind::Lowest;
+    point.radius = surface.radius;
+    return {};
+  }
+
+  bool on_held_bodies() const override { return true; }
+  double turning_reach(const ContactSurface&) const override { return 0.0; }
+  bool calc_part_points(PairView&, const Vec3&) const override { return false; }
+  void for_each_landing_point(const PairView& v,
+                              FunctionRef<void(const Vec3&)> watch) const override {
+    watch(v.now.support.p_GC_B);
+  }
+  bool lands_while_touching() const override { return false; }
+  double support_margin(const PairView& v, int& side) const override {
+    side = -1;
+    return v.now.normal_force;
+  }
+  const char* part_name(const PairView&) const override { return nullptr; }
+  bool find_touching_part(PairView&, double, bool) const override { return true; }
+  void find_settled_part(PairView&) const override {}
+  bool keep_unbounced_part(PairView&) const override { return false; }
+  bool settle_on_candidates(PairView& v, SettleTry settle) const override {
+    v.touching.clear();  // no vertices to leave out
+    return settle(std::span<const Vec3>());
+  }
+  bool can_tip(const PairView&) const override { return false; }
+  bool tip_at_impact(PairView&, int) const override { return false; }
+  bool tip_on_support(PairView&, int, bool) const override { return false; }
+  bool anchored(const PairView&) const override { return false; }
+  bool projects_along_normal(const PairView&) const override { return true; }
+};
+
+}  // namespace
+
+const ContactPair& sphere_on_plane() {
+  static const SphereOnPlane pair;
+  return pair;
+}
+
+}  // namespace tumble

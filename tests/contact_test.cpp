@@ -357,30 +357,6 @@ TEST(ContactScenario, BadContactsAreRefusedWithWhereAndWhy) {
                    "[0, 0, 1]}, friction: 0.3}\n" +
                    simulate,
                6, 5, "contacts[0]", "body 'ball' starts 0.15 m inside the plane");
-  // A body a joint holds touches only with a sphere's, shell's or polyhedron's surface, for now:
-  // a can on a pin is refused, and so is the second body of a free pair (the tree hangs the pair
-  // from the first body that touches a plane); a sphere on a pin is a pendulum's bob, a box on a
-  // hinge the Cubli's frame (contact_joint_test.cpp).
-  const std::string box =
-      "tumble: 1\n"
-      "bodies:\n"
-      "  crate: {shape: cylinder, radius: 0.1, length: 0.2, mass: 1, position: [0, 0, 0.1]}\n"
-      "  lid: {shape: disk, radius: 0.1, mass: 0.1, position: [0, 0, 0.21]}\n";
-  expect_error(box +
-                   "joints:\n  pin: {type: ball, body: crate, at: [0, 0, 1]}\n"
-                   "contacts:\n  - {type: plane, body: crate, plane: {point: [0, 0, 0], normal: "
-                   "[0, 0, 1]}, friction: 0.3}\n" +
-                   simulate,
-               8, 25, "contacts[0].body", "'crate' is held by a joint; on a held body");
-  expect_error(box +
-                   "joints:\n  hinge: {type: hinge, bodies: [crate, lid], at: [0, 0, 0.2], "
-                   "axis: [1, 0, 0]}\n"
-                   "contacts:\n  - {type: plane, body: crate, plane: {point: [0, 0, 0], normal: "
-                   "[0, 0, 1]}, friction: 0.3}\n"
-                   "  - {type: plane, body: lid, plane: {point: [0, 0, 0], normal: "
-                   "[0, 0, 1]}, friction: 0.3}\n" +
-                   simulate,
-               9, 25, "contacts[1].body", "'lid' is held by a joint");
 }
 
 TEST(ContactScenario, StartingOnThePlaneAndMovingIntoItIsRefused) {

@@ -298,7 +298,7 @@ void ContactSystem::solve_forces() const {
                 row.angular_W.dot(w.R_WB * w.acceleration.head<3>());
   }
   calc_contact_matrix(count);
-  solve_contact_system(count, d_.rhs);
+  solve_contact_system(count, d_.rhs, RowQuantity::Acceleration);
   set_contact_resultants(count, d_.rhs);
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     d_.wrenches[c] = {contacts_[c].body, d_.now[c].wrench_B};
@@ -307,7 +307,7 @@ void ContactSystem::solve_forces() const {
       std::span<const BodyWrench>(d_.wrenches.data(), contacts_.size()));
 }
 
-void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x) const {
+void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantity rows) const {
   if (any_held_) {
     // A row that no force moves (a point on a hinge's axis: the joint holds that motion
     // entirely) carries no force. Its entries are round-off, and where every row is such, A's
@@ -321,7 +321,15 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x) const {
       x(i) = 0.0;
     }
   }
-  solve_constraints_in_place(d_.matrix, x, count, d_.solve_scratch);
+  // The zero of what the rows measure: the largest of the contacts' (their scales are state,
+  // fixed at the run's start).
+  double zero = 0.0;
+  for (const ContactStatus& s : s_.contacts) {
+    zero = std::max(zero, rows == RowQuantity::Position   ? s.touching_height
+                          : rows == RowQuantity::Velocity ? s.slip_zero
+                                                          : s.slip_zero / s.time_scale);
+  }
+  solve_constraints_in_place(d_.matrix, x, count, d_.solve_scratch, zero);
 }
 
 void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) const {
@@ -408,7 +416,7 @@ void ContactSystem::project_feature_positions(VecX& y) const {
     }
   }
   calc_contact_matrix(count);
-  solve_contact_system(count, d_.x);
+  solve_contact_system(count, d_.x, RowQuantity::Position);
   respond_to_contact_impulses(count, d_.x);
   dynamics_.apply_displacement(y);
 }
@@ -456,7 +464,7 @@ void ContactSystem::project(double t, VecX& y) const {
   }
   d_.rhs.head(count) = d_.x.head(count);  // minus each row's velocity before
   calc_contact_matrix(count);
-  solve_contact_system(count, d_.x);
+  solve_contact_system(count, d_.x, RowQuantity::Velocity);
   apply_contact_impulses(count, d_.x, y);
   // An impulse P on a row whose velocity goes from v to 0 does P v / 2 of work.
   for (Eigen::Index i = 0; i < count; ++i) {

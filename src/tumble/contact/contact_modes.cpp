@@ -405,7 +405,7 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
           d_.x(i) = -(row.normal ? 1.0 + law.e : 1.0) * row_velocity(row);
         }
         calc_contact_matrix(count);
-        solve_contact_system(count, d_.x);
+        solve_contact_system(count, d_.x, RowQuantity::Velocity);
         set_contact_resultants(count, d_.x);  // the impulse, as a force would be
       };
       if (law.friction) {

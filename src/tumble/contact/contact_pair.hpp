@@ -88,9 +88,8 @@ class ContactPair {
                                     FunctionRef<double(const Vec3&)> height_of,
                                     ContactPoint& point) const = 0;
 
-  // Whether the pair is modelled on a body that a joint holds, and whether there its part's
-  // points are held one by one (a polyhedron's: the joint takes what the plane does not).
-  virtual bool on_held_bodies() const = 0;
+  // Whether, on a body a joint holds, its part's points are held one by one (a polyhedron's: the
+  // joint takes what the plane does not).
   virtual bool held_point_by_point() const { return false; }
   // How far from the COM a point whose normal velocity the body's turning changes may be, for
   // the step limit: the surface's size; 0 for a sphere, whose lowest point turning never moves.

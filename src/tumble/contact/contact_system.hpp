@@ -112,9 +112,13 @@ class ContactSystem {
   // The constraint matrix A (rows: the unknowns' rows, columns: their forces) from the responses
   // to unit wrenches.
   void calc_contact_matrix(Eigen::Index count) const;
+  // What the rows measure: their zero is the contacts' own (the largest touching height, slip
+  // zero, or slip zero over the time scale): dependent rows whose right-hand sides differ by
+  // less agree.
+  enum class RowQuantity { Acceleration, Velocity, Position };
   // Solves A x = b for the leading count rows, in place (b becomes x); throws
   // InconsistentConstraints if the rows contradict each other.
-  void solve_contact_system(Eigen::Index count, VecX& x) const;
+  void solve_contact_system(Eigen::Index count, VecX& x, RowQuantity rows) const;
   // Each contact's resultant (d_.now's wrench, force, normal force, friction, moment about O)
   // from the unknowns' values x.
   void set_contact_resultants(Eigen::Index count, const VecX& x) const;
@@ -215,6 +219,7 @@ class ContactSystem {
   // 1/m, a row's response is round-off (solve_contact_system).
   bool any_held_ = false;
   double least_response_ = 0.0;
+
   // This run's scratch, written by const evaluations: a run serves one thread at a time.
   std::unique_ptr<ContactData> data_;
   ContactData& d_;  // *data_

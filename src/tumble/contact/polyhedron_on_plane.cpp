@@ -57,7 +57,6 @@ class PolyhedronOnPlane final : public ContactPair {
     return {};
   }
 
-  bool on_held_bodies() const override { return true; }
   bool held_point_by_point() const override { return true; }
 
   bool calc_part_points(PairView& v, const Vec3&) const override {

@@ -106,9 +106,6 @@ class RoundOnPlane final : public ContactPair {
     return {};
   }
 
-  // A round body's parts on a body a joint holds are not modelled yet (the reader says so).
-  bool on_held_bodies() const override { return false; }
-
   bool calc_part_points(PairView& v, const Vec3& omega_B) const override {
     const ContactStatus& status = v.status;
     if (status.round_part == RoundPart::None) return false;

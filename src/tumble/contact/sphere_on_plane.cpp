@@ -29,7 +29,6 @@ class SphereOnPlane final : public ContactPair {
     return {};
   }
 
-  bool on_held_bodies() const override { return true; }
   double turning_reach(const ContactSurface&) const override { return 0.0; }
   bool calc_part_points(PairView&, const Vec3&) const override { return false; }
   void for_each_landing_point(const PairView& v,

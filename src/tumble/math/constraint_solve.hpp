@@ -8,9 +8,11 @@
 // rows are consistent (they describe the same motion). The solve first eliminates with partial
 // pivoting, as for independent rows; should a pivot come out at round-off of A's scale, it starts
 // again from the saved A and b with complete pivoting, keeps the rows whose pivots are not
-// round-off, and gives the other unknowns zero: a solution whose forces reach every motion the
-// rows ask for (the joints carry the rest of the load). Rows that contradict each other (the
-// right-hand sides of the dependent ones not at round-off) throw InconsistentConstraints.
+// round-off, and of the solutions takes the least-norm one: the forces that reach every motion
+// the rows ask for, shared evenly among rows that carry a load alike (four wheels on a plane; the
+// joints carry the rest of the load), whatever the rows' order. Rows that contradict each other
+// (the right-hand sides of the dependent ones above round-off of b's largest, and above `zero`,
+// the caller's zero of what the rows measure) throw InconsistentConstraints.
 #include <stdexcept>
 #include <vector>
 
@@ -34,6 +36,7 @@ struct ConstraintSolveScratch {
   std::vector<Eigen::Index> column_of;  // the unknown at each pivot position
 };
 
-void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch);
+void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch,
+                                double zero = 0.0);
 
 }  // namespace tumble

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "tumble/contact/contact_pair.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
 
 namespace tumble {
@@ -60,16 +59,9 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
     }
   }
 
+  // On a body a joint holds, a contact's rows may be redundant with the joint (the solve allows
+  // that): every surface touches on every body.
   for (const PlaneContact& contact : model.contacts) {
-    // Held by a joint, a body's contact rows may be redundant with it (the solve allows that);
-    // a round body's parts on such a body are not modelled yet (the reader says so).
-    if (tree[slot_of_body[contact.body]].type != JointType::Free &&
-        !contact_pair(contact.surface.kind).on_held_bodies()) {
-      throw std::invalid_argument("contact '" + contact.name + "': body '" +
-                                  model.bodies[contact.body].name +
-                                  "' is held by a joint; only a sphere's, a shell's or a "
-                                  "polyhedron's contact is modelled on a held body");
-    }
     event_specs.push_back({contact.name + " touchdown", EventDirection::Falling});
     event_specs.push_back({contact.name + " lift-off", EventDirection::Falling});
     event_specs.push_back({contact.name + " stick-slip", EventDirection::Falling});

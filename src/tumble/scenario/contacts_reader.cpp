@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
-#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -116,39 +115,6 @@ std::unordered_map<std::string, std::size_t> inboard_joints(
   return inboard;
 }
 
-std::set<std::string> held_bodies(const Scenario& scenario,
-                                  const std::vector<ContactSpec>& contacts) {
-  std::set<std::string> held;
-  for (const auto& [body, joint] : inboard_joints(scenario, contacts)) held.insert(body);
-  return held;
-}
-
-namespace {
-
-void check_held_bodies(const Reader& reader, const std::vector<Field>& items,
-                       const std::vector<ContactSpec>& contacts, const Scenario& scenario) {
-  const std::set<std::string> held = held_bodies(scenario, contacts);
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    if (held.count(contacts[i].body) == 0) continue;
-    const BodySpec& body = scenario.bodies[*reader.body_position(contacts[i].body)];
-    const ShapeKind kind = body.shape.kind;
-    if (kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Box ||
-        kind == ShapeKind::Plate || kind == ShapeKind::Mesh) {
-      continue;
-    }
-    const MapReader map(reader, items[i], "a contact");
-    reader.fail_at_value(
-        *map.find("body"),
-        "body '" + body.name +
-            "' is held by a joint; on a held body tumble models a sphere's, a shell's or a "
-            "polyhedron's (box, plate, mesh) contact for now, not a " +
-            std::string(shape_name(kind)) +
-            "'s: free it, or weld a sphere or a box to it (a fixed joint) where it touches");
-  }
-}
-
-}  // namespace
-
 std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
                                        const Scenario& scenario) {
   std::vector<ContactSpec> contacts;
@@ -172,7 +138,6 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
     contact.where = where;
     contacts.push_back(std::move(contact));
   }
-  check_held_bodies(reader, items, contacts, scenario);
   return contacts;
 }
 

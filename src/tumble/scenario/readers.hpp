@@ -2,7 +2,6 @@
 // The readers of the scenario's sections, one file each; scenario.cpp calls them in order.
 #include <filesystem>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -51,11 +50,6 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
 // `forces:` (forces_reader.cpp), after the bodies and joints: fills scenario.loads, impulses,
 // springs and torsional_springs.
 void read_forces(const Reader& reader, const Field& field, Scenario& scenario);
-// The bodies a joint holds in the kinematic tree (multibody/kinematic_tree.hpp): every body joined
-// to ground through joints, and in a group joined only to each other, all but its root (its first
-// body that touches a plane, else its first body) (contacts_reader.cpp).
-std::set<std::string> held_bodies(const Scenario& scenario,
-                                  const std::vector<ContactSpec>& contacts);
 // The joint that holds each held body in that tree, by the body's name: its inboard joint, the
 // one that moves it relative to its parent (an index into scenario.joints).
 std::unordered_map<std::string, std::size_t> inboard_joints(

@@ -336,7 +336,8 @@ TEST(ContactScenario, BadContactsAreRefusedWithWhereAndWhy) {
                    "contacts:\n  - {type: plane, body: pair, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 1]}, friction: 0.3}\n" +
                    simulate,
-               6, 25, "contacts[0].body", "is a composite; contact with a plane is for");
+               6, 25, "contacts[0].body",
+               "is a composite; name the part that touches with `part:`");
   expect_error(head +
                    "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 0]}, friction: 0.3}\n" +

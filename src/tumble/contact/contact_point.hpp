@@ -3,7 +3,7 @@
 // point moves over the body: the offset p_GP_W from the body's COM G to the contact point P and
 // its rate (world axes), written over the scalar (double, or `tumble modes`' Dual, which
 // differentiates it). A point of each kind:
-//  - Lowest: a sphere's or shell's lowest point, p = -r n, which does not change;
+//  - Lowest: a sphere's or shell's lowest point, p = R c - r n with c its centre (0: the COM);
 //  - Rim: the lowest point of a disk's, ring's, cylinder's or cone's rim, p = R c + rho u, with c
 //    the rim's centre and u the unit vector in the rim's plane most opposed to n;
 //  - Material: a point of the body (a polyhedron's vertex, a cone's apex), p = R p_B.
@@ -18,8 +18,10 @@ namespace tumble {
 
 struct ContactPoint {
   enum class Kind { Lowest, Rim, Material } kind = Kind::Lowest;
-  Vec3 p_B = Vec3::Zero();  // Rim: the rim's centre; Material: the point (body axes, from the COM)
-  double radius = 0.0;      // Lowest: the sphere's; Rim: the rim's (m)
+  // Lowest: the sphere's centre; Rim: the rim's centre; Material: the point (body axes, from the
+  // COM)
+  Vec3 p_B = Vec3::Zero();
+  double radius = 0.0;  // Lowest: the sphere's; Rim: the rim's (m)
 };
 
 // The body turned by R_WB and turning at omega_W over a plane of unit normal n_W.
@@ -32,6 +34,11 @@ void calc_contact_offset(const ContactPoint& point, const Vec3& n_W, const Mat3O
     case ContactPoint::Kind::Lowest:
       p_GP_W = -point.radius * n_W.cast<S>();
       p_GP_rate_W = V3::Zero();
+      if (!point.p_B.isZero(0.0)) {  // a sphere's centre away from the COM moves with the body
+        const V3 centre_W = R_WB * point.p_B.cast<S>();
+        p_GP_W += centre_W;
+        p_GP_rate_W = omega_W.cross(centre_W);
+      }
       return;
     case ContactPoint::Kind::Material:
       p_GP_W = R_WB * point.p_B.cast<S>();

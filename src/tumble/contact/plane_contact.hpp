@@ -1,8 +1,8 @@
 #pragma once
 // A body touching a fixed plane (the ground, a ramp): the plane, the Coulomb and restitution
 // coefficients, and the part of the body's surface that can touch it:
-//  - a sphere or a shell (its centre at the COM), whose lowest point moves smoothly over it as
-//    it turns;
+//  - a sphere or a shell (its centre at the COM, or, a composite's part, anywhere in the body),
+//    whose lowest point moves smoothly over it as it turns;
 //  - a round body: a disk or ring, a cylinder or tube, a cone (round_contact.hpp), which touches
 //    at a rim point, along its side or on a face;
 //  - a polyhedron: a box, a plate, a mesh (contact_feature.hpp), which touches at a vertex,
@@ -26,6 +26,7 @@ struct ContactSurface {
   Vec3 rim_centre_B = Vec3::Zero();  // m, a cone's base centre (its rim about the z axis)
   // m: a ring's or tube's end faces are annuli from this radius out (0: full disks)
   double face_inner_radius = 0.0;
+  Vec3 centre_B = Vec3::Zero();  // m, a sphere's centre from the COM (a composite's sphere part)
 };
 
 struct PlaneContact {

@@ -1,5 +1,7 @@
-// A sphere or a shell (its centre at the COM) on a plane (contact_pair.hpp): it touches at its
-// lowest point, which moves over it as it turns, and has no part to settle, tip or stick on.
+// A sphere or a shell on a plane (contact_pair.hpp): it touches at its lowest point, which moves
+// over it as it turns, and has no part to settle, tip or stick on. Its centre is the body's COM,
+// or, a composite's sphere part, a point fixed in the body (centre_B); the sphere at the COM keeps
+// its own, simpler expressions (the same numbers, to the sign of a zero).
 #include "tumble/contact/contact_pairs.hpp"
 
 namespace tumble {
@@ -9,27 +11,38 @@ namespace {
 class SphereOnPlane final : public ContactPair {
  public:
   Vec3 lowest_point_B(const ContactSurface& surface, const Vec3& n_B) const override {
-    return -surface.radius * n_B;
+    if (surface.centre_B.isZero(0.0)) return -surface.radius * n_B;
+    return surface.centre_B - surface.radius * n_B;
   }
   Vec3 lowest_point_rate_B(const ContactSurface& surface, const Vec3& n_B,
                            const Vec3& omega_B) const override {
     return -surface.radius * n_B.cross(omega_B);
   }
-  double size(const ContactSurface& surface) const override { return surface.radius; }
+  double size(const ContactSurface& surface) const override {
+    return surface.centre_B.norm() + surface.radius;
+  }
   double time_to_reach_depth(const PlaneContact& contact, const SurfaceMotion& motion,
                              double turning, double depth) const override {
-    // Turning moves no point of a sphere lower: its lowest point is its centre's less r.
-    return centre_time_to_depth(contact, motion, contact.surface.radius, turning, depth);
+    // The lowest point is the centre's less r: turning about the centre moves none lower.
+    const ContactSurface& surface = contact.surface;
+    if (surface.centre_B.isZero(0.0)) {
+      return centre_time_to_depth(contact, motion, surface.radius, turning, depth);
+    }
+    return point_time_to_depth(contact, motion, surface.centre_B, turning, depth - surface.radius);
   }
 
   std::string resting_point(const ContactSurface& surface, const Vec3&, const SupportPoint&, double,
                             FunctionRef<double(const Vec3&)>, ContactPoint& point) const override {
     point.kind = ContactPoint::Kind::Lowest;
+    point.p_B = surface.centre_B;
     point.radius = surface.radius;
     return {};
   }
 
-  double turning_reach(const ContactSurface&) const override { return 0.0; }
+  // The body's turning moves the lowest point only as it moves the centre.
+  double turning_reach(const ContactSurface& surface) const override {
+    return surface.centre_B.norm();
+  }
   bool calc_part_points(PairView&, const Vec3&) const override { return false; }
   void for_each_landing_point(const PairView& v,
                               FunctionRef<void(const Vec3&)> watch) const override {

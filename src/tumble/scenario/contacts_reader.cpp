@@ -14,6 +14,61 @@
 namespace tumble::scenario_reading {
 namespace {
 
+// Of a composite's parts, those that touch a plane: a sphere's or shell's centre and a box's or
+// plate's corners are placed in the body like any point of it (a round part's axis, or a mesh's
+// hull, is not carried over yet).
+bool part_touches_a_plane(ShapeKind kind) {
+  return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Box ||
+         kind == ShapeKind::Plate;
+}
+
+// The composite's part that touches: the one `part:` names, or its one part that can.
+int read_touching_part(const Reader& reader, const MapReader& map, const Field& body_field,
+                       const BodySpec& body) {
+  const auto touching_names = [&] {
+    std::string names;
+    for (const PartSpec& part : body.parts) {
+      if (!part_touches_a_plane(part.shape.kind)) continue;
+      names += (names.empty() ? "" : ", ") + part.name;
+    }
+    return names.empty() ? std::string("none") : names;
+  };
+  if (const auto f = map.find("part")) {
+    const std::string name = reader.text(*f);
+    for (std::size_t p = 0; p < body.parts.size(); ++p) {
+      if (body.parts[p].name != name) continue;
+      if (!part_touches_a_plane(body.parts[p].shape.kind)) {
+        reader.fail_at_value(*f, "part '" + name + "' of body '" + body.name + "' is a " +
+                                     std::string(shape_name(body.parts[p].shape.kind)) +
+                                     "; of a composite's parts a sphere, shell, box or plate "
+                                     "touches a plane (not yet a round part or a mesh); those "
+                                     "that can: " +
+                                     touching_names());
+      }
+      return static_cast<int>(p);
+    }
+    reader.fail_at_value(*f, "body '" + body.name + "' has no part '" + name +
+                                 "'; its parts that can touch a plane: " + touching_names());
+  }
+  int found = -1, count = 0;
+  for (std::size_t p = 0; p < body.parts.size(); ++p) {
+    if (!part_touches_a_plane(body.parts[p].shape.kind)) continue;
+    found = static_cast<int>(p);
+    ++count;
+  }
+  if (count != 1) {
+    reader.fail_at_value(
+        body_field,
+        "body '" + body.name + "' is a composite; " +
+            (count == 0 ? std::string("none of its parts can touch a plane (of a composite's "
+                                      "parts a sphere, shell, box or plate touches; not yet a "
+                                      "round part or a mesh)")
+                        : "name the part that touches with `part:` (one contact per part): " +
+                              touching_names()));
+  }
+  return found;
+}
+
 bool touches_a_plane(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
          kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
@@ -31,13 +86,18 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   const Field body_field = map.require("body", "the body that touches the plane");
   contact.body = read_body_or_ground(reader, body_field, scenario.bodies, false);
   const BodySpec& body = scenario.bodies[*reader.body_position(contact.body)];
-  if (!body.parts.empty() || !touches_a_plane(body.shape.kind)) {
-    const std::string shape =
-        body.parts.empty() ? std::string(shape_name(body.shape.kind)) : std::string("composite");
-    reader.fail_at_value(body_field,
-                         "body '" + contact.body + "' is a " + shape +
-                             "; contact with a plane is for a sphere, shell, disk, ring, "
-                             "cylinder, tube, cone, box, plate or mesh (not yet a composite)");
+  if (!body.parts.empty()) {
+    contact.part = read_touching_part(reader, map, body_field, body);
+  } else if (!touches_a_plane(body.shape.kind)) {
+    reader.fail_at_value(
+        body_field, "body '" + contact.body + "' is a " + std::string(shape_name(body.shape.kind)) +
+                        "; contact with a plane is for a sphere, shell, disk, ring, "
+                        "cylinder, tube, cone, box, plate or mesh, or a composite's sphere, "
+                        "shell, box or plate part");
+  } else if (const auto f = map.find("part")) {
+    reader.fail_at_value(*f, "body '" + contact.body +
+                                 "' is one shape, not a composite: it has "
+                                 "no parts to name");
   }
 
   const Field plane = map.require("plane", "{point: [x, y, z], normal: [x, y, z]}");
@@ -123,7 +183,8 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
   for (std::size_t i = 0; i < items.size(); ++i) {
     const MapReader map(reader, items[i],
                         "a contact {type: plane, body:, plane: {point:, normal:}, friction:}");
-    map.allow_only({"type", "name", "body", "plane", "friction", "restitution"}, "a contact");
+    map.allow_only({"type", "name", "body", "part", "plane", "friction", "restitution"},
+                   "a contact");
     std::string name = "contact" + std::to_string(i + 1);
     const SourceLocation where = reader.location(items[i].key_mark);
     if (const auto f = map.find("name")) {

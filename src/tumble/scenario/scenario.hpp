@@ -162,6 +162,9 @@ struct ContactSpec {
   Vec3 plane_normal_W = Vec3::UnitZ();  // unit (the given normal, normalised)
   double friction = 0.0;                // Coulomb mu, >= 0
   double restitution = 0.0;             // Newton's e, 0 ... 1
+  // A composite body's part that touches (an index into its parts; `part:`), -1 for a body of
+  // one shape.
+  int part = -1;
   SourceLocation where;
 };
 

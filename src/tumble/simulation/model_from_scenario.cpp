@@ -71,6 +71,18 @@ ContactSurface contact_surface(const Shape& shape) {
   return surface;
 }
 
+// The surface of a composite's part (a sphere's or shell's, a box's or plate's; the reader admits
+// only these) in the body's axes from the body's COM.
+ContactSurface part_contact_surface(const BodySpec& body, const PartSpec& part) {
+  ContactSurface surface = contact_surface(part.shape);
+  // The part's own frame sits at its centre (a sphere's, a box's): a sphere's centre, and a box's
+  // corners turned into the body's axes about it.
+  const Vec3 centre_B = part.mass_properties.com - body.mass_properties.com;
+  surface.centre_B = centre_B;
+  for (Vec3& p : surface.vertices) p = centre_B + part.R_BP * p;
+  return surface;
+}
+
 Vec3 com_position_W(const BodySpec& body) {
   return body.position_W + body.R_WB * body.mass_properties.com;
 }
@@ -226,7 +238,10 @@ Model build_model(const Scenario& scenario) {
     PlaneContact contact;
     contact.name = spec.name;
     contact.body = static_cast<std::size_t>(body_number(spec.body));
-    contact.surface = contact_surface(scenario.bodies[contact.body].shape);
+    const BodySpec& body = scenario.bodies[contact.body];
+    contact.surface =
+        spec.part < 0 ? contact_surface(body.shape)
+                      : part_contact_surface(body, body.parts[static_cast<std::size_t>(spec.part)]);
     contact.point_W = spec.plane_point_W;
     contact.normal_W = spec.plane_normal_W;
     contact.friction = spec.friction;

@@ -1,0 +1,122 @@
+// A composite body touching a plane with one of its parts (`part:`), against closed forms:
+//  - a hammer (a rod and a sphere, parts of one body) on a hinge, turning at w0 with no gravity,
+//    strikes a frictionless anvil with its head: the head's centre is L from the hinge, so it
+//    touches where it has turned by theta = asin(h / L) (h the anvil's depth below the head's
+//    lowest point at the start), at t = theta / w0; the joint leaves one freedom, so the impact
+//    reverses the rate times e (w = -e w0 after it, exactly: no moment acts before or after) and
+//    takes (1 - e^2) of the kinetic energy;
+//  - a block of a turned box and a sphere above it rests on its box's face: the floor carries the
+//    whole weight, M g, and nothing moves. The box's corners are the part's, turned by the part's
+//    orientation and placed about the body's COM: were they not turned, the block would start a
+//    twentieth of a metre above the floor and fall.
+// And the reader: a composite names the touching part where it has more than one that can touch;
+// a part that cannot (a rod), a part it lacks, and `part:` on a body of one shape are refused at
+// the key.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scenario_run.hpp"
+#include "test_constants.hpp"
+
+namespace tumble {
+namespace {
+
+std::string hammer(double e) {
+  return fmt::format(R"(tumble: 1
+parameters: {{L: 0.6, r: 0.05, w0: 2, rest: {}, h: 0.3}}
+gravity: [0, 0, 0]
+bodies:
+  hammer:
+    parts:
+      - {{name: handle, shape: rod, length: L, mass: 0.3, position: [L/2, 0, 0]}}
+      - {{name: head, shape: sphere, radius: r, mass: 1, position: [L, 0, 0]}}
+    position: [0, 0, 0]
+    angular_velocity: [0, w0, 0]
+joints:
+  pivot: {{type: hinge, body: hammer, at: [0, 0, 0], axis: [0, 1, 0]}}
+contacts:
+  - {{name: anvil, type: plane, body: hammer, part: head,
+     plane: {{point: [0, 0, -r - h], normal: [0, 0, 1]}}, friction: 0, restitution: rest}}
+simulate: {{duration: 0.6, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.01}}
+)",
+                     e);
+}
+
+TEST(CompositeContact, AHammersHeadStrikesAnAnvilAndReboundsAtEOfItsRate) {
+  const double L = 0.6, h = 0.3, w0 = 2.0;
+  const double t_strike = std::asin(h / L) / w0;
+  for (const double e : {0.3, 0.5, 1.0}) {
+    const test::ScenarioRun run = test::run_inline_scenario(hammer(e), "hammer");
+    ASSERT_EQ(run.contact_events.size(), 1u) << "e " << e;
+    EXPECT_EQ(run.contact_events[0].what.rfind("impact", 0), 0u) << run.contact_events[0].what;
+    EXPECT_NEAR(run.contact_events[0].t, t_strike, 1e-12) << "e " << e;
+    const double KE0 = run.rows.front().quantities.total_energy;
+    for (const test::Row& row : run.rows) {
+      const double w = row.states[0].omega_W.y();
+      if (row.t < t_strike) {
+        EXPECT_NEAR(w, w0, 1e-12 * w0) << "e " << e << ", t " << row.t;
+      } else {
+        EXPECT_NEAR(w, -e * w0, 1e-12 * w0) << "e " << e << ", t " << row.t;
+        EXPECT_NEAR(row.quantities.total_energy, e * e * KE0, 1e-12 * KE0) << "e " << e;
+      }
+    }
+  }
+}
+
+TEST(CompositeContact, ABlockRestsOnItsTurnedBoxPartWithTheFloorCarryingItsWeight) {
+  const test::ScenarioRun run = test::run_inline_scenario(fmt::format(R"(tumble: 1
+gravity: [0, 0, -{}]
+bodies:
+  block:
+    parts:
+      # 0.4 x 0.2 x 0.1 turned a quarter about x: 0.2 high, its bottom face 0.1 below its centre
+      - {{name: base, shape: box, size: [0.4, 0.2, 0.1], mass: 2, position: [0, 0, 0.1],
+         orientation: {{axis: [1, 0, 0], angle: 90 deg}}}}
+      - {{name: knob, shape: sphere, radius: 0.05, mass: 1, position: [0.1, 0, 0.3]}}
+    position: [0, 0, 0]
+contacts:
+  - {{name: floor, type: plane, body: block, part: base,
+     plane: {{point: [0, 0, 0], normal: [0, 0, 1]}}, friction: 0.5}}
+simulate: {{duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.05}}
+)",
+                                                                      test::kG),
+                                                          "block");
+  const double M = 3.0;
+  const Vec3 r0 = run.rows.front().states[0].r_G;
+  for (const test::Row& row : run.rows) {
+    EXPECT_EQ(row.extras.contacts[0].mode, 2) << "t " << row.t;
+    EXPECT_NEAR(row.extras.contacts[0].normal_force, M * test::kG, 1e-12 * M * test::kG)
+        << "t " << row.t;
+    EXPECT_NEAR((row.states[0].r_G - r0).norm(), 0.0, 1e-12) << "t " << row.t;
+  }
+}
+
+TEST(CompositeContact, TheReaderNamesTheTouchingPart) {
+  const std::string head =
+      "tumble: 1\n"
+      "bodies:\n"
+      "  bell:\n"
+      "    parts:\n"
+      "      - {name: a, shape: sphere, radius: 0.1, mass: 1, position: [-0.3, 0, 0]}\n"
+      "      - {name: b, shape: sphere, radius: 0.1, mass: 1, position: [0.3, 0, 0]}\n"
+      "      - {name: bar, shape: rod, length: 0.5, mass: 0.2}\n"
+      "    position: [0, 0, 0.5]\n"
+      "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [2, 0, 0.5]}\n"
+      "contacts:\n";
+  const std::string plane = "plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: 0.3}\n";
+  const std::string simulate = "simulate: {duration: 0.1}\n";
+  test::expect_error(head + "  - {type: plane, body: bell, " + plane + simulate, 11, 25,
+                     "contacts[0].body", "name the part that touches with `part:`");
+  test::expect_error(head + "  - {type: plane, body: bell, part: c, " + plane + simulate, 11, 37,
+                     "contacts[0].part", "body 'bell' has no part 'c'");
+  test::expect_error(head + "  - {type: plane, body: bell, part: bar, " + plane + simulate, 11, 37,
+                     "contacts[0].part", "part 'bar' of body 'bell' is a rod");
+  test::expect_error(head + "  - {type: plane, body: ball, part: a, " + plane + simulate, 11, 37,
+                     "contacts[0].part", "body 'ball' is one shape, not a composite");
+}
+
+}  // namespace
+}  // namespace tumble

@@ -16,7 +16,8 @@
 // scratch is this run's ContactData; the modes and records are the run's ContactState (in its
 // HybridState), which a checkpoint copies. The code is in contact_forces.cpp (forces, impulses,
 // projection), contact_modes.cpp (events, modes, impacts), slip_onset.cpp and
-// contact_step_limit.cpp.
+// contact_step_limit.cpp; what differs from one kind of surface to another is its contact pair's
+// (contact_pair.hpp), which this class asks and never tests the kind of.
 #include <memory>
 #include <optional>
 #include <span>

@@ -81,16 +81,17 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
                         c.max_angular_momentum_change, c.scaled_angular_momentum_drift())
           : fmt::format("max |L| {:.3e} kg m^2/s (L = 0 throughout)",
                         c.max_angular_momentum_change);
-  // Contacts that only rolled or stuck did no work: their books stay at the level of the
-  // integration's own error (the work-energy balance's residual), and E was conserved after all.
+  // Contacts that only rolled, stuck or slid without friction did no work: their books stay at
+  // the level of the integration's own error (the work-energy balance's residual), and E was
+  // conserved after all. (Which of those they did is in the events; the books cannot tell.)
   const bool only_contacts = forces_act && only_contacts_may_do_work(scenario);
   const bool contacts_did_no_work =
       only_contacts && c.max_contact_work <= kWorklessFactor * c.max_work_energy_residual;
   fmt::print("  energy E       {}{}\n", energy_drift,
              contacts_did_no_work
                  ? fmt::format(" (the contacts did no work, at most {:.3e} J, within the books' "
-                               "own error: they rolled or stuck, and joints do none: E is "
-                               "conserved)",
+                               "own error: rolling, sticking and sliding without friction do "
+                               "none, nor do joints: E is conserved)",
                                c.max_contact_work)
              : forces_act ? " (forces, motors, dampers, impulses, locks, friction or impacts do "
                             "work: E is not conserved)"

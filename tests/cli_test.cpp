@@ -559,6 +559,23 @@ TEST(Cli, TheSummarySaysEIsConservedWhereContactsOnlyRolled) {
       run_tumble("run " + example("backspin_disk.yaml") + " --out " + dir.string());
   EXPECT_EQ(slides.status, 0) << slides.out;
   EXPECT_NE(slides.out.find("E is not conserved"), std::string::npos) << slides.out;
+  // A ball sliding on a frictionless floor does no work either, and is not said to have rolled
+  // (before: "they rolled or stuck").
+  const fs::path p = write_file(dir, "frictionless.yaml",
+                                "tumble: 1\n"
+                                "bodies:\n"
+                                "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, "
+                                "0.1], velocity: [2, 0, 0], angular_velocity: [0, 0, 5]}\n"
+                                "contacts:\n"
+                                "  - {name: floor, type: plane, body: ball, plane: {point: [0, 0, "
+                                "0], normal: [0, 0, 1]}, friction: 0}\n"
+                                "simulate: {duration: 1}\n");
+  const CommandResult frictionless = run_tumble("run " + p.string() + " --out " + dir.string());
+  EXPECT_EQ(frictionless.status, 0) << frictionless.out;
+  EXPECT_NE(frictionless.out.find("sliding without friction do none"), std::string::npos)
+      << frictionless.out;
+  EXPECT_EQ(frictionless.out.find("rolled"), std::string::npos) << frictionless.out;
+  EXPECT_NE(frictionless.out.find("E is conserved)"), std::string::npos) << frictionless.out;
 }
 
 // Red-team finding: an event's `when: prism.w3 = -5` wrote -5 into the row the later events read,

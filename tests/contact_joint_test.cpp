@@ -1,9 +1,10 @@
 // Contact on bodies in joints, against closed forms:
-//  - a pendulum's bob (a sphere on a hinge) swings down and strikes a frictionless wall where the
-//    pendulum hangs vertically: it rebounds with e times the angular speed it struck with, so the
-//    energy left is the bottom's potential energy plus e^2 of the kinetic energy at the strike.
-//    The contact's three velocity rows are one freedom of the hinge: the solve takes them as
-//    redundant, and the impact slides (no impulse both bounces it and stops its slip);
+//  - a pendulum's bob (a sphere on a hinge, or a disk in the hinge's plane striking with its rim)
+//    swings down and strikes a frictionless wall where the pendulum hangs vertically: it rebounds
+//    with e times the angular speed it struck with, so the energy left is the bottom's potential
+//    energy plus e^2 of the kinetic energy at the strike. The contact's three velocity rows are
+//    one freedom of the hinge: the solve takes them as redundant, and the impact slides (no
+//    impulse both bounces it and stops its slip);
 //  - a cylinder rolling on the ground with a rod hung on its axle: the linearised equations in x
 //    (the axle's travel) and phi (the rod's angle) are
 //        (M + I/R^2 + m) x'' + m l phi'' = 0,   (I_p + m l^2) phi'' + m l x'' + m g l phi = 0,
@@ -38,13 +39,23 @@ using test::kG;
 
 TEST(ContactOnAJointedBody, APendulumStrikingAWallReboundsWithEOfItsAngularSpeed) {
   const double r = 0.05, l = 0.5, m = 1.0, a = 60 * M_PI / 180;
-  for (const double e : {0.3, 0.6, 1.0}) {
-    const auto run = run_inline_scenario(fmt::format(R"(tumble: 1
+  struct Bob {
+    const char* shape;   // the bob's shape and orientation, as the scenario writes them
+    const char* impact;  // how its impact begins in the events
+  };
+  // A disk turned into the hinge's plane (x-z) strikes with the point of its rim level with its
+  // centre: a round body on a held body.
+  const Bob bobs[] = {
+      {"sphere", "impact"},
+      {"disk\n    orientation: {axis: [1, 0, 0], angle: 90 deg}", "impact on its rim"}};
+  for (const Bob& kind : bobs) {
+    for (const double e : {0.3, 0.6, 1.0}) {
+      const auto run = run_inline_scenario(fmt::format(R"(tumble: 1
 parameters: {{r: {}, l: {}, m: {}, rest: {}, a: {}}}
 gravity: [0, 0, -{}]
 bodies:
   bob:
-    shape: sphere
+    shape: {}
     radius: r
     mass: m
     position: [-l*sin(a), 0, l - l*cos(a)]
@@ -55,26 +66,27 @@ contacts:
      friction: 0, restitution: rest}}
 simulate: {{duration: 0.7, integrator: dop853, rtol: 1e-11, atol: 1e-13, output_every: 0.002}}
 )",
-                                                     r, l, m, e, a, kG),
-                                         "pendulum_wall");
-    ASSERT_GE(run.contact_events.size(), 1u);
-    EXPECT_NE(run.contact_events[0].what.find("impact"), std::string::npos)
-        << run.contact_events[0].what;
-    const double t_strike = run.contact_events[0].t;
-    // The energy at the strike is all kinetic above the bottom's potential energy.
-    const double E0 = run.rows.front().quantities.total_energy;
-    const double PE_bottom = 0.0;  // the bob's COM at z = 0 when it hangs vertically
-    const double E_after = PE_bottom + e * e * (E0 - PE_bottom);
-    const double E_scale = m * kG * l;
-    for (const Row& row : run.rows) {
-      const BodyState& bob = row.states[0];
-      EXPECT_LE(bob.r_G.x(), 1e-12) << "the bob is through the wall at t " << row.t;
-      if (row.t < t_strike) {
-        EXPECT_NEAR(row.quantities.total_energy, E0, 1e-9 * E_scale);
-      } else if (row.t > t_strike && row.t < t_strike + 0.2) {
-        // Swinging back (not yet at the wall again): e of the angular speed, e^2 of the KE.
-        EXPECT_NEAR(row.quantities.total_energy, E_after, 1e-9 * E_scale) << "e " << e;
-        EXPECT_LT(bob.v_G.x(), 0.0);
+                                                       r, l, m, e, a, kG, kind.shape),
+                                           "pendulum_wall");
+      ASSERT_GE(run.contact_events.size(), 1u);
+      EXPECT_EQ(run.contact_events[0].what.rfind(kind.impact, 0), 0u) << run.contact_events[0].what;
+      const double t_strike = run.contact_events[0].t;
+      // The energy at the strike is all kinetic above the bottom's potential energy.
+      const double E0 = run.rows.front().quantities.total_energy;
+      const double PE_bottom = 0.0;  // the bob's COM at z = 0 when it hangs vertically
+      const double E_after = PE_bottom + e * e * (E0 - PE_bottom);
+      const double E_scale = m * kG * l;
+      for (const Row& row : run.rows) {
+        const BodyState& bob = row.states[0];
+        EXPECT_LE(bob.r_G.x(), 1e-12) << "the bob is through the wall at t " << row.t;
+        if (row.t < t_strike) {
+          EXPECT_NEAR(row.quantities.total_energy, E0, 1e-9 * E_scale);
+        } else if (row.t > t_strike && row.t < t_strike + 0.2) {
+          // Swinging back (not yet at the wall again): e of the angular speed, e^2 of the KE.
+          EXPECT_NEAR(row.quantities.total_energy, E_after, 1e-9 * E_scale)
+              << kind.shape << ", e " << e;
+          EXPECT_LT(bob.v_G.x(), 0.0);
+        }
       }
     }
   }

@@ -31,6 +31,9 @@ void print_summary(const Scenario& scenario, const ScenarioModes& modes) {
       fmt::print("  {} at {} rad/s\n", lin.symmetries[i].description,
                  number(lin.symmetry_rates(static_cast<Eigen::Index>(i))));
     }
+    for (const DriftingCoordinate& c : lin.drifting) {
+      fmt::print("  {} (ignorable) moving at {} {}/s\n", c.name, number(c.rate), c.unit);
+    }
   }
   for (const Symmetry& symmetry : lin.neutral_symmetries) {
     fmt::print("  neutral family taken out: {} (the motion carried over unchanged)\n",
@@ -61,14 +64,18 @@ void print_summary(const Scenario& scenario, const ScenarioModes& modes) {
   for (std::size_t i = 0; i < modes.analysis.modes.size(); ++i) {
     const Mode& m = modes.analysis.modes[i];
     const bool oscillates = m.damped_frequency > 0.0;
-    fmt::print("{:>4}  {:<19} {:>19} {:>19} {:>14} {:>12} {:>12} {:>10} {:>14}\n", i + 1,
-               kind_name(m.kind), number(m.eigenvalue.real()),
-               oscillates ? "+-" + number(m.eigenvalue.imag()) : number(0.0),
-               number(m.natural_frequency),
-               oscillates ? fmt::format("{:.6g}", m.frequency_hz()) : "-",
-               oscillates ? fmt::format("{:.6g}", m.period()) : "-",
-               m.natural_frequency > 0.0 ? fmt::format("{:.4g}", m.damping_ratio) : "-",
-               number(m.growth_rate));
+    const std::string kind = m.kind == Mode::Kind::DecayingTwin
+                                 ? fmt::format("{} of {}", kind_name(m.kind), m.twin_of + 1)
+                                 : kind_name(m.kind);
+    fmt::print(
+        "{:>4}  {:<19} {:>19} {:>19} {:>14} {:>12} {:>12} {:>10} {:>14}\n", i + 1, kind,
+        number(m.eigenvalue.real()), oscillates ? "+-" + number(m.eigenvalue.imag()) : number(0.0),
+        number(m.natural_frequency), oscillates ? fmt::format("{:.6g}", m.frequency_hz()) : "-",
+        oscillates ? fmt::format("{:.6g}", m.period()) : "-",
+        m.natural_frequency > 0.0 && !std::isnan(m.damping_ratio)
+            ? fmt::format("{:.4g}", m.damping_ratio)
+            : "-",
+        number(m.growth_rate));
   }
   fmt::print("shapes (amplitude, phase in degrees; the largest position 1):\n");
   for (std::size_t i = 0; i < modes.analysis.modes.size(); ++i) {

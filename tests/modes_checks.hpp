@@ -42,4 +42,25 @@ inline void expect_oscillating_at(const ModalAnalysis& analysis, std::vector<dou
   }
 }
 
+// A system without damping: each growing mode lambda has one decaying twin, -conj(lambda) to
+// 1e-9 relative, that names it and has no damping ratio; no mode is called damped.
+inline void expect_undamped_twins(const ModalAnalysis& analysis) {
+  std::size_t growing = 0, twins = 0;
+  for (const Mode& mode : analysis.modes) {
+    EXPECT_NE(mode.kind, Mode::Kind::DampedOscillation);
+    EXPECT_NE(mode.kind, Mode::Kind::Decaying);
+    if (mode.kind == Mode::Kind::Growing) ++growing;
+    if (mode.kind != Mode::Kind::DecayingTwin) continue;
+    ++twins;
+    ASSERT_LT(mode.twin_of, analysis.modes.size());
+    const Mode& grows = analysis.modes[mode.twin_of];
+    EXPECT_EQ(grows.kind, Mode::Kind::Growing);
+    EXPECT_NEAR(std::abs(mode.eigenvalue + std::conj(grows.eigenvalue)), 0.0,
+                kModesRelative * std::abs(grows.eigenvalue));
+    EXPECT_TRUE(std::isnan(mode.damping_ratio));
+  }
+  EXPECT_GT(growing, 0U);
+  EXPECT_EQ(twins, growing);
+}
+
 }  // namespace tumble::test

@@ -2,12 +2,16 @@
 // linearisation to 1e-9 relative, where the closed form is exact for the model (the chapter's
 // small-angle equations are the linearisation itself). The Jacobian is exact to round-off
 // (automatic differentiation), so the eigenvalues are good to ~1e-14; 1e-9 is the bar.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "modes_checks.hpp"
 #include "run_tumble.hpp"
@@ -155,13 +159,20 @@ TEST(Modes, PrismNutatesAboutItsMajorAndMinorAxesAndTumblesAboutTheIntermediate)
       const ScenarioModes modes =
           modes_of(example("modes/prism_axes.yaml"),
                    {{"axis", std::to_string(axis + 1)}, {"Omega", std::to_string(Omega)}});
-      // Its place and turn are ignorable (no force): Euler's equations are what is left.
+      // Its place and turn are ignorable (no force): Euler's equations are what is left. Set
+      // aside, its turn about the spin axis still moves, at Omega: a steady motion, not an
+      // equilibrium.
       EXPECT_EQ(modes.linearisation.ignorable.size(), 6U);
-      EXPECT_TRUE(modes.linearisation.equilibrium());
+      EXPECT_FALSE(modes.linearisation.equilibrium());
+      ASSERT_EQ(modes.linearisation.drifting.size(), 1U);
+      const DriftingCoordinate& turn = modes.linearisation.drifting[0];
+      EXPECT_EQ(turn.name, fmt::format("prism.r{}", "xyz"[axis]));
+      EXPECT_NEAR(turn.rate, Omega, 1e-15 * Omega);
       if (axis == 2) {
         // I1 < I2 < I3 with the spin about I2 = 17: lambda = Omega sqrt((I2-I1)(I3-I2)/(I1 I3)).
         const double lambda = Omega * std::sqrt((17.0 - 5.0) * (20.0 - 17.0) / (5.0 * 20.0));
         EXPECT_EQ(modes.analysis.verdict, ModalAnalysis::Verdict::Unstable);
+        test::expect_undamped_twins(modes.analysis);
         expect_relative(modes.analysis.modes[0].growth_rate, lambda);
         expect_relative(modes.analysis.modes[1].growth_rate, -lambda);
         EXPECT_NEAR(lambda, 0.6 * Omega, 1e-15);
@@ -322,6 +333,32 @@ TEST(ModesCommand, WritesTheModesCsvAndThePageAndSaysWhyNot) {
   EXPECT_NE(header.find("elbow.angle.amplitude,elbow.angle.phase_deg"), std::string::npos);
   EXPECT_EQ(row.rfind("1,\"oscillating\",0,", 0), 0U) << row;
   EXPECT_TRUE(std::filesystem::exists(out / "double_pendulum_modes.html"));
+
+  // The prism spun about its intermediate axis: a steady motion (its turn moves, set aside), a
+  // growing mode and its decaying twin. Neither has a period; the twin has no damping ratio.
+  const test::CommandResult prism = test::run_tumble("modes " + example("modes/prism_axes.yaml") +
+                                                     " --set axis=3 --out " + out.string());
+  ASSERT_EQ(prism.status, 0) << prism.out;
+  EXPECT_NE(prism.out.find("about: a steady motion"), std::string::npos) << prism.out;
+  EXPECT_NE(prism.out.find("prism.rz (ignorable) moving at 1 rad/s"), std::string::npos)
+      << prism.out;
+  EXPECT_NE(prism.out.find("decaying twin of 1"), std::string::npos) << prism.out;
+  std::ifstream prism_csv(out / "prism_axes_modes.csv");
+  std::vector<std::vector<std::string>> fields;
+  for (std::string line; std::getline(prism_csv, line);) {
+    fields.emplace_back();
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) fields.back().push_back(cell);
+  }
+  ASSERT_GE(fields.size(), 3U);
+  EXPECT_EQ(fields[0][6], "period_s");
+  EXPECT_EQ(fields[0][7], "damping_ratio");
+  EXPECT_EQ(fields[1][1], "\"growing\"");
+  EXPECT_EQ(fields[1][6], "");
+  EXPECT_EQ(fields[1][7], "-1");
+  EXPECT_EQ(fields[2][1], "\"decaying twin\"");
+  EXPECT_EQ(fields[2][6], "");
+  EXPECT_EQ(fields[2][7], "");
 
   const test::CommandResult neither =
       test::run_tumble("modes " + example("inverted_mast.yaml") + " --out " + out.string());

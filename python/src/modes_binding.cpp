@@ -5,6 +5,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <optional>
+
 #include "bindings.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 
@@ -26,6 +28,9 @@ py::dict modes_dict(const ScenarioModes& modes) {
   out["units"] = units;
   out["ignorable"] = lin.ignorable;
   out["equilibrium"] = lin.equilibrium();
+  py::dict drifting;
+  for (const DriftingCoordinate& c : lin.drifting) drifting[py::str(c.name)] = c.rate;
+  out["drifting"] = drifting;
   out["symmetries"] = symmetries;
   out["symmetry_rates"] = VecX(lin.symmetry_rates);
   out["neutral_symmetries"] = neutral;
@@ -34,6 +39,7 @@ py::dict modes_dict(const ScenarioModes& modes) {
   VecX natural(count), damped(count), damping(count), growth(count);
   Eigen::MatrixXcd shapes(count, static_cast<Eigen::Index>(coordinates.size()));
   std::vector<std::string> kinds;
+  std::vector<std::optional<std::size_t>> twin_of;  // 1-based, as the summary numbers modes
   for (Eigen::Index i = 0; i < count; ++i) {
     const Mode& mode = analysis.modes[static_cast<std::size_t>(i)];
     eigenvalues(i) = mode.eigenvalue;
@@ -43,6 +49,9 @@ py::dict modes_dict(const ScenarioModes& modes) {
     growth(i) = mode.growth_rate;
     shapes.row(i) = mode.shape.transpose();
     kinds.push_back(kind_name(mode.kind));
+    twin_of.push_back(mode.kind == Mode::Kind::DecayingTwin
+                          ? std::optional<std::size_t>(mode.twin_of + 1)
+                          : std::nullopt);
   }
   out["eigenvalues"] = eigenvalues;
   out["natural_frequency"] = natural;
@@ -51,6 +60,7 @@ py::dict modes_dict(const ScenarioModes& modes) {
   out["growth_rate"] = growth;
   out["shapes"] = shapes;
   out["kinds"] = kinds;
+  out["twin_of"] = twin_of;
   out["verdict"] = verdict_name(analysis.verdict);
   out["verdict_text"] = analysis.verdict_text;
   out["csv"] = modes_csv(modes);

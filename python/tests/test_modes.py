@@ -61,3 +61,21 @@ def test_a_state_that_is_not_steady_raises_not_steady_error():
 def test_an_invalid_scenario_raises_scenario_error():
     with pytest.raises(tumble.ScenarioError):
         tumble.modes(EXAMPLES / "modes" / "bat.yaml", set={"M": -1})
+
+
+def test_spinning_prism_is_a_steady_motion_with_a_growing_mode_and_its_twin():
+    # About the intermediate axis (I = 5, 20, 17 spun about the third): growth
+    # Omega sqrt((I2 - I1)(I3 - I2) / (I1 I3)) = 0.6 Omega, and its mirror, which decays without
+    # damping. The set-aside turn about the spin axis moves at Omega: not an equilibrium.
+    omega = 2.0
+    found = tumble.modes(EXAMPLES / "modes" / "prism_axes.yaml", set={"axis": 3, "Omega": omega})
+    assert not found.equilibrium
+    assert found.drifting == {"prism.rz": pytest.approx(omega, rel=1e-15)}
+    assert found.kinds[:2] == ["growing", "decaying twin"]
+    assert found.twin_of[:2] == [None, 1]
+    assert found.growth_rate[0] == pytest.approx(0.6 * omega, rel=1e-9)
+    assert found.eigenvalues[1] == pytest.approx(-np.conj(found.eigenvalues[0]), rel=1e-9)
+    assert math.isnan(found.damping_ratio[1])
+    assert math.isnan(found.period[0]) and math.isnan(found.period[1])
+    second_row = found.csv.splitlines()[2].split(",")
+    assert second_row[1] == '"decaying twin"' and second_row[6] == "" and second_row[7] == ""

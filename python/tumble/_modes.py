@@ -4,7 +4,7 @@ as numbers."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import List, Optional
+from typing import Dict, List, Optional
 
 import numpy as np
 
@@ -18,24 +18,30 @@ class Modes:
 
     Per mode i, in the summary's order (growing first, then by natural frequency), a conjugate
     pair once: ``eigenvalues[i]`` (complex, 1/s), ``kinds[i]`` ("growing", "oscillating",
-    "damped oscillation", "decaying", "neutral"), ``natural_frequency`` (rad/s),
-    ``damped_frequency`` (rad/s), ``damping_ratio``, ``growth_rate`` (1/s), and ``shapes[i]``
+    "damped oscillation", "decaying", "decaying twin", "neutral"), ``natural_frequency``
+    (rad/s), ``damped_frequency`` (rad/s), ``damping_ratio`` (NaN for a decaying twin, which
+    decays without damping), ``growth_rate`` (1/s), ``twin_of[i]`` (a decaying twin's growing
+    mode, numbered from 1 as the summary numbers them; None for the others), and ``shapes[i]``
     over ``coordinates`` (complex; the largest position 1 at phase 0). ``verdict`` is "stable",
     "marginal" or "unstable", ``verdict_text`` the summary's line. ``symmetries`` and
-    ``symmetry_rates`` (rad/s) are the steady motion's turns (none at an equilibrium);
-    ``neutral_symmetries`` the turns taken out at no rate; ``ignorable`` the positions set
-    aside. ``csv`` is the text of STEM_modes.csv, byte for byte.
+    ``symmetry_rates`` (rad/s) are the steady motion's turns; ``drifting`` the ignorable
+    positions that move, by name, at their rates (a free prism's turn about its spin axis);
+    ``equilibrium`` is true when there are neither. ``neutral_symmetries`` are the turns taken
+    out at no rate; ``ignorable`` the positions set aside. ``csv`` is the text of
+    STEM_modes.csv, byte for byte.
     """
 
     coordinates: List[str]
     units: List[str]
     ignorable: List[str]
     equilibrium: bool
+    drifting: Dict[str, float]
     symmetries: List[str]
     symmetry_rates: np.ndarray
     neutral_symmetries: List[str]
     eigenvalues: np.ndarray
     kinds: List[str]
+    twin_of: List[Optional[int]]
     natural_frequency: np.ndarray
     damped_frequency: np.ndarray
     damping_ratio: np.ndarray
@@ -52,10 +58,11 @@ class Modes:
 
     @property
     def period(self) -> np.ndarray:
-        """The damped periods, s (0 for a mode that does not oscillate, as in the CSV)."""
+        """The damped periods, s (NaN for a mode that does not oscillate: the CSV's field is
+        empty)."""
         oscillates = self.damped_frequency > 0
         safe = np.where(oscillates, self.damped_frequency, 1.0)
-        return np.where(oscillates, 2 * np.pi / safe, 0.0)
+        return np.where(oscillates, 2 * np.pi / safe, np.nan)
 
 
 def modes(scenario: Scenario, *, set: Optional[Values] = None) -> Modes:  # noqa: A002

@@ -217,6 +217,9 @@ Linearisation linearise(const ModalEquations& equations) {
         kept_row[static_cast<std::size_t>(i)] = false;
         const ModalCoordinate& coordinate = layout.coordinates[static_cast<std::size_t>(i)];
         result.ignorable.push_back(coordinate.name);
+        if (std::abs(f0(i)) > rate_tolerance) {
+          result.drifting.push_back({coordinate.name, coordinate.unit, f0(i)});
+        }
         // A free body's place and turn are symmetries; a joint's coordinate that nothing
         // restores is neutral only to first order.
         if (!m.tree[coordinate.tree_joint].kind->modal_positions_are_symmetries()) {

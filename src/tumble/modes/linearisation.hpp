@@ -29,6 +29,13 @@
 
 namespace tumble {
 
+// An ignorable position that moves at the initial state, at a constant rate.
+struct DriftingCoordinate {
+  std::string name;
+  std::string unit;   // of the position: "rad" or "m"
+  double rate = 0.0;  // unit/s
+};
+
 struct Linearisation {
   std::vector<ModalCoordinate> coordinates;  // the ones kept, in z's order
   std::vector<Eigen::Index> kept;            // their places in z
@@ -45,7 +52,11 @@ struct Linearisation {
   MatX orbit_basis;  // P: an orthonormal basis of their span
   MatX quotient;     // Q: one of the rest of T; A's modes are those of Q^T A Q
   double largest_rate = 0.0;  // the largest rate of s that the steadiness leaves (round-off)
-  bool equilibrium() const { return symmetries.empty(); }
+  // The ignorable positions that move at the initial state, each at its constant rate (unit/s):
+  // a free prism's turn about its spin axis. Set aside, they leave a steady motion, not an
+  // equilibrium, though the kept coordinates' rates are all zero.
+  std::vector<DriftingCoordinate> drifting;
+  bool equilibrium() const { return symmetries.empty() && drifting.empty(); }
 };
 
 // Throws NotSteady.

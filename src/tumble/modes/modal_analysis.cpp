@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace tumble {
@@ -82,6 +83,7 @@ int order_of(Mode::Kind kind) {
     case Mode::Kind::DampedOscillation:
       return 1;
     case Mode::Kind::Decaying:
+    case Mode::Kind::DecayingTwin:
       return 2;
     case Mode::Kind::Neutral:
       return 3;
@@ -109,6 +111,8 @@ std::string kind_name(Mode::Kind kind) {
       return "damped oscillation";
     case Mode::Kind::Decaying:
       return "decaying";
+    case Mode::Kind::DecayingTwin:
+      return "decaying twin";
     case Mode::Kind::Neutral:
       return "neutral";
   }
@@ -202,6 +206,20 @@ ModalAnalysis analyse_modes(const Linearisation& lin) {
     if (drifts && order[i] == drifting) drifting = i;
   }
   analysis.modes = std::move(sorted);
+  // The twins: a decaying mode whose mirror -conj(lambda) is a growing mode's eigenvalue.
+  for (Mode& mode : analysis.modes) {
+    if (mode.kind != Mode::Kind::Decaying && mode.kind != Mode::Kind::DampedOscillation) continue;
+    for (std::size_t j = 0; j < analysis.modes.size(); ++j) {
+      const Mode& growing = analysis.modes[j];
+      if (growing.kind == Mode::Kind::Growing &&
+          std::abs(growing.eigenvalue + std::conj(mode.eigenvalue)) <= tol) {
+        mode.kind = Mode::Kind::DecayingTwin;
+        mode.twin_of = j;
+        mode.damping_ratio = std::numeric_limits<double>::quiet_NaN();
+        break;
+      }
+    }
+  }
 
   if (!analysis.modes.empty() && analysis.modes.front().kind == Mode::Kind::Growing) {
     const Mode& mode = analysis.modes.front();

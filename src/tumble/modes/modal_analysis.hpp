@@ -20,13 +20,17 @@
 namespace tumble {
 
 struct Mode {
-  enum class Kind { Growing, Oscillating, DampedOscillation, Decaying, Neutral };
+  // DecayingTwin: the mirror -conj(lambda) of a growing mode, which a system without damping
+  // has for each one (the growing motion run backwards in time). It decays without any
+  // damping, so it has no damping ratio (NaN); `twin_of` names its growing mode.
+  enum class Kind { Growing, Oscillating, DampedOscillation, Decaying, DecayingTwin, Neutral };
   std::complex<double> eigenvalue;
   Kind kind = Kind::Neutral;
   double natural_frequency = 0.0;  // |lambda|, rad/s
   double damped_frequency = 0.0;   // |Im lambda|, rad/s
   double damping_ratio = 0.0;      // -Re lambda / |lambda| (0 for lambda = 0)
   double growth_rate = 0.0;        // Re lambda, 1/s
+  std::size_t twin_of = 0;         // DecayingTwin: the growing mode's index in the analysis
   // Over Linearisation::coordinates, scaled so that its largest position (or, with no
   // positions, its largest speed) is 1 at phase 0.
   Eigen::VectorXcd shape;
@@ -39,8 +43,8 @@ std::string kind_name(Mode::Kind kind);
 
 struct ModalAnalysis {
   enum class Verdict { Stable, Marginal, Unstable } verdict = Verdict::Stable;
-  std::vector<Mode>
-      modes;  // growing (fastest first), oscillating (slowest first), decaying, neutral
+  // Growing (fastest first), oscillating (slowest first), decaying and decaying twins, neutral.
+  std::vector<Mode> modes;
   std::size_t deciding_mode = 0;  // unstable: the fastest growing; marginal: the drifting one
   std::string verdict_text;       // one line
   double tolerance = 0.0;         // |sigma| and |lambda| below this count as zero, 1/s

@@ -44,10 +44,17 @@ std::string modes_csv(const ScenarioModes& modes) {
   text += '\n';
   for (std::size_t i = 0; i < modes.analysis.modes.size(); ++i) {
     const Mode& mode = modes.analysis.modes[i];
-    text += fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", i + 1,
+    // A mode that does not oscillate has no period, and a decaying twin no damping ratio: their
+    // fields are empty, as the summary prints "-".
+    const auto number_or_empty = [](bool has, double x) {
+      return has ? fmt::format("{:.17g}", x) : std::string();
+    };
+    text += fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{},{},{:.17g}", i + 1,
                         csv_quoted(kind_name(mode.kind)), mode.eigenvalue.real(),
                         mode.eigenvalue.imag(), mode.natural_frequency, mode.frequency_hz(),
-                        mode.period(), mode.damping_ratio, mode.growth_rate);
+                        number_or_empty(mode.damped_frequency > 0.0, mode.period()),
+                        number_or_empty(!std::isnan(mode.damping_ratio), mode.damping_ratio),
+                        mode.growth_rate);
     for (Eigen::Index j = 0; j < mode.shape.size(); ++j) {
       const double amplitude = std::abs(mode.shape(j));
       const double phase =

@@ -38,6 +38,12 @@ std::optional<double> flag_number(const std::string& text) {
 // CLI11 takes any double it can read (nan, inf, a width of -1) and wraps an unsigned integer
 // (--seed -1 becomes 2^64 - 1): these check the text first, and their message follows the flag's
 // name: "--tol: 0 is out of range: expected a finite number > 0 (...)".
+// sweep's and find's --max-steps.
+constexpr const char* kMaxStepsHelp =
+    "Each run's budget of accepted steps, in place of the scenario's simulate.max_steps: a run "
+    "that needs more stops there and fails (sweep: a 'failed' row; find: exit 4, naming the "
+    "value)";
+
 CLI::Validator finite_number(const std::string& range, bool positive) {
   return CLI::Validator(
       [range, positive](const std::string& text) {
@@ -236,6 +242,8 @@ int run_cli(int argc, const char* const* argv) {
                    fmt::format("Threads, 1 to {} (default: every core, at most {})",
                                kMaxSweepThreads, kMaxSweepThreads))
       ->check(thread_count());
+  sweep->add_option("--max-steps", sweep_args.max_steps, kMaxStepsHelp)
+      ->check(CLI::Range(1L, 1'000'000'000L));
   sweep->add_option("--out", sweep_args.out_dir, "Directory for sweep.csv (created if missing)")
       ->capture_default_str();
   sweep->add_flag("--resume", sweep_args.resume,
@@ -266,6 +274,8 @@ int run_cli(int argc, const char* const* argv) {
                    "(default 1e-9 of the larger bound's magnitude)")
       ->check(finite_number("a finite number > 0 (the final bracket's width)", true));
   find->add_option("--set", find_args.sets, "Fix a parameter: NAME=VALUE");
+  find->add_option("--max-steps", find_args.max_steps, kMaxStepsHelp)
+      ->check(CLI::Range(1L, 1'000'000'000L));
 
   ModesArguments modes_args;
   CLI::App* modes = app.add_subcommand(

@@ -57,15 +57,17 @@ struct SweepArguments {
   int threads = 0;                  // 0: every core (shared among mpirun's processes on it)
   std::string out_dir = ".";
   bool resume = false;  // keep the rows a stopped sweep of the same points wrote, run the rest
+  long max_steps = 0;   // > 0: each run's budget of accepted steps (SweepSpec::max_steps)
 };
 
 // tumble find: where a yes/no outcome changes along one parameter.
 struct FindArguments {
   std::string scenario;
   std::vector<std::string> sets;
-  std::string vary;  // NAME=LO:HI
-  std::string when;  // the condition
-  double tol = 0.0;  // 0: 1e-9 of the larger bound's magnitude
+  std::string vary;    // NAME=LO:HI
+  std::string when;    // the condition
+  double tol = 0.0;    // 0: 1e-9 of the larger bound's magnitude
+  long max_steps = 0;  // > 0: each run's budget of accepted steps (SweepSpec::max_steps)
 };
 
 // The whole command line: parses argv (argv[0] the program) and runs the subcommand; returns the

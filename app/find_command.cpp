@@ -41,6 +41,7 @@ int find_command(const FindArguments& args) {
       status != kDone) {
     return status;
   }
+  spec.max_steps = args.max_steps;
   fmt::print("find {} in [{:.17g}, {:.17g}] where '{}' changes ({})\n", range.name, range.start,
              range.stop, args.when, args.scenario);
   try {

@@ -119,6 +119,7 @@ int sweep_command(const SweepArguments& args) {
       status != kDone) {
     return status;
   }
+  spec.max_steps = args.max_steps;
   // The points are held in memory (about 60 bytes each): ten million is over half a gigabyte.
   constexpr std::size_t kMaxRuns = 10'000'000;
   std::vector<std::vector<double>> points;

@@ -329,5 +329,34 @@ TEST(FindCommand, PrintsTheBracketAndTheRuns) {
   EXPECT_NE(result.out.find("runs           20\n"), std::string::npos) << result.out;
 }
 
+// --max-steps: the prism needs about 170 dop853 steps to t = 20 s; with a budget of 10 each run
+// stops at its eleventh step and fails, naming the budget. A sweep writes the failed rows and
+// exits 0; a search cannot bisect on a failed run, so it ends with exit 4 at the value it was at.
+TEST(SweepCommand, APerRunBudgetOfStepsMakesFailedRowsAndEndsAFind) {
+  const auto dir = test::fresh_test_dir("SweepCommand", "max_steps");
+  const auto sweep = run_tumble("sweep " + kExamples +
+                                "tumbling_prism.yaml --vary a=3:5:2 --record 'e=final(E)' "
+                                "--max-steps 10 --out " +
+                                dir.string());
+  ASSERT_EQ(sweep.status, 0) << sweep.out;
+  std::istringstream rows(test::read_file(dir / "sweep.csv"));
+  std::string line;
+  std::getline(rows, line);
+  int failed = 0;
+  while (std::getline(rows, line)) {
+    EXPECT_NE(line.find(",failed,10,"), std::string::npos) << line;
+    EXPECT_NE(line.find("after --max-steps = 10 steps"), std::string::npos) << line;
+    ++failed;
+  }
+  EXPECT_EQ(failed, 2);
+
+  const auto find =
+      run_tumble("find " + kExamples + "sweeps/mast_critical_spring.yaml --vary k=20:40 --when " +
+                 quote_for_shell("max(abs(base.angle)) > theta_seen") + " --max-steps 10");
+  EXPECT_EQ(find.status, 4) << find.out;
+  EXPECT_NE(find.out.find("the run at k = 20 failed"), std::string::npos) << find.out;
+  EXPECT_NE(find.out.find("after --max-steps = 10 steps"), std::string::npos) << find.out;
+}
+
 }  // namespace
 }  // namespace tumble

@@ -148,6 +148,13 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
   long steps = position.steps;
   bool stopped_by_event = false;
   while (integrator.t() < t_end) {
+    // The budget is of steps taken and handled: the run stops before a step past it.
+    if (steps >= options.max_steps) {
+      report.failure =
+          fmt::format("stopped at t = {:.17g} s after {} = {} steps; raise it or loosen rtol",
+                      integrator.t(), options.max_steps_name, options.max_steps);
+      break;
+    }
     const double t_stop = std::min(t_end, system.next_breakpoint(integrator.t()));
     integrator.bound_next_step(system.step_limit(integrator.t(), integrator.y()));
     const StepOutcome outcome = integrator.step(t_stop);
@@ -184,12 +191,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       report.interrupted = true;
       break;
     }
-    if (++steps > options.max_steps) {
-      report.failure = fmt::format(
-          "stopped at t = {:.17g} s after simulate.max_steps = {} steps; raise it or loosen rtol",
-          integrator.t(), options.max_steps);
-      break;
-    }
+    ++steps;
 
     bool restarted = false, stopped = false, chattered = false;
     if (event_count > 0) {

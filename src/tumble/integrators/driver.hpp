@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tumble/integrators/integrator.hpp"
@@ -21,7 +22,10 @@ namespace tumble {
 struct DriverOptions {
   double output_every = 0.0;    // s; 0: one row per accepted step
   long max_steps = 10'000'000;  // accepted steps before the run is declared failed
-  long max_rows = 1'000'000;    // output rows before the run is stopped (exit 4): disk, not time
+  // What the failure message calls that budget: the scenario's key, or the command line's option
+  // where a sweep or a search sets it for each run.
+  std::string_view max_steps_name = "simulate.max_steps";
+  long max_rows = 1'000'000;  // output rows before the run is stopped (exit 4): disk, not time
   // A checkpoint at the end of the first accepted step that reaches this time (s), once that
   // step's rows, events and breakpoint are done; with stop_at_checkpoint the run ends there.
   double checkpoint_after = std::numeric_limits<double>::infinity();

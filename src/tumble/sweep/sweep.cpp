@@ -98,6 +98,10 @@ RunRecord SweepRunner::run(std::span<const double> values) {
 void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& model,
                             bool scenarios_initial_state, RunRecord& record) {
   PreparedSimulation simulation = prepare_run(model);
+  if (spec_->max_steps > 0) {
+    simulation.options.max_steps = spec_->max_steps;
+    simulation.options.max_steps_name = "--max-steps";
+  }
   if (scenarios_initial_state) {
     // On the run's own formulation: an evaluation writes its scratch.
     simulation.y0 = initial_state_vector(scenario, *simulation.formulation);

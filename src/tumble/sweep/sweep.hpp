@@ -51,6 +51,9 @@ struct SweepSpec {
   // Runs whose varied parameters reach only the bodies' initial velocities share one model
   // (VelocityOnlyRuns); false reads and builds each run's own, for tests that compare the two.
   bool share_models = true;
+  // > 0: each run's budget of accepted steps, in place of its simulate.max_steps (--max-steps): a
+  // run that needs more is a failed row, not minutes of a search gone quiet.
+  long max_steps = 0;
 };
 
 // What the runners of one sweep, on every thread, learn together: whether the varied parameters

@@ -52,13 +52,22 @@ std::string tumbling_box(const std::string& simulate) {
          simulate + "\n";
 }
 
+// Each line's fields, split at the commas outside quotes (an event's text may hold commas); a
+// quoted field keeps its quotes.
 std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
   std::vector<std::vector<std::string>> rows;
   std::ifstream in(p);
   for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> fields;
-    std::stringstream ss(line);
-    for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (const char ch : line) {
+      if (ch == ',' && !quoted) {
+        fields.emplace_back();
+        continue;
+      }
+      if (ch == '"') quoted = !quoted;
+      fields.back().push_back(ch);
+    }
     rows.push_back(fields);
   }
   return rows;
@@ -476,7 +485,7 @@ TEST(Cli, TheEventsCsvHasEachJumpsReactionImpulses) {
   const auto rows = read_csv(dir / "cubli_falls_back_events.csv");
   ASSERT_GE(rows.size(), 4u);
   const auto& header = rows[0];
-  // (read_csv splits at commas and keeps the quotes: these texts hold none.)
+  // (read_csv keeps the quotes.)
   EXPECT_EQ(rows[1][column_of(header, "what")], "\"sticks on a face\"");
   const auto& jump = rows[2];
   EXPECT_EQ(rows[3][column_of(header, "what")], "\"apart\"");
@@ -491,6 +500,34 @@ TEST(Cli, TheEventsCsvHasEachJumpsReactionImpulses) {
   EXPECT_NEAR(std::stod(jump[column_of(header, "corner.Fz")]), J, 1e-9 * J);
   const double KE_after = 0.5 * I_total * Omega * Omega;
   EXPECT_NEAR(std::stod(jump[column_of(header, "KE_after")]), KE_after, 1e-9 * KE_after);
+}
+
+// The tennis ball dropped from h = 1 m onto a frictionless floor (no spin): it lands at
+// v = sqrt(2 g h) (free flight is exact for dop853: a quadratic), leaves at e v (Newton's law,
+// exact), and the floor's impulse is M (1 + e) v along the normal; the kinetic energy goes from
+// M (vx^2 + v^2) / 2 to M (vx^2 + e^2 v^2) / 2. events.csv has them at full precision.
+TEST(Cli, TheEventsCsvHasEachImpactsSpeedsImpulseAndEnergies) {
+  const fs::path dir = fresh_run_dir("impact_numbers");
+  const CommandResult r = run_tumble("run " + example("bouncing_ball.yaml") +
+                                     " --set spin=0 --set mu=0 --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto rows = read_csv(dir / "bouncing_ball_events.csv");
+  ASSERT_GE(rows.size(), 2u);
+  const auto& header = rows[0];
+  const auto& impact = rows[1];
+  ASSERT_EQ(impact[column_of(header, "what")].rfind("\"impact", 0), 0u)
+      << impact[column_of(header, "what")];
+  const double M = 0.057, e = 0.75, g = 9.81, h = 1, vx = 0.5;
+  const double v = std::sqrt(2 * g * h);
+  const auto number = [&](const char* name) { return std::stod(impact[column_of(header, name)]); };
+  EXPECT_NEAR(number("approach_speed"), v, 1e-12 * v);
+  EXPECT_NEAR(number("rebound_speed"), e * v, 1e-12 * v);
+  EXPECT_NEAR(number("Pz"), M * (1 + e) * v, 1e-12 * M * v);
+  EXPECT_EQ(number("Px"), 0.0);
+  EXPECT_EQ(number("Py"), 0.0);
+  const double KE_before = 0.5 * M * (vx * vx + v * v);
+  EXPECT_NEAR(number("KE_before"), KE_before, 1e-12 * KE_before);
+  EXPECT_NEAR(number("KE_after"), 0.5 * M * (vx * vx + e * e * v * v), 1e-12 * KE_before);
 }
 
 // The summary listed the contact events, then the jumps, then the scenario's events, each in its

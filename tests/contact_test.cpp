@@ -387,11 +387,12 @@ TEST(ContactScenario, TheBackspinExampleWritesContactColumnsAndEvents) {
   std::ifstream events(dir / "backspin_disk_events.csv");
   std::string events_header, event_line;
   std::getline(events, events_header);
-  EXPECT_EQ(events_header, "t,source,what,KE_before,KE_after");
+  EXPECT_EQ(events_header,
+            "t,source,what,KE_before,KE_after,approach_speed,rebound_speed,Px,Py,Pz");
   std::vector<std::string> lines;
   while (std::getline(events, event_line)) lines.push_back(event_line);
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "0,\"floor\",\"slides on its rim\",,");
+  EXPECT_EQ(lines[0], "0,\"floor\",\"slides on its rim\",,,,,,,");  // no impact: no numbers
   EXPECT_NE(lines[1].find(",\"floor\",\"slip stops\",,"), std::string::npos) << lines[1];
   const double t_roll = (2 + 60 * 0.1) / (3 * 0.2 * 9.81);
   EXPECT_NEAR(std::stod(lines[1]), t_roll, 1e-9 * t_roll) << lines[1];

@@ -50,23 +50,32 @@ py::array_t<double> rows_array(std::vector<double> values, std::size_t columns) 
 
 py::list contact_and_scenario_events(const Scenario& scenario, const SimulationResult& result) {
   // events.csv's order: at one instant the contacts' events before the scenario's own.
-  std::vector<std::tuple<double, int, std::string, std::string>> events;
+  using Impact = std::optional<ContactImpactNumbers>;
+  std::vector<std::tuple<double, int, std::string, std::string, Impact>> events;
   for (const ContactEventRecord& e : result.contact_events) {
-    events.emplace_back(e.t, 0, scenario.contacts[e.contact].name, e.what);
+    events.emplace_back(e.t, 0, scenario.contacts[e.contact].name, e.what, e.impact);
   }
   for (const UserEventRecord& e : result.user_events) {
-    events.emplace_back(e.t, 1, "event", e.stopped ? e.name + " (stops the run)" : e.name);
+    events.emplace_back(e.t, 1, "event", e.stopped ? e.name + " (stops the run)" : e.name,
+                        std::nullopt);
   }
   std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) {
     return std::get<0>(a) != std::get<0>(b) ? std::get<0>(a) < std::get<0>(b)
                                             : std::get<1>(a) < std::get<1>(b);
   });
   py::list out;
-  for (const auto& [t, order, source, what] : events) {
+  for (const auto& [t, order, source, what, impact] : events) {
     py::dict event;
     event["t"] = t;
     event["source"] = source;
     event["what"] = what;
+    if (impact) {  // events.csv's numbers of an impact
+      event["KE_before"] = impact->kinetic_energy_before;
+      event["KE_after"] = impact->kinetic_energy_after;
+      event["approach_speed"] = impact->approach_speed;
+      event["rebound_speed"] = impact->rebound_speed;
+      event["impulse"] = Vec3(impact->impulse_W);
+    }
     out.append(event);
   }
   return out;

@@ -35,3 +35,10 @@ def test_a_python_run_is_the_command_lines_csv_bit_for_bit(scenario, cli_out):
                       if r["source"] == "jump"]
     assert [(g17(j["t"]), j["what"], g17(j["KE_before"]), g17(j["KE_after"]))
             for j in result.jumps] == expected_jumps
+    # An impact's numbers, as events.csv has them.
+    expected_impacts = [(r["t"], r["KE_before"], r["KE_after"], r["approach_speed"],
+                         r["rebound_speed"], r["Px"], r["Py"], r["Pz"])
+                        for r in rows if r["source"] not in ("jump", "event") and r["approach_speed"]]
+    assert [(g17(e["t"]), g17(e["KE_before"]), g17(e["KE_after"]), g17(e["approach_speed"]),
+             g17(e["rebound_speed"]), *(g17(p) for p in e["impulse"]))
+            for e in result.events if "approach_speed" in e] == expected_impacts

@@ -224,8 +224,9 @@ bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
   return true;
 }
 
-void ContactSystem::note_contact(double t, std::size_t contact, std::string what) {
-  s_.events.push_back({t, contact, std::move(what)});
+void ContactSystem::note_contact(double t, std::size_t contact, std::string what,
+                                 std::optional<ContactImpactNumbers> impact) {
+  s_.events.push_back({t, contact, std::move(what), impact});
 }
 
 double ContactSystem::height_above_plane(std::size_t c, const Vec3& p_B) const {
@@ -448,15 +449,20 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
     work = dynamics_.kinetic_energy() - energy_before;
     if (work <= kWorkRoundOff * energy_before) break;
   }
+  // The impulse the last law applied (the solve left it as a force would be).
+  const Vec3 impulse_W = d_.now[c].force_W;
   y = d_.impact_y;
   add_work(c, work, y);
   dynamics_.calc_motion(y, true);
   const double vn_after = normal_speed(c, landing_B);
+  const ContactImpactNumbers numbers{energy_before, energy_before + work, -vn_before, vn_after,
+                                     impulse_W};
   const char* part = pair.part_name(v);
   const std::string on = part ? fmt::format(" on {}", part) : std::string();
   if (settles) {
     note_contact(t, c,
-                 fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before));
+                 fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before),
+                 numbers);
     pair.find_settled_part(v);
     classify_contact(c, t, y, true);  // the impact set the part: say what holds it
     check_landing_cascade(c, t, -vn_before);
@@ -464,7 +470,8 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
   }
   note_contact(t, c,
                fmt::format("impact{}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", on,
-                           -vn_before, vn_after, -work));
+                           -vn_before, vn_after, -work),
+               numbers);
   if (!pair.keep_unbounced_part(v)) {
     set_apart(c);  // it bounces (a sphere: it was apart)
     return;

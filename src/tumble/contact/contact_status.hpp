@@ -5,6 +5,7 @@
 // part of a run's state (HybridState): copying it with y checkpoints the contact exactly.
 #include <array>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,10 +54,19 @@ struct ContactStatus {
 };
 
 // A contact's mode change or impact, for the summary.
+// What an impact did, at full precision (the event's text rounds it).
+struct ContactImpactNumbers {
+  double kinetic_energy_before = 0.0, kinetic_energy_after = 0.0;  // J, the whole system's
+  // The landing point's speed into the plane before (> 0) and away from it after (>= 0), m/s.
+  double approach_speed = 0.0, rebound_speed = 0.0;
+  Vec3 impulse_W = Vec3::Zero();  // N s: what the plane gave the body, world
+};
+
 struct ContactEventRecord {
   double t = 0.0;
   std::size_t contact = 0;
   std::string what;  // "touchdown, rolls", "impact: normal speed 4.4 -> 3.5 m/s", "slides", ...
+  std::optional<ContactImpactNumbers> impact;  // an impact's (and a settling touchdown's)
 };
 
 // The contact subsystem's part of a run's state: every contact's status and what has happened.

@@ -197,7 +197,8 @@ class ContactSystem {
   // After a settled landing at `speed`: throws std::runtime_error where such landings have
   // come kCascadeLandings in a row, each going apart at once (no consistent mode).
   void check_landing_cascade(std::size_t contact, double t, double speed);
-  void note_contact(double t, std::size_t contact, std::string what);
+  void note_contact(double t, std::size_t contact, std::string what,
+                    std::optional<ContactImpactNumbers> impact = std::nullopt);
   // The work J done on contact c's body at an instant (an impact, a projection), into y's ledger.
   void add_work(std::size_t contact, double work, VecX& y) const;
   // After a jump of the speeds: whether a touching contact still touches (some of its points at

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <limits>
+#include <optional>
 
 #include "tumble/output/atomic_file.hpp"
 #include "tumble/output/csv_text.hpp"
@@ -22,7 +23,19 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
       fmt::format_to(out, ",{}.{}", joint, field);
     }
   }
+  // After the joints' columns, so that those keep their places: an impact's own numbers.
+  fmt::format_to(out, ",approach_speed,rebound_speed,Px,Py,Pz");
   text.push_back('\n');
+  // The cells after a row's joint columns: an impact's numbers, or none.
+  const auto write_impact_cells = [&](const std::optional<ContactImpactNumbers>& impact) {
+    if (!impact) {
+      fmt::format_to(out, ",,,,,");
+      return;
+    }
+    fmt::format_to(out, ",{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", impact->approach_speed,
+                   impact->rebound_speed, impact->impulse_W.x(), impact->impulse_W.y(),
+                   impact->impulse_W.z());
+  };
   // In time order; at one instant the jump comes first (the contacts' modes are decided again
   // after it).
   std::size_t next_event = 0;
@@ -30,9 +43,16 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
     for (; next_event < contact_events.size(); ++next_event) {
       const ContactEventRecord& e = contact_events[next_event];
       if (e.t > t || (e.t == t && !including)) break;
-      fmt::format_to(out, "{:.17g},{},{},,", e.t, csv_quoted(contacts[e.contact]),
+      fmt::format_to(out, "{:.17g},{},{},", e.t, csv_quoted(contacts[e.contact]),
                      csv_quoted(e.what));
+      if (e.impact) {
+        fmt::format_to(out, "{:.17g},{:.17g}", e.impact->kinetic_energy_before,
+                       e.impact->kinetic_energy_after);
+      } else {
+        text.push_back(',');
+      }
       for (std::size_t k = 0; k < 6 * joints.size(); ++k) text.push_back(',');
+      write_impact_cells(e.impact);
       text.push_back('\n');
     }
   };
@@ -45,6 +65,7 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
       fmt::format_to(out, "{:.17g},\"event\",{},,", e.t,
                      csv_quoted(e.stopped ? e.name + " (stops the run)" : e.name));
       for (std::size_t k = 0; k < 6 * joints.size(); ++k) text.push_back(',');
+      write_impact_cells(std::nullopt);
       text.push_back('\n');
     }
   };
@@ -68,6 +89,7 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
       for (int k = 0; k < 3; ++k) fmt::format_to(out, ",{:.17g}", r.F_W(k));
       for (int k = 0; k < 3; ++k) fmt::format_to(out, ",{:.17g}", r.M_J_W(k));
     }
+    write_impact_cells(std::nullopt);
     text.push_back('\n');
   }
   write_contact_events_until(std::numeric_limits<double>::infinity(), true);

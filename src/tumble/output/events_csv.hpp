@@ -7,9 +7,11 @@
 //   t, source (the contact's name, "jump", or "event"; texts are quoted), what (as the summary
 //   says it; an event's name, with " (stops the run)" where it did),
 //   KE_before,
-//   KE_after (J; jumps only), then per joint J: J.Fx J.Fy J.Fz (N s) J.Mx J.My J.Mz (N m s, about
-//   the joint point): the impulse its first body exerts on its second (jumps only; empty cells
-//   where a row has none).
+//   KE_after (J, the whole system's; jumps and impacts), then per joint J: J.Fx J.Fy J.Fz (N s)
+//   J.Mx J.My J.Mz (N m s, about the joint point): the impulse its first body exerts on its
+//   second (jumps only), then an impact's approach_speed and rebound_speed (m/s, the landing
+//   point's speed into the plane before it and away from it after) and Px Py Pz (N s, world: the
+//   impulse the plane gave the body); empty cells where a row has none.
 // Written through an AtomicFile: it appears only when complete.
 #include <filesystem>
 #include <span>

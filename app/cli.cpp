@@ -235,7 +235,9 @@ int run_cli(int argc, const char* const* argv) {
       "expression of columns and parameters), first(EVENT), count(EVENT) (EVENT: "
       "CONTACT.KIND, event.NAME, impulse.NAME, lock.NAME, motor.NAME), first(CONDITION), "
       "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0), each of one "
-      "argument. Expressions only read: = (assignment) is refused, == compares; repeatable");
+      "argument, and what tumble modes says of the initial state: modes.stable, "
+      "modes.unstable, modes.growth_rate, modes.frequency. Expressions only read: = "
+      "(assignment) is refused, == compares; repeatable");
   sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");
   sweep
       ->add_option("--threads", sweep_args.threads,
@@ -267,7 +269,8 @@ int run_cli(int argc, const char* const* argv) {
       ->required();
   find->add_option("--when", find_args.when,
                    "The condition, an expression of reductions as for sweep --record (read-only: "
-                   "= is refused), true where not 0: e.g. \"max(frame.angle) > pi/4\"")
+                   "= is refused), true where not 0: e.g. \"max(frame.angle) > pi/4\", or "
+                   "modes.stable (no run: the linearisation's verdict)")
       ->required();
   find->add_option("--tol", find_args.tol,
                    "Width of the final bracket, a finite number > 0 in the parameter's units "

@@ -79,6 +79,17 @@ TEST(FindCritical, MastSpring) {
   EXPECT_NEAR(middle(found), k_crit, 1e-6 * k_crit);
 }
 
+// The same spring by what tumble modes says, with no nudge and no integration: upright is
+// stable for k > M g L / 2, marginal at it (nothing restores the angle), unstable below.
+TEST(FindByModes, MastSpringWhereItsModesTurnStable) {
+  const double k_crit = 3.0 * 9.81 * 2.0 / 2;
+  const SweepSpec spec = find_spec("modes/inverted_mast.yaml", {}, "k", "modes.stable");
+  const FindResult found = find_change(spec, 20.0, 40.0, 1e-9 * k_crit);
+  EXPECT_FALSE(found.at_lo);
+  EXPECT_TRUE(found.at_hi);
+  EXPECT_NEAR(middle(found), k_crit, 1e-9 * k_crit);
+}
+
 TEST(FindCritical, RefusesARangeWhoseEndsAgree) {
   const SweepSpec spec =
       find_spec("sweeps/mast_critical_spring.yaml", {}, "k", "max(abs(base.angle)) > theta_seen");

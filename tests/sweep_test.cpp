@@ -103,6 +103,48 @@ TEST(SweepReductions, MalformedOrUnknownIsRefusedWithTheText) {
   EXPECT_NE(r.message.find("ball.zz"), std::string::npos) << r.message;
 }
 
+// What `tumble modes` says, read by a sweep with no integration: the top sleeping on its apex
+// (modes_contact_test.cpp) with D = (I_a w)^2 - 4 I_t M g l. Below the critical spin (D < 0) its
+// nutation grows at sqrt(-D) / (2 I_t); above it, it is stable, its slow precession at
+// (I_a w - sqrt(D)) / (2 I_t) the lowest frequency. A modes.* name that is not one is refused, and
+// a state that is not steady makes the run invalid, with the reason tumble modes gives.
+TEST(SweepReductions, ModesOfEachRunAgainstTheSleepingTopsClosedForms) {
+  const double r = 0.05, h = 0.04, M = 0.1, g = 9.81, l = 3 * h / 4;
+  const double I_a = 3 * M * r * r / 10;
+  const double I_t = 3 * M * r * r / 20 + 3 * M * h * h / 80 + M * l * l;
+  SweepSpec spec = spec_for(
+      test::read_file(test::example("modes/sleeping_top.yaml")), {"w"},
+      {"growth=modes.growth_rate", "f=modes.frequency", "s=modes.stable", "u=modes.unstable"});
+  SweepRunner runner(spec);
+  for (const double w : {0.0, 40.0, 60.0, 100.0}) {
+    const RunRecord rec = runner.run(std::vector<double>{w});
+    ASSERT_EQ(rec.status, RunStatus::Ok) << rec.message;
+    EXPECT_EQ(rec.steps, 0);  // no integration
+    const double D = std::pow(I_a * w, 2) - 4 * I_t * M * g * l;
+    if (D < 0) {
+      const double growth = std::sqrt(-D) / (2 * I_t);
+      EXPECT_NEAR(rec.values[0], growth, 1e-9 * growth) << w;
+      EXPECT_TRUE(std::isnan(rec.values[1])) << w;  // its only oscillation grows
+      EXPECT_EQ(rec.values[2], 0.0);
+      EXPECT_EQ(rec.values[3], 1.0);
+    } else {
+      const double slow = (I_a * w - std::sqrt(D)) / (2 * I_t);
+      EXPECT_EQ(rec.values[0], 0.0) << w;
+      EXPECT_NEAR(rec.values[1], slow, 1e-9 * slow) << w;
+      EXPECT_EQ(rec.values[2], 1.0);
+      EXPECT_EQ(rec.values[3], 0.0);
+    }
+  }
+  EXPECT_THROW(parse_record("x=modes.stability"), std::invalid_argument);
+  const SweepSpec falling = spec_for(kFall, {"z0"}, {"x=modes.stable"});
+  SweepRunner fall(falling);
+  const RunRecord rec = fall.run(std::vector<double>{1.0});
+  EXPECT_EQ(rec.status, RunStatus::Invalid);
+  EXPECT_NE(rec.message.find("tumble modes: the initial state is neither an equilibrium"),
+            std::string::npos)
+      << rec.message;
+}
+
 TEST(SweepPoints, GridOrderEndsAndRandomDraws) {
   const std::vector<VaryRange> ranges = {parse_vary("a=0:1:3", true),
                                          parse_vary("b=30 deg:pi/2:2", true)};

@@ -65,6 +65,14 @@ def test_find_brackets_the_critical_friction_as_the_command_line():
     assert abs(found.value - 2 / 7 * math.tan(math.radians(30))) <= 1e-9
 
 
+def test_find_reads_what_modes_says_the_masts_critical_spring():
+    # Upright is stable for k > M g L / 2 (29.43 N m/rad), found on the verdict with no run.
+    found = tumble.find(EXAMPLES / "modes" / "inverted_mast.yaml", {"k": (20, 40)}, "modes.stable",
+                        tol=1e-8)
+    assert not found.at_lo and found.at_hi
+    assert abs(found.value - 3 * 9.81 * 2 / 2) <= 1e-9 * 29.43
+
+
 def test_inertia_is_the_chapters_box_and_the_parallel_axis_theorem():
     # The prism: a box a x b x c = 4 x 1 x 2 m of 12 kg: I = m (b^2 + c^2) / 12, ... about its
     # COM; about a point d from it, I_O = I_G + m (|d|^2 E - d d^T).

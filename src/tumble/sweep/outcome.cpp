@@ -14,6 +14,9 @@ struct NamedReduction {
   std::string_view name;
   ReductionKind kind;
 };
+// What of the modes an outcome may read, as modes.NAME.
+constexpr std::string_view kModesValues[] = {"stable", "unstable", "growth_rate", "frequency"};
+
 constexpr NamedReduction kReductions[] = {{"final", ReductionKind::Final},
                                           {"max", ReductionKind::Max},
                                           {"min", ReductionKind::Min},
@@ -54,6 +57,23 @@ bool is_row_condition(const std::string& argument) {
   return argument.find_first_of("<>=!") != std::string::npos;
 }
 
+double ModesOutcome::value(const std::string& what) const {
+  if (what == "stable") return stable;
+  if (what == "unstable") return unstable;
+  if (what == "growth_rate") return growth_rate;
+  return frequency;
+}
+
+bool Outcome::reads_modes() const {
+  return std::any_of(reductions.begin(), reductions.end(),
+                     [](const Reduction& r) { return r.kind == ReductionKind::Modes; });
+}
+
+bool Outcome::reads_run() const {
+  return std::any_of(reductions.begin(), reductions.end(),
+                     [](const Reduction& r) { return r.kind != ReductionKind::Modes; });
+}
+
 bool Reduction::over_events() const {
   return (kind == ReductionKind::First || kind == ReductionKind::Count) &&
          !is_row_condition(argument);
@@ -73,6 +93,20 @@ Outcome parse_outcome(std::string name, const std::string& text) {
     std::size_t end = i;
     while (end < text.size() && name_char(text[end])) ++end;
     const std::string_view word(text.data() + i, end - i);
+    if (word.substr(0, 6) == "modes.") {
+      const std::string_view what = word.substr(6);
+      if (std::find(std::begin(kModesValues), std::end(kModesValues), what) ==
+          std::end(kModesValues)) {
+        throw std::invalid_argument(
+            fmt::format("'{}': {} is not what tumble modes says: use modes.stable, modes.unstable, "
+                        "modes.growth_rate (1/s) or modes.frequency (rad/s)",
+                        text, word));
+      }
+      outcome.expression += fmt::format("__r{}", outcome.reductions.size());
+      outcome.reductions.push_back({ReductionKind::Modes, std::string(what)});
+      i = end;
+      continue;
+    }
     const auto known = std::find_if(std::begin(kReductions), std::end(kReductions),
                                     [&](const NamedReduction& r) { return r.name == word; });
     std::size_t open = end;
@@ -117,7 +151,8 @@ Outcome parse_outcome(std::string name, const std::string& text) {
   if (outcome.reductions.empty()) {
     throw std::invalid_argument(
         fmt::format("'{}' names no reduction of the run: use final(X), max(X), min(X), mean(X), "
-                    "time_of_max(X) of a column or expression X, or first(EVENT), count(EVENT)",
+                    "time_of_max(X) of a column or expression X, first(EVENT), count(EVENT), or "
+                    "modes.stable, modes.growth_rate, ...",
                     text));
   }
   return outcome;

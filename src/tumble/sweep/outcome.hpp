@@ -7,7 +7,12 @@
 //   first(EVENT), count(EVENT): the time of an event's first occurrence (nan if none) and how
 //     many there were. EVENT is CONTACT.KIND for a contact's events (KIND one of event_kinds()),
 //     or impulse.NAME, lock.NAME, motor.NAME for the jumps at an impulse, a lock or a motor's
-//     start.
+//     start;
+//   modes.stable, modes.unstable, modes.growth_rate, modes.frequency: what `tumble modes` says of
+//     the run's initial state (modes_outcome()), with no parentheses: a verdict (1 or 0), the
+//     largest real part of the eigenvalues (1/s), the lowest natural frequency among the modes
+//     that oscillate without growing (rad/s; nan if none). An outcome of these alone needs no
+//     integration.
 #include <span>
 #include <string>
 #include <vector>
@@ -17,12 +22,22 @@
 
 namespace tumble {
 
-enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count };
+enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count, Modes };
 
 struct Reduction {
   ReductionKind kind = ReductionKind::Final;
-  std::string argument;  // a row expression, or an EVENT name or a CONDITION for First and Count
+  // A row expression, an EVENT name or a CONDITION for First and Count, or for Modes what of the
+  // modes ("stable", "growth_rate", ...).
+  std::string argument;
   bool over_events() const;
+};
+
+// The values the modes.* names read, from the modes of a run's initial state.
+struct ModesOutcome {
+  double stable = 0.0, unstable = 0.0;  // 1 or 0: the verdict
+  double growth_rate = 0.0;             // max Re lambda, 1/s
+  double frequency = 0.0;               // the lowest oscillating mode's |lambda|, rad/s; or nan
+  double value(const std::string& what) const;  // by the name after "modes."
 };
 
 // Whether the argument of first() or count() is a condition of the columns (it compares) rather
@@ -36,6 +51,8 @@ struct Outcome {
   std::string text;                   // as given
   std::string expression;             // with each reduction replaced by __r0, __r1, ...
   std::vector<Reduction> reductions;  // in order of appearance
+  bool reads_modes() const;           // a modes.* name
+  bool reads_run() const;             // a reduction of the rows or the events
 };
 
 // Throws std::invalid_argument, naming the text, when it has no reduction, a reduction without

@@ -158,6 +158,10 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
     for (std::size_t r = 0; r < outcome.reductions.size(); ++r) {
       const Reduction& reduction = outcome.reductions[r];
       value_variables.push_back({fmt::format("__r{}", r), &(*slots.values)[r]});
+      if (reduction.kind == ReductionKind::Modes) {
+        slots.row_reduction.push_back(0);
+        continue;
+      }
       if (reduction.over_events()) {
         if (const std::string why = event_problem(reduction.argument, scenario); !why.empty()) {
           throw std::invalid_argument(
@@ -231,12 +235,17 @@ void RunRecorder::observe(const OutputRow& row) {
 
 std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> events,
                                         std::span<const JumpRecord> jumps,
-                                        std::span<const UserEventRecord> user_events) const {
+                                        std::span<const UserEventRecord> user_events,
+                                        const ModesOutcome* modes) const {
   std::vector<double> results;
   for (const OutcomeSlots& slots : outcomes_) {
     for (std::size_t r = 0; r < slots.reductions.size(); ++r) {
       const Reduction& reduction = slots.reductions[r];
       double& value = (*slots.values)[r];
+      if (reduction.kind == ReductionKind::Modes) {
+        value = modes ? modes->value(reduction.argument) : std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
       if (!reduction.over_events()) {
         value = row_reductions_[slots.row_reduction[r]]->result();
         continue;

@@ -29,10 +29,12 @@ class RunRecorder {
   // A new run of it: its parameter values, and nothing accumulated.
   void start(const Scenario& scenario);
   void observe(const OutputRow& row);
-  // Each outcome's value, after the last row, with the run's events.
+  // Each outcome's value, after the last row, with the run's events and, where an outcome reads
+  // them, the modes of its initial state (nan without).
   std::vector<double> finish(std::span<const ContactEventRecord> events,
                              std::span<const JumpRecord> jumps,
-                             std::span<const UserEventRecord> user_events) const;
+                             std::span<const UserEventRecord> user_events,
+                             const ModesOutcome* modes = nullptr) const;
 
  private:
   struct RowReduction;

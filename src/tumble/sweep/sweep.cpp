@@ -1,21 +1,50 @@
 #include "tumble/sweep/sweep.hpp"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 
+#include "tumble/modes/scenario_modes.hpp"
 #include "tumble/output/csv_text.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "tumble/sweep/run_recorder.hpp"
 #include "tumble/sweep/velocity_only_runs.hpp"
 
 namespace tumble {
+
+namespace {
+
+ModesOutcome modes_outcome(const ModalAnalysis& analysis) {
+  ModesOutcome out;
+  out.stable = analysis.verdict == ModalAnalysis::Verdict::Stable ? 1.0 : 0.0;
+  out.unstable = analysis.verdict == ModalAnalysis::Verdict::Unstable ? 1.0 : 0.0;
+  out.frequency = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < analysis.modes.size(); ++i) {
+    const Mode& mode = analysis.modes[i];
+    out.growth_rate = i == 0 ? mode.growth_rate : std::max(out.growth_rate, mode.growth_rate);
+    const bool oscillates =
+        mode.kind == Mode::Kind::Oscillating || mode.kind == Mode::Kind::DampedOscillation;
+    if (oscillates && !(mode.natural_frequency >= out.frequency)) {
+      out.frequency = mode.natural_frequency;
+    }
+  }
+  return out;
+}
+
+bool any_outcome(const SweepSpec& spec, bool (Outcome::*reads)() const) {
+  return std::any_of(spec.outcomes.begin(), spec.outcomes.end(),
+                     [&](const Outcome& o) { return (o.*reads)(); });
+}
+
+}  // namespace
 
 const char* run_status_name(RunStatus status) {
   switch (status) {
@@ -33,7 +62,9 @@ SweepRunner::SweepRunner(const SweepSpec& spec, SweepModelShare* share)
     : spec_(&spec),
       own_share_(share != nullptr ? nullptr : std::make_unique<SweepModelShare>()),
       share_(share != nullptr ? share : own_share_.get()),
-      document_(ScenarioDocument::from_text(spec.text, spec.path)) {}
+      document_(ScenarioDocument::from_text(spec.text, spec.path)),
+      reads_modes_(any_outcome(spec, &Outcome::reads_modes)),
+      reads_run_(any_outcome(spec, &Outcome::reads_run)) {}
 
 void SweepRunner::adopt_shared_model() {
   const std::lock_guard<std::mutex> lock(share_->mutex);
@@ -97,6 +128,18 @@ RunRecord SweepRunner::run(std::span<const double> values) {
 
 void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& model,
                             bool scenarios_initial_state, RunRecord& record) {
+  // What tumble modes says of the initial state, where an outcome reads it: a state with no
+  // linearisation makes the run invalid, with the command's reason.
+  std::optional<ModesOutcome> modes;
+  if (reads_modes_) {
+    try {
+      modes = modes_outcome(modes_of_scenario(scenario).analysis);
+    } catch (const NotSteady& e) {
+      record.status = RunStatus::Invalid;
+      record.message = fmt::format("tumble modes: {}", e.what());
+      return;
+    }
+  }
   PreparedSimulation simulation = prepare_run(model);
   if (spec_->max_steps > 0) {
     simulation.options.max_steps = spec_->max_steps;
@@ -111,6 +154,10 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     recorder_ = std::make_unique<RunRecorder>(spec_->outcomes, layout, scenario);
   }
   recorder_->start(scenario);
+  if (!reads_run_) {  // the modes alone: no integration (0 steps)
+    record.values = recorder_->finish({}, {}, {}, modes ? &*modes : nullptr);
+    return;
+  }
   const SimulationResult result =
       run_simulation(simulation, [&](double t, std::span<const BodyState> states,
                                      const SystemQuantities& q, const RowExtras& extras) {
@@ -124,7 +171,8 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     record.message = "integration failed: " + result.report.failure;
     return;
   }
-  record.values = recorder_->finish(result.contact_events, result.jumps, result.user_events);
+  record.values = recorder_->finish(result.contact_events, result.jumps, result.user_events,
+                                    modes ? &*modes : nullptr);
 }
 
 std::vector<RunRecord> run_points(const SweepSpec& spec,

@@ -104,6 +104,8 @@ class SweepRunner {
   ScenarioDocument document_;
   std::unique_ptr<RunRecorder> recorder_;
   std::unique_ptr<VelocityOnlyRuns> velocity_only_;  // once a run has shown that they can
+  bool reads_modes_;  // some outcome reads modes.*: each run linearises its initial state
+  bool reads_run_;    // some outcome reads the rows or the events: each run integrates
 };
 
 // Called on the calling thread about ten times a second while the runs go on. An exception from

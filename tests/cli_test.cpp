@@ -244,8 +244,8 @@ TEST(Cli, RunsTheTumblingPrismAndWritesTheContractCsv) {
       "prism.R23", "prism.R31", "prism.R32", "prism.R33", "KE", "PE", "E", "px", "py", "pz", "Lx",
       "Ly", "Lz",
       // After the contract's columns, tumble's own: omega in body axes (omega_1, omega_2,
-      // omega_3 of Euler's equations).
-      "prism.w1", "prism.w2", "prism.w3"};
+      // omega_3 of Euler's equations), and the COM's speed.
+      "prism.w1", "prism.w2", "prism.w3", "prism.speed"};
   EXPECT_EQ(rows[0], expected_header);
   for (std::size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(rows[i].size(), expected_header.size());
   EXPECT_DOUBLE_EQ(std::stod(rows[200][0]), 9.95);
@@ -528,6 +528,18 @@ TEST(Cli, TheEventsCsvHasEachImpactsSpeedsImpulseAndEnergies) {
   const double KE_before = 0.5 * M * (vx * vx + v * v);
   EXPECT_NEAR(number("KE_before"), KE_before, 1e-12 * KE_before);
   EXPECT_NEAR(number("KE_after"), 0.5 * M * (vx * vx + e * e * v * v), 1e-12 * KE_before);
+  // The trajectory's speed column is |v| of the same row: vx throughout, vz falling and bouncing.
+  const auto trajectory = read_csv(dir / "bouncing_ball.csv");
+  const auto& columns = trajectory[0];
+  for (std::size_t i = 1; i < trajectory.size(); i += 37) {
+    double v2 = 0.0;
+    for (const char* name : {"ball.vx", "ball.vy", "ball.vz"}) {
+      v2 += std::pow(std::stod(trajectory[i][column_of(columns, name)]), 2);
+    }
+    const double speed = std::stod(trajectory[i][column_of(columns, "ball.speed")]);
+    EXPECT_NEAR(speed, std::sqrt(v2), 1e-15 * speed) << "row " << i;
+    EXPECT_GE(speed, vx);
+  }
 }
 
 // The summary listed the contact events, then the jumps, then the scenario's events, each in its

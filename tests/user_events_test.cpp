@@ -195,8 +195,8 @@ TEST(UserEvents, ThePrismsFlipOnTheClosedForm) {
 }
 
 TEST(UserEvents, AnUnknownNameOrAMisplacedDirectionIsLocated) {
-  test::expect_error(crate("1", "  - {name: e1, when: crate.speed > 1}"), 9, 22, "events[0].when",
-                     "unknown name 'crate.speed'");
+  test::expect_error(crate("1", "  - {name: e1, when: crate.velocity > 1}"), 9, 22,
+                     "events[0].when", "unknown name 'crate.velocity'");
   test::expect_error(crate("1", "  - {name: e1, when: crate.x > d, direction: up}"), 9, 46,
                      "events[0].direction", "a comparison says its own direction");
   test::expect_error(crate("1", "  - {name: e1, when: crate.x > d && t > 1}"), 9, 22,

@@ -14,7 +14,7 @@
 //   rad/s), a slider's J.travel J.speed (m, m/s), a ball joint's J.rx J.ry J.rz (the rotation
 //   vector of its second body relative to its first, rad, the first's axes), a fixed joint
 //   none); then, in a planar scenario, per body B: B.angle B.rate (its angle about z, rad, run
-//   on past a turn, and its rate, rad/s).
+//   on past a turn, and its rate, rad/s); then per body B: B.speed (its COM's speed, |v|, m/s).
 #include <cmath>
 #include <span>
 #include <string>
@@ -134,14 +134,19 @@ void for_each_column(const ColumnLayout& layout, Column&& column) {
       });
     }
   }
-  if (!layout.planar) return;
+  if (layout.planar) {
+    for (std::size_t b = 0; b < layout.bodies.size(); ++b) {
+      column(layout.bodies[b], "angle", [b](Row row) {
+        return row.extras != nullptr && b < row.extras->planar_angles.size()
+                   ? row.extras->planar_angles[b]
+                   : std::atan2(row.states[b].R_WB(1, 0), row.states[b].R_WB(0, 0));
+      });
+      column(layout.bodies[b], "rate", [b](Row row) { return row.states[b].omega_W.z(); });
+    }
+  }
+  // Last, so that every column before keeps its place: what a student otherwise computes.
   for (std::size_t b = 0; b < layout.bodies.size(); ++b) {
-    column(layout.bodies[b], "angle", [b](Row row) {
-      return row.extras != nullptr && b < row.extras->planar_angles.size()
-                 ? row.extras->planar_angles[b]
-                 : std::atan2(row.states[b].R_WB(1, 0), row.states[b].R_WB(0, 0));
-    });
-    column(layout.bodies[b], "rate", [b](Row row) { return row.states[b].omega_W.z(); });
+    column(layout.bodies[b], "speed", [b](Row row) { return row.states[b].v_G.norm(); });
   }
 }
 

@@ -90,10 +90,10 @@ TEST(SpeedMotor, OnAVerticalHingeItHoldsTheRateExactlyAndItsStartIsItsWork) {
       const double E0 = run.rows.front().quantities.total_energy;
       for (const Row& row : run.rows) {
         const double rate = row.states[0].omega_W.z();
-        // The row at t1 is written before the jump (the driver lands on the breakpoint first).
-        EXPECT_NEAR(rate, row.t <= t1 ? w0 : w, 1e-12 * rate_scale) << row.t;
+        // The motor acts from t1 on (from <= t): the row at t1 shows the rate after its jump.
+        EXPECT_NEAR(rate, row.t < t1 ? w0 : w, 1e-12 * rate_scale) << row.t;
         const double motor_work = row.extras.elements[0].work;
-        EXPECT_NEAR(motor_work, row.t <= t1 ? 0.0 : dKE, 1e-12 * I_O * rate_scale * rate_scale)
+        EXPECT_NEAR(motor_work, row.t < t1 ? 0.0 : dKE, 1e-12 * I_O * rate_scale * rate_scale)
             << row.t;
         EXPECT_NEAR(row.quantities.total_energy - E0, motor_work,
                     1e-12 * I_O * rate_scale * rate_scale)
@@ -101,6 +101,10 @@ TEST(SpeedMotor, OnAVerticalHingeItHoldsTheRateExactlyAndItsStartIsItsWork) {
       }
       ASSERT_EQ(run.jumps.size(), 1u);
       EXPECT_EQ(run.jumps[0].t, t1);
+      // One row at t1, after the jump (rows every 0.01 s land on it).
+      const auto at_t1 = std::count_if(run.rows.begin(), run.rows.end(),
+                                       [&](const Row& row) { return row.t == t1; });
+      EXPECT_EQ(at_t1, 1);
     }
   }
 }
@@ -159,11 +163,11 @@ TEST(SpeedMotor, OnAHorizontalHingeItTurnsThePendulumUniformlyAgainstGravity) {
         const BodyState& s = row.states[0];
         const double motor_work = row.extras.elements[0].work;
         worst_work = std::max(worst_work, std::abs(row.quantities.total_energy - E0 - motor_work));
-        if (row.t <= t1) {
+        if (row.t < t1) {  // from t1 on, the row at t1 included, it turns at w
           EXPECT_EQ(motor_work, 0.0);
           continue;
         }
-        if (row.t > t2) continue;
+        if (row.t >= t2) continue;  // to t2, not at it: the row at t2 has the motor off
         EXPECT_NEAR(s.omega_W.y(), w, 1e-12 * std::abs(w)) << row.t;
         const double theta = w * (row.t - t1);
         worst_position =

@@ -92,10 +92,11 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
   OutputClock clock(position.t0, t_end, options.output_every, position.next_row);
   bool checkpoint_due = static_cast<bool>(on_checkpoint);
 
-  // Rows in (t_previous, t_upto] from the continuous extension of the last step.
-  auto emit_rows_until = [&](double t_upto) {
+  // Rows in (t_previous, t_upto] from the continuous extension of the last step; with
+  // `including` false, in (t_previous, t_upto).
+  auto emit_rows_until = [&](double t_upto, bool including = true) {
     if (clock.every_step()) return;
-    for (double t = clock.next(); t <= t_upto; t = clock.next()) {
+    for (double t = clock.next(); t < t_upto || (including && t == t_upto); t = clock.next()) {
       if (t == integrator.t()) {
         observe(t, integrator.y());
       } else {
@@ -256,8 +257,11 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
     if (stopped || chattered) break;
     if (restarted) continue;
 
-    emit_rows_until(integrator.t());
-    if (clock.every_step()) observe(integrator.t(), integrator.y());
+    // At a breakpoint the row at its instant waits for the jump: a load, an impulse, a motor's
+    // start or a lock acts from its time on (`from <= t`), so that row shows the state after it.
+    const bool breakpoint = integrator.t() == t_stop && t_stop < t_end;
+    emit_rows_until(integrator.t(), !breakpoint);
+    if (clock.every_step() && !breakpoint) observe(integrator.t(), integrator.y());
     if (event_count > 0) {
       g_before = g_after;
       if (system.refresh_event_functions(integrator.t(), integrator.y())) {
@@ -265,7 +269,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       }
     }
 
-    if (integrator.t() == t_stop && t_stop < t_end) {
+    if (breakpoint) {
       // A breakpoint: the system may change the state (an impulse), then the method restarts so
       // that no step straddles the discontinuity.
       VecX& y_break = y_event;
@@ -273,6 +277,8 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       system.at_breakpoint(t_stop, y_break);
       system.project(t_stop, y_break);
       integrator.restart(t_stop, y_break);
+      emit_rows_until(t_stop);
+      if (clock.every_step()) observe(t_stop, integrator.y());
       if (event_count > 0) {
         g_probe = g_before;  // just before the jump
         system.event_functions(t_stop, integrator.y(), g_before);
@@ -288,7 +294,8 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
           const EventAction action = system.on_event(k, t_stop, y_break);
           report.events.push_back({t_stop, k, action});
           if (action == EventAction::Stop) {
-            observe(t_stop, integrator.y());
+            // The run ends with a row at the jump, unless one was made there.
+            if (!clock.every_step() && clock.previous() != t_stop) observe(t_stop, integrator.y());
             report.t_reached = t_stop;
             stopped = true;
             stopped_by_event = true;

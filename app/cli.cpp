@@ -235,7 +235,9 @@ int run_cli(int argc, const char* const* argv) {
       "expression of columns and parameters), first(EVENT), count(EVENT) (EVENT: "
       "CONTACT.KIND, event.NAME, impulse.NAME, lock.NAME, motor.NAME), first(CONDITION), "
       "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0), each of one "
-      "argument, and what tumble modes says of the initial state: modes.stable, "
+      "argument; jump(JUMP, FIELD) (JUMP: impulse.NAME, lock.NAME, motor.NAME; FIELD: KE_before, "
+      "KE_after or a joint's reaction impulse JOINT.Fx ... JOINT.Mz); and what tumble modes says "
+      "of the initial state: modes.stable, "
       "modes.unstable, modes.growth_rate, modes.frequency. Expressions only read: = "
       "(assignment) is refused, == compares; repeatable");
   sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");

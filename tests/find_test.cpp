@@ -90,6 +90,21 @@ TEST(FindByModes, MastSpringWhereItsModesTurnStable) {
   EXPECT_NEAR(middle(found), k_crit, 1e-9 * k_crit);
 }
 
+// The bat's centre of percussion, I_O / (M L), where the knob's reaction impulse at the blow
+// changes sign (it is P (M L d / I_O - 1), linear in d): from the jump's numbers, exact whatever
+// the rows (0.01 s apart here).
+TEST(FindByJump, TheBatsCentreOfPercussionWhereTheKnobFeelsNoImpulse) {
+  const double M = 0.9, length = 0.84, r = 0.03, L = length / 2;
+  const double d_star = (M * (3 * r * r + length * length) / 12 + M * L * L) / (M * L);
+  SweepSpec spec = find_spec("bat_struck.yaml", {}, "d", "jump(impulse.ball, knob.Fx) > 0");
+  const std::string rows = "output_every: 0.001";
+  spec.text.replace(spec.text.find(rows), rows.size(), "output_every: 0.01");
+  const FindResult found = find_change(spec, 0.4, 0.7, 1e-10 * d_star);
+  EXPECT_FALSE(found.at_lo);
+  EXPECT_TRUE(found.at_hi);
+  EXPECT_NEAR(middle(found), d_star, 1e-9 * d_star);
+}
+
 TEST(FindCritical, RefusesARangeWhoseEndsAgree) {
   const SweepSpec spec =
       find_spec("sweeps/mast_critical_spring.yaml", {}, "k", "max(abs(base.angle)) > theta_seen");

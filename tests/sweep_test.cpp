@@ -145,6 +145,39 @@ TEST(SweepReductions, ModesOfEachRunAgainstTheSleepingTopsClosedForms) {
       << rec.message;
 }
 
+// The chapter's bat (equations.md, 6.7) struck at d below its knob by an impulse P: its angular
+// impulse about O gives w = P d / I_O, its COM then moves at w L, and the knob's reaction impulse
+// on the bat is M w L - P = P (M L d / I_O - 1), zero at the centre of percussion; the kinetic
+// energy goes from 0 to (P d)^2 / (2 I_O). jump() reads them at the blow; a field or a jump the
+// scenario does not have is refused with the text.
+TEST(SweepReductions, AJumpsReactionImpulseAndEnergiesAgainstTheBatsClosedForms) {
+  const double M = 0.9, length = 0.84, r = 0.03, L = length / 2, P = 1.5;
+  const double I_O = M * (3 * r * r + length * length) / 12 + M * L * L;
+  const SweepSpec spec =
+      spec_for(test::read_file(test::example("bat_struck.yaml")), {"d"},
+               {"J=jump(impulse.ball, knob.Fx)", "Jz=jump(impulse.ball, knob.Fz)",
+                "before=jump(impulse.ball, KE_before)", "after=jump(impulse.ball, KE_after)"});
+  SweepRunner runner(spec);
+  for (const double d : {0.3, I_O / (M * L), 0.8}) {
+    const RunRecord rec = runner.run(std::vector<double>{d});
+    ASSERT_EQ(rec.status, RunStatus::Ok) << rec.message;
+    EXPECT_NEAR(rec.values[0], P * (M * L * d / I_O - 1), 1e-12 * P) << d;
+    EXPECT_NEAR(rec.values[1], 0.0, 1e-12 * P) << d;
+    EXPECT_NEAR(rec.values[2], 0.0, 1e-12 * P * P / M) << d;
+    EXPECT_NEAR(rec.values[3], P * P * d * d / (2 * I_O), 1e-12 * P * P / M) << d;
+  }
+  EXPECT_THROW(parse_record("x=jump(impulse.ball)"), std::invalid_argument);
+  for (const char* refused : {"x=jump(impulse.bat, knob.Fx)", "x=jump(impulse.ball, knob.Fw)",
+                              "x=jump(impulse.ball, elbow.Fx)", "x=jump(floor.rolls, KE_after)"}) {
+    const SweepSpec bad_spec =
+        spec_for(test::read_file(test::example("bat_struck.yaml")), {"d"}, {refused});
+    SweepRunner bad(bad_spec);
+    const RunRecord rec = bad.run(std::vector<double>{0.5});
+    EXPECT_EQ(rec.status, RunStatus::Invalid) << refused;
+    EXPECT_NE(rec.message.find("jump("), std::string::npos) << rec.message;
+  }
+}
+
 TEST(SweepPoints, GridOrderEndsAndRandomDraws) {
   const std::vector<VaryRange> ranges = {parse_vary("a=0:1:3", true),
                                          parse_vary("b=30 deg:pi/2:2", true)};

@@ -23,7 +23,8 @@ constexpr NamedReduction kReductions[] = {{"final", ReductionKind::Final},
                                           {"mean", ReductionKind::Mean},
                                           {"time_of_max", ReductionKind::TimeOfMax},
                                           {"first", ReductionKind::First},
-                                          {"count", ReductionKind::Count}};
+                                          {"count", ReductionKind::Count},
+                                          {"jump", ReductionKind::Jump}};
 
 bool name_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
@@ -103,7 +104,7 @@ Outcome parse_outcome(std::string name, const std::string& text) {
                         text, word));
       }
       outcome.expression += fmt::format("__r{}", outcome.reductions.size());
-      outcome.reductions.push_back({ReductionKind::Modes, std::string(what)});
+      outcome.reductions.push_back({ReductionKind::Modes, std::string(what), {}});
       i = end;
       continue;
     }
@@ -135,6 +136,21 @@ Outcome parse_outcome(std::string name, const std::string& text) {
               ? "an event (e.g. ball.rolls, impulse.kick) or a condition (e.g. ball.vx < 0)"
               : "a column or an expression of columns, e.g. ball.vx"));
     }
+    if (known->kind == ReductionKind::Jump) {
+      const auto comma = argument.find(',');
+      if (top_level_arguments(argument) != 2) {
+        throw std::invalid_argument(fmt::format(
+            "'{}': jump() takes a jump and what of it, e.g. jump(impulse.ball, knob.Fx) or "
+            "jump(lock.brake, KE_after); got '{}'",
+            text, argument));
+      }
+      outcome.expression += fmt::format("__r{}", outcome.reductions.size());
+      outcome.reductions.push_back({ReductionKind::Jump,
+                                    std::string(trim_blanks(argument.substr(0, comma))),
+                                    std::string(trim_blanks(argument.substr(comma + 1)))});
+      i = close + 1;
+      continue;
+    }
     // One argument each: muParser would read "a, E" as two values and keep the last.
     if (const std::size_t count = top_level_arguments(argument); count != 1) {
       throw std::invalid_argument(
@@ -145,14 +161,14 @@ Outcome parse_outcome(std::string name, const std::string& text) {
                       count, argument));
     }
     outcome.expression += fmt::format("__r{}", outcome.reductions.size());
-    outcome.reductions.push_back({known->kind, argument});
+    outcome.reductions.push_back({known->kind, argument, {}});
     i = close + 1;
   }
   if (outcome.reductions.empty()) {
     throw std::invalid_argument(
         fmt::format("'{}' names no reduction of the run: use final(X), max(X), min(X), mean(X), "
-                    "time_of_max(X) of a column or expression X, first(EVENT), count(EVENT), or "
-                    "modes.stable, modes.growth_rate, ...",
+                    "time_of_max(X) of a column or expression X, first(EVENT), count(EVENT), "
+                    "jump(JUMP, FIELD), or modes.stable, modes.growth_rate, ...",
                     text));
   }
   return outcome;

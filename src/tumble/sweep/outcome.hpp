@@ -8,6 +8,9 @@
 //     many there were. EVENT is CONTACT.KIND for a contact's events (KIND one of event_kinds()),
 //     or impulse.NAME, lock.NAME, motor.NAME for the jumps at an impulse, a lock or a motor's
 //     start;
+//   jump(JUMP, FIELD): at a jump's first occurrence (JUMP: impulse.NAME, lock.NAME, motor.NAME;
+//     nan if none), FIELD: KE_before or KE_after (J, the whole system's), or JOINT.Fx ... JOINT.Mz
+//     (the joint's reaction impulse, N s and N m s about the joint point, world: events.csv's);
 //   modes.stable, modes.unstable, modes.growth_rate, modes.frequency: what `tumble modes` says of
 //     the run's initial state (modes_outcome()), with no parentheses: a verdict (1 or 0), the
 //     largest real part of the eigenvalues (1/s), the lowest natural frequency among the modes
@@ -22,13 +25,14 @@
 
 namespace tumble {
 
-enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count, Modes };
+enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count, Jump, Modes };
 
 struct Reduction {
   ReductionKind kind = ReductionKind::Final;
   // A row expression, an EVENT name or a CONDITION for First and Count, or for Modes what of the
   // modes ("stable", "growth_rate", ...).
   std::string argument;
+  std::string field;  // Jump: what of it (KE_before, KE_after, JOINT.Fx, ...)
   bool over_events() const;
 };
 

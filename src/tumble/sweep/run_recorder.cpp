@@ -142,6 +142,28 @@ std::string event_problem(const std::string& event, const Scenario& scenario) {
   return "no contact, event, impulse, lock or motor is named " + source;
 }
 
+// What of a jump `field` names (jump(JUMP, FIELD)): -2 and -1 for its kinetic energy before and
+// after, else 6 j + k for joint j's reaction impulse component k (Fx Fy Fz Mx My Mz); throws
+// std::invalid_argument for a field that is none of them.
+int jump_field(const std::string& field, std::span<const std::string> joints) {
+  if (field == "KE_before") return -2;
+  if (field == "KE_after") return -1;
+  static constexpr std::string_view kComponents[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
+  const auto dot = field.rfind('.');
+  if (dot != std::string::npos) {
+    const auto joint = std::find(joints.begin(), joints.end(), field.substr(0, dot));
+    const auto component = std::find(std::begin(kComponents), std::end(kComponents),
+                                     std::string_view(field).substr(dot + 1));
+    if (joint != joints.end() && component != std::end(kComponents)) {
+      return static_cast<int>(6 * (joint - joints.begin()) + (component - std::begin(kComponents)));
+    }
+  }
+  throw std::invalid_argument(fmt::format(
+      "a jump's field is KE_before, KE_after or JOINT.Fx, .Fy, .Fz, .Mx, .My, .Mz (its reaction "
+      "impulse; the joints are {}), not '{}'",
+      joints.empty() ? std::string("none") : fmt::format("{}", fmt::join(joints, ", ")), field));
+}
+
 }  // namespace
 
 RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& layout,
@@ -161,6 +183,24 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
       if (reduction.kind == ReductionKind::Modes) {
         slots.row_reduction.push_back(0);
         continue;
+      }
+      if (reduction.kind == ReductionKind::Jump) {
+        const std::string source = reduction.argument.substr(0, reduction.argument.find('.'));
+        std::string why = source == "impulse" || source == "lock" || source == "motor"
+                              ? event_problem(reduction.argument, scenario)
+                              : "expected impulse.NAME, lock.NAME or motor.NAME";
+        if (why.empty()) {
+          try {
+            slots.jump_field.resize(outcome.reductions.size(), 0);
+            slots.jump_field[r] = jump_field(reduction.field, layout.joints);
+            slots.row_reduction.push_back(0);
+            continue;
+          } catch (const std::invalid_argument& e) {
+            why = e.what();
+          }
+        }
+        throw std::invalid_argument(fmt::format("{}: jump({}, {}): {}", outcome.text,
+                                                reduction.argument, reduction.field, why));
       }
       if (reduction.over_events()) {
         if (const std::string why = event_problem(reduction.argument, scenario); !why.empty()) {
@@ -244,6 +284,23 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
       double& value = (*slots.values)[r];
       if (reduction.kind == ReductionKind::Modes) {
         value = modes ? modes->value(reduction.argument) : std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
+      if (reduction.kind == ReductionKind::Jump) {
+        // At its first occurrence.
+        const int field = slots.jump_field[r];
+        value = std::numeric_limits<double>::quiet_NaN();
+        for (const JumpRecord& jump : jumps) {
+          if (!names_jump(reduction.argument, jump)) continue;
+          if (field < 0) {
+            value = field == -2 ? jump.kinetic_energy_before : jump.kinetic_energy_after;
+          } else if (static_cast<std::size_t>(field / 6) < jump.reaction_impulses.size()) {
+            const JointReaction& impulse =
+                jump.reaction_impulses[static_cast<std::size_t>(field / 6)];
+            value = field % 6 < 3 ? impulse.F_W(field % 6) : impulse.M_J_W(field % 6 - 3);
+          }
+          break;
+        }
         continue;
       }
       if (!reduction.over_events()) {

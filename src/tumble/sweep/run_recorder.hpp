@@ -48,6 +48,7 @@ class RunRecorder {
     std::unique_ptr<std::vector<double>> values;  // what the expression reads, __r0, __r1, ...
     std::vector<Reduction> reductions;
     std::vector<std::size_t> row_reduction;  // for reductions over rows
+    std::vector<int> jump_field;             // for jump(): which number of the jump (jump_field)
   };
   std::vector<OutcomeSlots> outcomes_;
 };

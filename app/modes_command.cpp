@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "tumble/modes/mode_shape_rows.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 #include "tumble/output/atomic_file.hpp"
 

@@ -2,14 +2,21 @@
 // One input of the fuzz target (fuzz/scenario_fuzz.cpp), as the target reads it and as
 // tests/fuzz_regression_test.cpp replays the inputs found so far: the bytes are read as a scenario
 // and, if valid, built into the model a run would use (its `events:` conditions compiled against
-// the columns). If the first line is a YAML comment, its text is also read as a sweep's `--record
-// NAME=REDUCTION` and compiled against the same columns, as `tumble sweep` does before its first
-// run. A refusal is a ScenarioError (thrown) or a record refused with std::invalid_argument
-// (caught here, as `tumble sweep` turns it into exit 2); anything else escaping is a finding.
+// the columns), and linearised as `tumble modes` and Python's tumble.modes do. Comment lines at
+// the top carry what the command line and Python add to a scenario: the first, if it is not a
+// `set` line, is read as a sweep's `--record NAME=REDUCTION` (Python's `record=`) and compiled
+// against the same columns, as `tumble sweep` does before its first run; each `# set NAME=VALUE`
+// line is an override (`--set`, Python's `set=`) applied as the scenario is read. A refusal is a
+// ScenarioError (thrown), an override or a record refused with std::invalid_argument (caught
+// here, as the command line turns it into exit 2), or a state with no linearisation (NotSteady,
+// caught here: `tumble modes` exits 6); anything else escaping is a finding.
+#include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "tumble/modes/scenario_modes.hpp"
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "tumble/sweep/outcome.hpp"
@@ -17,19 +24,50 @@
 
 namespace tumble::fuzzing {
 
-// "# x=max(prism.w3)" -> "x=max(prism.w3)"; empty when the first line is no comment.
-inline std::string first_comment(const std::string& text) {
-  if (text.rfind('#', 0) != 0) return {};
-  const std::string line = text.substr(1, text.find('\n') - 1);
-  const std::size_t start = line.find_first_not_of(' ');
-  return start == std::string::npos ? std::string() : line.substr(start);
+// The comment lines at the top, without their "#" and leading blanks.
+inline std::vector<std::string> top_comments(const std::string& text) {
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at < text.size() && text[at] == '#';) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string line = text.substr(at + 1, end - at - 1);
+    const std::size_t start = line.find_first_not_of(' ');
+    lines.push_back(start == std::string::npos ? std::string() : line.substr(start));
+    at = end + 1;
+  }
+  return lines;
 }
 
 // Throws ScenarioError where the scenario is refused.
 inline void read_input(const std::string& text, const std::string& name) {
-  const Scenario scenario = load_scenario_text(text, name, {});
+  std::string record;
+  std::vector<ParameterOverride> sets;
+  const std::vector<std::string> comments = top_comments(text);
+  for (std::size_t i = 0; i < comments.size(); ++i) {
+    const std::string& line = comments[i];
+    if (line.rfind("set ", 0) == 0) {
+      const std::size_t eq = line.find('=');
+      // As the command line splits --set NAME=VALUE (a line without '=' sets nothing).
+      if (eq != std::string::npos) sets.push_back({line.substr(4, eq - 4), line.substr(eq + 1)});
+    } else if (i == 0) {
+      record = line;
+    }
+  }
+  std::optional<Scenario> read;
+  try {
+    read = load_scenario_text(text, name, sets);
+  } catch (const std::invalid_argument&) {
+    // An override refused (a name that is no parameter): `--set` exits 2, Python raises
+    // ValueError. Without overrides nothing may throw it.
+    if (sets.empty()) throw;
+    return;
+  }
+  const Scenario& scenario = *read;
   const auto model = build_simulation_model(scenario);
-  const std::string record = first_comment(text);
+  try {
+    (void)modes_of_scenario(scenario);
+  } catch (const NotSteady&) {
+    // No linearisation: `tumble modes` says why and exits 6.
+  }
   if (record.empty()) return;
   try {
     const std::vector<Outcome> outcomes = {parse_record(record)};

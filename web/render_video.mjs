@@ -226,6 +226,17 @@ async function main() {
   // stopped while it starts may not remove its own.
   const scratch = mkdtempSync(join(tmpdir(), 'tumble-video-'));
   process.env.TMPDIR = scratch;
+  // Chromium's helper processes may still be ending, and writing into its profile, when close()
+  // has returned: a directory that gains a file while it is removed is not empty at its rmdir
+  // (ENOTEMPTY), so the removal tries again for a while instead of leaving it (or throwing from a
+  // signal's handler, before the exit).
+  const removeScratch = () => {
+    try {
+      rmSync(scratch, { recursive: true, force: true, maxRetries: 20, retryDelay: 50 });
+    } catch (e) {
+      console.error(`render_video: could not remove ${scratch}: ${e.message}`);
+    }
+  };
   // Stopped: the browser is closed before exiting (at most 5 s), since Chromium killed with us
   // would leave its temporary profile directory behind; then the partial video goes.
   let abandoning = false;
@@ -241,7 +252,7 @@ async function main() {
     })();
     await Promise.race([closing, pause(5000)]);
     rmSync(partial, { force: true });
-    rmSync(scratch, { recursive: true, force: true });
+    removeScratch();
     process.exit(status);
   };
   // `on`, not `once`: Ctrl-C reaches this process twice, from the terminal and from tumble.
@@ -259,7 +270,7 @@ async function main() {
     held.encoder?.child.kill('SIGKILL');
     await held.browser?.close().catch(() => {});
     rmSync(partial, { force: true });
-    rmSync(scratch, { recursive: true, force: true });
+    removeScratch();
   }
 }
 

@@ -35,15 +35,15 @@ std::optional<double> flag_number(const std::string& text) {
   return value;
 }
 
-// CLI11 takes any double it can read (nan, inf, a width of -1) and wraps an unsigned integer
-// (--seed -1 becomes 2^64 - 1): these check the text first, and their message follows the flag's
-// name: "--tol: 0 is out of range: expected a finite number > 0 (...)".
 // sweep's and find's --max-steps.
 constexpr const char* kMaxStepsHelp =
     "Each run's budget of accepted steps, in place of the scenario's simulate.max_steps: a run "
     "that needs more stops there and fails (sweep: a 'failed' row; find: exit 4, naming the "
     "value)";
 
+// CLI11 takes any double it can read (nan, inf, a width of -1) and wraps an unsigned integer
+// (--seed -1 becomes 2^64 - 1): these check the text first, and their message follows the flag's
+// name: "--tol: 0 is out of range: expected a finite number > 0 (...)".
 CLI::Validator finite_number(const std::string& range, bool positive) {
   return CLI::Validator(
       [range, positive](const std::string& text) {

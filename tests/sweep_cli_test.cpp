@@ -330,7 +330,7 @@ TEST(FindCommand, PrintsTheBracketAndTheRuns) {
 }
 
 // --max-steps: the prism needs about 170 dop853 steps to t = 20 s; with a budget of 10 each run
-// stops at its eleventh step and fails, naming the budget. A sweep writes the failed rows and
+// stops after its tenth step and fails, naming the budget. A sweep writes the failed rows and
 // exits 0; a search cannot bisect on a failed run, so it ends with exit 4 at the value it was at.
 TEST(SweepCommand, APerRunBudgetOfStepsMakesFailedRowsAndEndsAFind) {
   const auto dir = test::fresh_test_dir("SweepCommand", "max_steps");

@@ -53,7 +53,6 @@ struct ContactStatus {
   Mat3 anchor_R_WB = Mat3::Identity();
 };
 
-// A contact's mode change or impact, for the summary.
 // What an impact did, at full precision (the event's text rounds it).
 struct ContactImpactNumbers {
   double kinetic_energy_before = 0.0, kinetic_energy_after = 0.0;  // J, the whole system's
@@ -62,6 +61,7 @@ struct ContactImpactNumbers {
   Vec3 impulse_W = Vec3::Zero();  // N s: what the plane gave the body, world
 };
 
+// A contact's mode change or impact, for the summary and the events CSV.
 struct ContactEventRecord {
   double t = 0.0;
   std::size_t contact = 0;

@@ -221,7 +221,6 @@ class ContactSystem {
   // 1/m, a row's response is round-off (solve_contact_system).
   bool any_held_ = false;
   double least_response_ = 0.0;
-
   // This run's scratch, written by const evaluations: a run serves one thread at a time.
   std::unique_ptr<ContactData> data_;
   ContactData& d_;  // *data_

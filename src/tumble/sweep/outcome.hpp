@@ -16,6 +16,7 @@
 //     largest real part of the eigenvalues (1/s), the lowest natural frequency among the modes
 //     that oscillate without growing (rad/s; nan if none). An outcome of these alone needs no
 //     integration.
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,7 +41,8 @@ struct Reduction {
 struct ModesOutcome {
   double stable = 0.0, unstable = 0.0;  // 1 or 0: the verdict
   double growth_rate = 0.0;             // max Re lambda, 1/s
-  double frequency = 0.0;               // the lowest oscillating mode's |lambda|, rad/s; or nan
+  // The lowest |lambda| of the modes that oscillate without growing, rad/s; nan if none.
+  double frequency = std::numeric_limits<double>::quiet_NaN();
   double value(const std::string& what) const;  // by the name after "modes."
 };
 

@@ -142,12 +142,13 @@ std::string event_problem(const std::string& event, const Scenario& scenario) {
   return "no contact, event, impulse, lock or motor is named " + source;
 }
 
-// What of a jump `field` names (jump(JUMP, FIELD)): -2 and -1 for its kinetic energy before and
-// after, else 6 j + k for joint j's reaction impulse component k (Fx Fy Fz Mx My Mz); throws
-// std::invalid_argument for a field that is none of them.
-int jump_field(const std::string& field, std::span<const std::string> joints) {
-  if (field == "KE_before") return -2;
-  if (field == "KE_after") return -1;
+}  // namespace
+
+// Throws std::invalid_argument for a field that names none of them.
+RunRecorder::JumpField RunRecorder::jump_field(const std::string& field,
+                                               std::span<const std::string> joints) {
+  if (field == "KE_before") return {JumpField::What::KineticEnergyBefore, 0, 0};
+  if (field == "KE_after") return {JumpField::What::KineticEnergyAfter, 0, 0};
   static constexpr std::string_view kComponents[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
   const auto dot = field.rfind('.');
   if (dot != std::string::npos) {
@@ -155,7 +156,8 @@ int jump_field(const std::string& field, std::span<const std::string> joints) {
     const auto component = std::find(std::begin(kComponents), std::end(kComponents),
                                      std::string_view(field).substr(dot + 1));
     if (joint != joints.end() && component != std::end(kComponents)) {
-      return static_cast<int>(6 * (joint - joints.begin()) + (component - std::begin(kComponents)));
+      return {JumpField::What::ReactionImpulse, static_cast<std::size_t>(joint - joints.begin()),
+              static_cast<int>(component - std::begin(kComponents))};
     }
   }
   throw std::invalid_argument(fmt::format(
@@ -163,8 +165,6 @@ int jump_field(const std::string& field, std::span<const std::string> joints) {
       "impulse; the joints are {}), not '{}'",
       joints.empty() ? std::string("none") : fmt::format("{}", fmt::join(joints, ", ")), field));
 }
-
-}  // namespace
 
 RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& layout,
                          const Scenario& scenario)
@@ -191,7 +191,7 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
                               : "expected impulse.NAME, lock.NAME or motor.NAME";
         if (why.empty()) {
           try {
-            slots.jump_field.resize(outcome.reductions.size(), 0);
+            slots.jump_field.resize(outcome.reductions.size());
             slots.jump_field[r] = jump_field(reduction.field, layout.joints);
             slots.row_reduction.push_back(0);
             continue;
@@ -288,16 +288,18 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
       }
       if (reduction.kind == ReductionKind::Jump) {
         // At its first occurrence.
-        const int field = slots.jump_field[r];
+        const JumpField& field = slots.jump_field[r];
         value = std::numeric_limits<double>::quiet_NaN();
         for (const JumpRecord& jump : jumps) {
           if (!names_jump(reduction.argument, jump)) continue;
-          if (field < 0) {
-            value = field == -2 ? jump.kinetic_energy_before : jump.kinetic_energy_after;
-          } else if (static_cast<std::size_t>(field / 6) < jump.reaction_impulses.size()) {
-            const JointReaction& impulse =
-                jump.reaction_impulses[static_cast<std::size_t>(field / 6)];
-            value = field % 6 < 3 ? impulse.F_W(field % 6) : impulse.M_J_W(field % 6 - 3);
+          if (field.what == JumpField::What::KineticEnergyBefore) {
+            value = jump.kinetic_energy_before;
+          } else if (field.what == JumpField::What::KineticEnergyAfter) {
+            value = jump.kinetic_energy_after;
+          } else if (field.joint < jump.reaction_impulses.size()) {
+            const JointReaction& impulse = jump.reaction_impulses[field.joint];
+            value = field.component < 3 ? impulse.F_W(field.component)
+                                        : impulse.M_J_W(field.component - 3);
           }
           break;
         }

@@ -38,6 +38,14 @@ class RunRecorder {
 
  private:
   struct RowReduction;
+  // What jump(JUMP, FIELD) reads of the jump: its kinetic energy before or after, or a component
+  // of a joint's reaction impulse.
+  struct JumpField {
+    enum class What { KineticEnergyBefore, KineticEnergyAfter, ReactionImpulse } what{};
+    std::size_t joint = 0;  // ReactionImpulse: the joint (Model::joints order)
+    int component = 0;      // ReactionImpulse: 0..2 the force's x y z, 3..5 the moment's
+  };
+  static JumpField jump_field(const std::string& field, std::span<const std::string> joints);
   ColumnLayout layout_;
   RowVariables row_;  // the columns the reductions read, and the run's parameters
   std::vector<std::unique_ptr<RowReduction>> row_reductions_;
@@ -48,7 +56,7 @@ class RunRecorder {
     std::unique_ptr<std::vector<double>> values;  // what the expression reads, __r0, __r1, ...
     std::vector<Reduction> reductions;
     std::vector<std::size_t> row_reduction;  // for reductions over rows
-    std::vector<int> jump_field;             // for jump(): which number of the jump (jump_field)
+    std::vector<JumpField> jump_field;       // for jump(): what it reads of the jump
   };
   std::vector<OutcomeSlots> outcomes_;
 };

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <condition_variable>
 #include <exception>
-#include <limits>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -26,7 +25,6 @@ ModesOutcome modes_outcome(const ModalAnalysis& analysis) {
   ModesOutcome out;
   out.stable = analysis.verdict == ModalAnalysis::Verdict::Stable ? 1.0 : 0.0;
   out.unstable = analysis.verdict == ModalAnalysis::Verdict::Unstable ? 1.0 : 0.0;
-  out.frequency = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < analysis.modes.size(); ++i) {
     const Mode& mode = analysis.modes[i];
     out.growth_rate = i == 0 ? mode.growth_rate : std::max(out.growth_rate, mode.growth_rate);

@@ -13,7 +13,9 @@
 // else, with one line on stderr saying why.
 import { spawn } from 'node:child_process';
 import { once } from 'node:events';
-import { existsSync, mkdtempSync, renameSync, rmSync, statSync } from 'node:fs';
+import {
+  existsSync, mkdtempSync, readdirSync, readFileSync, renameSync, rmSync, statSync,
+} from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -102,6 +104,7 @@ async function startEncoder(args, partial) {
   exited.then((r) => { ended = r; });
   return {
     child,
+    exited,
     async write(png) {
       if (ended) throw new Failure(why(ended));
       if (child.stdin.write(png)) return;
@@ -116,6 +119,74 @@ async function startEncoder(args, partial) {
       if (r.code !== 0) throw new Failure(why(r));
     },
   };
+}
+
+// Chromium's processes for this render, by their process groups. Playwright starts the browser as
+// the leader of a group of its own, which its helpers (zygote, renderers, GPU process, crash
+// handler) join; the browser is found by its command line, whose --user-data-dir is in SCRATCH.
+// Linux's /proc; elsewhere nothing is found and the browser is left to Playwright alone.
+function processIds() {
+  try {
+    return readdirSync('/proc').filter((name) => /^[0-9]+$/.test(name));
+  } catch {
+    return [];
+  }
+}
+
+// A process's state letter and group from /proc/PID/stat ("PID (COMM) STATE PPID PGRP ..."; COMM
+// may hold spaces and parentheses, so the fields are counted from its last ')').
+function processStat(pid) {
+  try {
+    const stat = readFileSync(`/proc/${pid}/stat`, 'latin1');
+    const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+    return { state: fields[0], group: Number(fields[2]) };
+  } catch {
+    return null;  // gone
+  }
+}
+
+function browserGroups(scratch, groups) {
+  const own = processStat(process.pid)?.group;
+  for (const pid of processIds()) {
+    let commandLine;
+    try {
+      commandLine = readFileSync(`/proc/${pid}/cmdline`, 'latin1');
+    } catch {
+      continue;
+    }
+    if (!commandLine.includes(`${scratch}/`)) continue;
+    const group = processStat(pid)?.group;
+    if (group > 1 && group !== own) groups.add(group);
+  }
+  return groups;
+}
+
+// Processes of GROUPS still running (a zombie writes nothing, and one whose parent is gone may
+// never be reaped in a container whose init does not reap).
+function runningIn(groups) {
+  return processIds().filter((pid) => {
+    const stat = processStat(pid);
+    return stat && groups.has(stat.group) && stat.state !== 'Z' && stat.state !== 'X';
+  }).length;
+}
+
+// Ends whatever of the browser still runs and waits until none of it does (at most 10 s), so that
+// nothing writes into SCRATCH once it is removed: a helper still ending after the browser's
+// close(), or a browser whose close timed out, would otherwise recreate its profile there.
+async function endBrowser(scratch, groups) {
+  const deadline = Date.now() + 10000;
+  for (;;) {
+    browserGroups(scratch, groups);
+    if (runningIn(groups) === 0 || Date.now() > deadline) return;
+    for (const group of groups) {
+      try {
+        process.kill(-group, 'SIGKILL');
+      } catch {
+        // already gone
+      }
+    }
+    await new Promise((done) => setTimeout(done, 20));
+  }
 }
 
 async function render(args, partial, held) {
@@ -141,6 +212,7 @@ async function render(args, partial, held) {
       '--disable-frame-rate-limit', '--disable-gpu-vsync'],
   });
   const browser = held.browser = await held.launching;
+  browserGroups(held.scratch, held.groups);  // known while it runs: its helpers may outlive it
   const context = await browser.newContext({
     viewport: { width: args.width, height: args.height }, deviceScaleFactor: 1,
   });
@@ -220,42 +292,43 @@ async function main() {
   }
   // Beside OUTPUT, so that the rename stays on one file system and is atomic.
   const partial = `${args.output}.partial-${process.pid}`;
-  const held = {};
   // Playwright's and Chromium's temporary files (the profile, artifacts, Chromium's own scoped
   // directories) all go in one directory of ours, removed however the render ends: a browser
   // stopped while it starts may not remove its own.
   const scratch = mkdtempSync(join(tmpdir(), 'tumble-video-'));
   process.env.TMPDIR = scratch;
-  // Chromium's helper processes may still be ending, and writing into its profile, when close()
-  // has returned: a directory that gains a file while it is removed is not empty at its rmdir
-  // (ENOTEMPTY), so the removal tries again for a while instead of leaving it (or throwing from a
-  // signal's handler, before the exit).
-  const removeScratch = () => {
-    try {
-      rmSync(scratch, { recursive: true, force: true, maxRetries: 20, retryDelay: 50 });
-    } catch (e) {
-      console.error(`render_video: could not remove ${scratch}: ${e.message}`);
-    }
-  };
-  // Stopped: the browser is closed before exiting (at most 5 s), since Chromium killed with us
-  // would leave its temporary profile directory behind; then the partial video goes.
-  let abandoning = false;
-  const abandon = async (status) => {
-    if (abandoning) return;
-    abandoning = true;
+  const held = { scratch, groups: new Set() };
+  // The browser is closed (at most 5 s), then whatever of it still runs is killed and waited for;
+  // only then do the scratch directory and the partial video go. A removal may still meet a file
+  // being written by a process just ending (ENOTEMPTY at its rmdir): it tries again for a while,
+  // and a failure is reported, not thrown (from a signal's handler, before the exit). Once only:
+  // a signal during the clean-up of a render that ended waits for the same one.
+  let cleaning = null;
+  const cleanUp = () => (cleaning ??= (async () => {
     held.encoder?.child.kill('SIGKILL');
-    const pause = (ms) => new Promise((done) => setTimeout(done, ms).unref());
     // A browser still starting (a signal soon after the launch began) is closed once it runs.
     const closing = (async () => {
       const browser = held.browser ?? await held.launching?.catch(() => undefined);
       await browser?.close().catch(() => {});
     })();
-    await Promise.race([closing, pause(5000)]);
+    let timer;
+    await Promise.race([closing, new Promise((done) => { timer = setTimeout(done, 5000); })]);
+    clearTimeout(timer);
+    await endBrowser(scratch, held.groups);
+    await held.encoder?.exited;  // killed above: gone at once, and then writes nothing more
     rmSync(partial, { force: true });
-    removeScratch();
+    try {
+      rmSync(scratch, { recursive: true, force: true, maxRetries: 20, retryDelay: 50 });
+    } catch (e) {
+      console.error(`render_video: could not remove ${scratch}: ${e.message}`);
+    }
+  })());
+  // Stopped: the clean-up, then the exit status of the signal. `on`, not `once`: Ctrl-C reaches
+  // this process twice, from the terminal and from tumble.
+  const abandon = async (status) => {
+    await cleanUp();
     process.exit(status);
   };
-  // `on`, not `once`: Ctrl-C reaches this process twice, from the terminal and from tumble.
   process.on('SIGINT', () => abandon(130));
   process.on('SIGTERM', () => abandon(143));
   process.on('SIGHUP', () => abandon(129));
@@ -267,10 +340,7 @@ async function main() {
     console.error(`render_video: ${message}`);
     return 1;
   } finally {
-    held.encoder?.child.kill('SIGKILL');
-    await held.browser?.close().catch(() => {});
-    rmSync(partial, { force: true });
-    removeScratch();
+    await cleanUp();
   }
 }
 

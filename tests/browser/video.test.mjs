@@ -163,6 +163,7 @@ test('SIGTERM while the video renders ends tumble by the signal and leaves nothi
   child.kill('SIGTERM');
   const { code, signal } = await ended;
   assert.equal(signal, 'SIGTERM', `exit status ${code} instead of the signal`);
-  assert.deepEqual(readdirSync(scratch), [], 'Chromium\'s or tumble\'s temporary files were left');
+  assert.deepEqual(readdirSync(scratch, { recursive: true }), [],
+    'Chromium\'s or tumble\'s temporary files were left');
   assert.deepEqual(readdirSync(out).sort(), ['spinning_projectile.csv', 'tmp']);
 });

@@ -23,7 +23,7 @@ class ProcessGroup {
 
  private:
   int rank_ = 0, size_ = 1, local_size_ = 1;
-  bool started_mpi_ = false;
+  [[maybe_unused]] bool started_mpi_ = false;  // read only in a build with MPI
 };
 
 }  // namespace tumble::cli

@@ -12,15 +12,14 @@ set -euo pipefail
 seconds=${1:-60}
 seed=${SEED:-1}
 cd "$(dirname "$0")/.."
-# Line tables only (-g1): a finding's stack names file and line, at less compile time than -g.
-CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
-  -DTUMBLE_FUZZ=ON -DTUMBLE_BUILD_TESTS=OFF -DTUMBLE_BUILD_BENCH=OFF >/dev/null
-cmake --build build/fuzz -j "$(nproc)" --target tumble_scenario_fuzz
+# On the sanitizer build's library (scripts/build.sh sanitize: clang, ASan and UBSan, -O1, line
+# tables), which the tests' sanitizer run builds too; the corpus and findings are kept apart in
+# build/fuzz/.
+bash scripts/build.sh sanitize tumble_scenario_fuzz
 corpus=build/fuzz/corpus
 mkdir -p "$corpus"
 cp examples/*.yaml tests/data/fuzz/*.yaml "$corpus"/ 2>/dev/null || true
 ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
-  build/fuzz/fuzz/tumble_scenario_fuzz "$corpus" -max_total_time="$seconds" -timeout=1 \
+  build/sanitize/fuzz/tumble_scenario_fuzz "$corpus" -max_total_time="$seconds" -timeout=1 \
   -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix=build/fuzz/ \
   -seed="$seed"

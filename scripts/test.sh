@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: formatting, the Release suite (with the Python module's
 # pytest suite), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (but for a few
-# long integrations), the runs that share a model on threads under ThreadSanitizer, a minute of
-# fuzzing the scenario reader, the main example end to end, the Python package as installed, and
+# long integrations), the runs that share a model on threads under ThreadSanitizer (both built by
+# clang), a minute of fuzzing the scenario reader (on the sanitizer build's library), the main
+# example end to end, the Python package as installed, and
 # the animation page and its videos (`tumble run --video`, checked with ffprobe) in headless
 # Chromium.
 set -euo pipefail

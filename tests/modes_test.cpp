@@ -16,6 +16,8 @@
 #include "modes_checks.hpp"
 #include "run_tumble.hpp"
 #include "test_files.hpp"
+#include "tumble/math/rotation.hpp"
+#include "tumble/modes/mode_shape_rows.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 #include "tumble/multibody/articulated_formulation.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
@@ -75,6 +77,36 @@ TEST(Modes, InvertedMastFallsBelowTheCriticalStiffness) {
   const ScenarioModes critical = modes_of(example("modes/inverted_mast.yaml"), {{"k_ratio", "1"}});
   EXPECT_EQ(critical.analysis.verdict, ModalAnalysis::Verdict::Marginal);
   EXPECT_NE(critical.analysis.verdict_text.find("base.angle"), std::string::npos);
+}
+
+// The animation page's rows of the mast's mode (tumble modes --animate): the angle swings to
+// 0.2 rad and the rate moves with it, as the undamped mode theta = 0.2 cos(omega t + phi) has it:
+// theta^2 + (theta_dot / omega)^2 = 0.2^2 at every row (the eigenvalue is i omega to ~1e-12; the
+// angle is read back through log_so3, ~1e-16), and the KE is (1/2) I_O theta_dot^2. The rows'
+// speeds were the initial state's (zero) before: omega and KE plotted flat.
+TEST(ModesPage, TheMastsRowsSwingItsRateWithItsAngle) {
+  const ScenarioModes modes = modes_of(example("modes/inverted_mast.yaml"));
+  const double omega = std::sqrt(Mast::critical / Mast::I_O);  // k = 2 M g length / 2
+  std::vector<ShownMode> shown;
+  const RecordedTrajectory rows = mode_shape_rows(modes, Mast::length, shown);
+  ASSERT_EQ(shown.size(), 1U);
+  ASSERT_GT(rows.rows(), 100U);
+  std::vector<double> angle(rows.rows()), rate(rows.rows());
+  for (std::size_t r = 0; r < rows.rows(); ++r) {
+    const BodyState& mast = rows.state(r, 0);
+    angle[r] = log_so3(mast.R_WB).y();  // R0 = I: the hinge turns it about world y
+    rate[r] = mast.omega_W.y();
+    EXPECT_NEAR(angle[r] * angle[r] + rate[r] * rate[r] / (omega * omega), 0.04, 1e-12)
+        << "row " << r;
+    EXPECT_NEAR(rows.quantities(r).kinetic_energy, 0.5 * Mast::I_O * rate[r] * rate[r],
+                1e-12 * Mast::I_O * 0.04 * omega * omega);
+  }
+  // And it is the angle's rate, in the rows' time: the rate has the sign of the angle's change.
+  for (std::size_t r = 1; r + 1 < rows.rows(); ++r) {
+    if (std::abs(rate[r]) > 0.05 * omega) {
+      EXPECT_GT(rate[r] * (angle[r + 1] - angle[r - 1]), 0.0) << "row " << r;
+    }
+  }
 }
 
 TEST(Modes, DampedMastDecaysWithItsDampingRatio) {

@@ -32,6 +32,7 @@
 // A rotation's coordinates are a small turn r about the body's axes, R = R0 exp([r]x), taken to
 // first order (joint_kind_of.hpp, `turned`): evaluate only at z = 0 for that reason.
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,9 @@ class ModalEquations {
   // The rates of z while the state turns along `symmetry` at unit rate.
   template <typename Scalar>
   VecXOf<Scalar> symmetry_field(const Symmetry& symmetry, const VecXOf<Scalar>& z) const;
+  // The bodies' states at z (world, one per body in the scenario's order): where z puts them
+  // and how fast it moves them (a mode shape's configuration and motion, for the animation page).
+  void calc_body_states(const VecX& z, std::span<BodyState> states) const;
 
  private:
   // Where tree joint k is in the linearisation at z.

@@ -5,7 +5,7 @@
 #include <complex>
 #include <numbers>
 
-#include "tumble/multibody/articulated_formulation.hpp"
+#include "tumble/modes/modal_equations.hpp"
 
 namespace tumble {
 
@@ -15,7 +15,6 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
   const ArticulatedModel& model = eq.model();
   const ModalLayout& layout = eq.layout();
   const Linearisation& lin = modes.linearisation;
-  const ArticulatedFormulation formulation(eq.shared_model());
   RecordedTrajectory rows(model.body_count());
   std::vector<BodyState> states(model.body_count());
   shown.clear();
@@ -56,11 +55,11 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
       const double phase = 2.0 * std::numbers::pi * row / kRowsPerCycle;
       const std::complex<double> swing =
           oscillates ? std::exp(std::complex<double>(0.0, phase)) : std::sin(phase);
-      VecX z = VecX::Zero(layout.size());
-      for (Eigen::Index i = 0; i < layout.position_count; ++i) {
-        z(i) = scale * (shape(i) * swing).real();
-      }
-      formulation.unpack_all(displace_positions(model, layout, eq.y0(), z), states);
+      // Positions and speeds alike, so that the rows' speeds, angular velocities and KE move with
+      // the shape instead of staying at y0's.
+      VecX z(layout.size());
+      for (Eigen::Index i = 0; i < layout.size(); ++i) z(i) = scale * (shape(i) * swing).real();
+      eq.calc_body_states(z, states);
       rows.record(t + cycle * row / kRowsPerCycle, states,
                   calc_system_quantities(model.model.bodies, states, model.model.gravity_W));
     }

@@ -10,7 +10,10 @@ namespace tumble {
 // Each mode that moves, one after the other, for three cycles (three periods; a real mode swings
 // its shape over 2 s cycles), about the initial configuration; the largest turn in a shape is
 // 0.2 rad, the largest displacement a tenth of `size` (m). A mode without positions (a free
-// body's spin) moves its positions by speed / lambda, the motion its speeds make. Neutral modes
+// body's spin) moves its positions by speed / lambda, the motion its speeds make. The speeds
+// move with the shape's speeds on the same scale: for a mode that oscillates without damping,
+// the motion it makes (the rates are the positions' derivatives); for a real mode, swung back and
+// forth, the speeds it has at each displacement (lambda times it). Neutral modes
 // and shapes that move nothing are not shown; `shown` gets, for each mode shown, its index in
 // ModalAnalysis::modes and the time its cycles start.
 struct ShownMode {

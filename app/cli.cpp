@@ -236,10 +236,11 @@ int run_cli(int argc, const char* const* argv) {
       "CONTACT.KIND, event.NAME, impulse.NAME, lock.NAME, motor.NAME), first(CONDITION), "
       "count(CONDITION) (CONDITION: a comparison of columns, e.g. prism.w3 < 0), each of one "
       "argument; jump(JUMP, FIELD) (JUMP: impulse.NAME, lock.NAME, motor.NAME; FIELD: KE_before, "
-      "KE_after or a joint's reaction impulse JOINT.Fx ... JOINT.Mz); and what tumble modes says "
-      "of the initial state: modes.stable, "
-      "modes.unstable, modes.growth_rate, modes.frequency. Expressions only read: = "
-      "(assignment) is refused, == compares; repeatable");
+      "KE_after or a joint's reaction impulse JOINT.Fx ... JOINT.Mz); after(EVENT, X): X just "
+      "after EVENT's first occurrence (e.g. after(floor.rolls, disk.vx)); and what tumble modes "
+      "says of the initial state: modes.stable, modes.unstable, modes.growth_rate, "
+      "modes.frequency. Expressions only read: = (assignment) is refused, == compares; "
+      "repeatable");
   sweep->add_option("--set", sweep_args.sets, "Fix a parameter for every run: NAME=VALUE");
   sweep
       ->add_option("--threads", sweep_args.threads,

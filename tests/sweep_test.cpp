@@ -178,6 +178,58 @@ TEST(SweepReductions, AJumpsReactionImpulseAndEnergiesAgainstTheBatsClosedForms)
   }
 }
 
+// after(EVENT, X) reads X in the state just after EVENT's first occurrence, against three closed
+// forms: the bat's COM after the blow moves at w L = P d L / I_O; the chapter's disk thrown with
+// backspin keeps its angular momentum about the contact line (friction and the normal force act
+// there), M R vx + I wy, so once its slip stops it rolls at vx = (2 v0 - R w0) / 3; a ball dropped
+// from h leaves its first impact at vz = e sqrt(2 g h). An event the scenario cannot have, or no
+// expression, is refused with the text.
+TEST(SweepReductions, AfterAnEventReadsTheStateItLeaves) {
+  {
+    const double M = 0.9, length = 0.84, r = 0.03, L = length / 2, P = 1.5;
+    const double I_O = M * (3 * r * r + length * length) / 12 + M * L * L;
+    const SweepSpec spec =
+        spec_for(test::read_file(test::example("bat_struck.yaml")), {"d"},
+                 {"v=after(impulse.ball, bat.speed)", "never=after(knob.lock, t)"});
+    SweepRunner runner(spec);
+    const RunRecord rec = runner.run(std::vector<double>{0.5});
+    ASSERT_EQ(rec.status, RunStatus::Invalid) << "the bat has no lock: " << rec.message;
+    EXPECT_NE(rec.message.find("after(knob.lock, t)"), std::string::npos) << rec.message;
+    const SweepSpec good = spec_for(test::read_file(test::example("bat_struck.yaml")), {"d"},
+                                    {"v=after(impulse.ball, bat.speed)"});
+    SweepRunner bat(good);
+    for (const double d : {0.3, 0.8}) {
+      const RunRecord hit = bat.run(std::vector<double>{d});
+      ASSERT_EQ(hit.status, RunStatus::Ok) << hit.message;
+      // The jump is exact (one linear solve): round-off.
+      EXPECT_NEAR(hit.values[0], P * d * L / I_O, 1e-12 * P / M) << d;
+    }
+  }
+  {
+    const double v0 = 2, R = 0.1, w0 = 60, rtol = 1e-10;
+    const SweepSpec spec = spec_for(test::read_file(test::example("backspin_disk.yaml")), {"v0"},
+                                    {"v=after(floor.rolls, disk.vx)", "t=first(floor.rolls)"});
+    SweepRunner runner(spec);
+    const RunRecord rec = runner.run(std::vector<double>{v0});
+    ASSERT_EQ(rec.status, RunStatus::Ok) << rec.message;
+    EXPECT_GT(rec.values[1], 1.0);  // not the start's "slides"
+    // The slide's speeds are integrated to rtol and its end located to it: 10 rtol of v0.
+    EXPECT_NEAR(rec.values[0], (2 * v0 - R * w0) / 3, 10 * rtol * v0);
+  }
+  {
+    const double h = 1, e = 0.75, rtol = 1e-10;
+    const SweepSpec spec = spec_for(test::read_file(test::example("bouncing_ball.yaml")), {"h"},
+                                    {"up=after(floor.impact, ball.vz)"});
+    SweepRunner runner(spec);
+    const RunRecord rec = runner.run(std::vector<double>{h});
+    ASSERT_EQ(rec.status, RunStatus::Ok) << rec.message;
+    // The fall of the spinning ball is integrated, and its touchdown located, to rtol (events.csv's
+    // approach speed is 1e-11 off sqrt(2 g h) in this example); the impact law is exact: 10 rtol.
+    EXPECT_NEAR(rec.values[0], e * std::sqrt(2 * kG * h), 10 * rtol * std::sqrt(2 * kG * h));
+  }
+  EXPECT_THROW(parse_record("x=after(floor.rolls)"), std::invalid_argument);
+}
+
 TEST(SweepPoints, GridOrderEndsAndRandomDraws) {
   const std::vector<VaryRange> ranges = {parse_vary("a=0:1:3", true),
                                          parse_vary("b=30 deg:pi/2:2", true)};

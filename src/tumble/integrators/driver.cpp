@@ -111,6 +111,11 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
     }
   };
 
+  // The state just after an event, a jump or a change of modes, for whoever reads it.
+  const auto event_state = [&](double t, const VecX& y) {
+    if (options.on_event_state) options.on_event_state(t, y);
+  };
+
   // The root of g_k inside the last step by the Illinois method (regula falsi that halves the
   // value kept at an end that survives twice running) on the dense output.
   auto locate = [&](std::size_t k) {
@@ -238,10 +243,14 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
           chattered = true;
           break;
         }
-        if (action == EventAction::Record) continue;
+        if (action == EventAction::Record) {
+          event_state(t_first, y_event);
+          continue;
+        }
         if (action == EventAction::Stop) {
           // The run ends with a row at the event, unless the schedule's row fell there.
           if (clock.previous() != t_first) observe(t_first, y_event);
+          event_state(t_first, y_event);
           report.t_reached = t_first;
           stopped = true;
           stopped_by_event = true;
@@ -249,6 +258,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
           system.project(t_first, y_event);
           integrator.restart(t_first, y_event);
           system.event_functions(t_first, integrator.y(), g_before);
+          event_state(t_first, integrator.y());
           restarted = true;
         }
         break;
@@ -266,6 +276,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       g_before = g_after;
       if (system.refresh_event_functions(integrator.t(), integrator.y())) {
         system.event_functions(integrator.t(), integrator.y(), g_before);
+        event_state(integrator.t(), integrator.y());
       }
     }
 
@@ -279,6 +290,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       integrator.restart(t_stop, y_break);
       emit_rows_until(t_stop);
       if (clock.every_step()) observe(t_stop, integrator.y());
+      event_state(t_stop, integrator.y());
       if (event_count > 0) {
         g_probe = g_before;  // just before the jump
         system.event_functions(t_stop, integrator.y(), g_before);

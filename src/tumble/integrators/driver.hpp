@@ -33,6 +33,11 @@ struct DriverOptions {
   // Asked after each accepted step whether to stop there (Python's Ctrl-C); empty: never. The run
   // then ends with the rows so far and IntegrationReport::interrupted.
   std::function<bool()> stop_requested;
+  // Called with the state just after each event, jump or change of the system's modes is
+  // handled (after an impact's or an impulse's jump, at its instant), for what is read "just
+  // after" an event (a sweep's after(EVENT, X)); empty: not called. y is only valid during the
+  // call. Several calls may come at one instant: the last has the state the run goes on from.
+  std::function<void(double t, const VecX& y)> on_event_state;
 };
 
 struct EventRecord {

@@ -318,18 +318,34 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     };
   }
 
+  // The states just after events: computed as a row is, into buffers of their own (the rows'
+  // planar angles run on from the last row's), only for a run that asks for them.
+  DriverOptions options = simulation.options;
+  std::vector<BodyState> event_states;
+  RowExtras event_extras;
+  if (simulation.on_event_state) {
+    event_states.resize(states.size());
+    options.on_event_state = [&](double t, const VecX& y) {
+      formulation.unpack_all(y, event_states);
+      event_extras = extras;
+      formulation.calc_row_extras(t, y, event_extras);
+      if (simulation.planar) continue_planar_angles(t, event_states, event_extras);
+      const SystemQuantities q = row_quantities(model, event_states, event_extras);
+      simulation.on_event_state(t, event_states, q, event_extras);
+    };
+  }
+
   OdeSystem& system = simulation.user_events ? static_cast<OdeSystem&>(*simulation.user_events)
                                              : static_cast<OdeSystem&>(*simulation.formulation);
   const auto start = std::chrono::steady_clock::now();
   if (from == nullptr) {
     result.report = integrate(*simulation.integrator, system, simulation.t0, simulation.y0,
-                              simulation.t_end, simulation.options, on_row, on_driver_checkpoint);
+                              simulation.t_end, options, on_row, on_driver_checkpoint);
   } else {
     simulation.formulation->set_hybrid_state(from->hybrid);
     simulation.integrator = from->driver.integrator->clone_onto(system);
-    result.report =
-        resume_integration(*simulation.integrator, system, from->driver.position, simulation.t_end,
-                           simulation.options, on_row, on_driver_checkpoint);
+    result.report = resume_integration(*simulation.integrator, system, from->driver.position,
+                                       simulation.t_end, options, on_row, on_driver_checkpoint);
   }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

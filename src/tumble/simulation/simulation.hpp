@@ -33,6 +33,13 @@ struct PreparedSimulation {
   double t0 = 0.0;
   double t_end = 0.0;
   bool planar = false;  // the rows carry each body's angle about z (RowExtras::planar_angles)
+  // Where set, handed the row of the state just after each event, jump or change of the
+  // contacts' modes (DriverOptions::on_event_state), as run_simulation's rows are: what a sweep's
+  // after(EVENT, X) reads. Several may come at one instant; the last is the state the run goes
+  // on from. These rows are not the trajectory's and are not counted in it.
+  std::function<void(double t, std::span<const BodyState> states,
+                     const SystemQuantities& quantities, const RowExtras& extras)>
+      on_event_state;
 };
 
 // One problem, built once from a scenario and then run any number of times, on any number of

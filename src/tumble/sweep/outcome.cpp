@@ -24,7 +24,8 @@ constexpr NamedReduction kReductions[] = {{"final", ReductionKind::Final},
                                           {"time_of_max", ReductionKind::TimeOfMax},
                                           {"first", ReductionKind::First},
                                           {"count", ReductionKind::Count},
-                                          {"jump", ReductionKind::Jump}};
+                                          {"jump", ReductionKind::Jump},
+                                          {"after", ReductionKind::After}};
 
 bool name_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
@@ -136,16 +137,21 @@ Outcome parse_outcome(std::string name, const std::string& text) {
               ? "an event (e.g. ball.rolls, impulse.kick) or a condition (e.g. ball.vx < 0)"
               : "a column or an expression of columns, e.g. ball.vx"));
     }
-    if (known->kind == ReductionKind::Jump) {
+    if (known->kind == ReductionKind::Jump || known->kind == ReductionKind::After) {
+      // The event's name has no comma: the first one ends it (X may hold more, atan2(a, b)).
       const auto comma = argument.find(',');
       if (top_level_arguments(argument) != 2) {
-        throw std::invalid_argument(fmt::format(
-            "'{}': jump() takes a jump and what of it, e.g. jump(impulse.ball, knob.Fx) or "
-            "jump(lock.brake, KE_after); got '{}'",
-            text, argument));
+        throw std::invalid_argument(
+            known->kind == ReductionKind::Jump
+                ? fmt::format("'{}': jump() takes a jump and what of it, e.g. jump(impulse.ball, "
+                              "knob.Fx) or jump(lock.brake, KE_after); got '{}'",
+                              text, argument)
+                : fmt::format("'{}': after() takes an event and an expression of the columns, "
+                              "e.g. after(floor.rolls, disk.vx); got '{}'",
+                              text, argument));
       }
       outcome.expression += fmt::format("__r{}", outcome.reductions.size());
-      outcome.reductions.push_back({ReductionKind::Jump,
+      outcome.reductions.push_back({known->kind,
                                     std::string(trim_blanks(argument.substr(0, comma))),
                                     std::string(trim_blanks(argument.substr(comma + 1)))});
       i = close + 1;
@@ -168,7 +174,7 @@ Outcome parse_outcome(std::string name, const std::string& text) {
     throw std::invalid_argument(
         fmt::format("'{}' names no reduction of the run: use final(X), max(X), min(X), mean(X), "
                     "time_of_max(X) of a column or expression X, first(EVENT), count(EVENT), "
-                    "jump(JUMP, FIELD), or modes.stable, modes.growth_rate, ...",
+                    "jump(JUMP, FIELD), after(EVENT, X), or modes.stable, modes.growth_rate, ...",
                     text));
   }
   return outcome;

@@ -11,6 +11,10 @@
 //   jump(JUMP, FIELD): at a jump's first occurrence (JUMP: impulse.NAME, lock.NAME, motor.NAME;
 //     nan if none), FIELD: KE_before or KE_after (J, the whole system's), or JOINT.Fx ... JOINT.Mz
 //     (the joint's reaction impulse, N s and N m s about the joint point, world: events.csv's);
+//   after(EVENT, X): X, an expression of the columns and parameters as for final(), in the state
+//     just after EVENT's first occurrence (nan if none): after an impact's or an impulse's jump,
+//     after the contacts' modes are decided again there (the rolling speed once a slip stops:
+//     after(floor.rolls, disk.vx); the rebound: after(floor.impact, ball.vz));
 //   modes.stable, modes.unstable, modes.growth_rate, modes.frequency: what `tumble modes` says of
 //     the run's initial state (modes_outcome()), with no parentheses: a verdict (1 or 0), the
 //     largest real part of the eigenvalues (1/s), the lowest natural frequency among the modes
@@ -26,14 +30,14 @@
 
 namespace tumble {
 
-enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count, Jump, Modes };
+enum class ReductionKind { Final, Max, Min, Mean, TimeOfMax, First, Count, Jump, After, Modes };
 
 struct Reduction {
   ReductionKind kind = ReductionKind::Final;
   // A row expression, an EVENT name or a CONDITION for First and Count, or for Modes what of the
   // modes ("stable", "growth_rate", ...).
   std::string argument;
-  std::string field;  // Jump: what of it (KE_before, KE_after, JOINT.Fx, ...)
+  std::string field;  // Jump: what of it (KE_before, KE_after, JOINT.Fx, ...); After: X
   bool over_events() const;
 };
 

@@ -106,6 +106,16 @@ struct RunRecorder::RowReduction {
   }
 };
 
+// after(EVENT, X): X in each state just after an event, jump or change of modes of the run (t,
+// value), in time order; finish() picks the last one at the instant of EVENT's first occurrence.
+struct RunRecorder::AfterEvent {
+  BoundExpression value;
+  std::vector<std::pair<double, double>> samples;
+
+  AfterEvent(const std::string& text, std::span<const BoundExpression::Variable> vars)
+      : value(text, vars) {}
+};
+
 namespace {
 
 // Whether the scenario can have the event `event` names; if not, why not.
@@ -140,6 +150,14 @@ std::string event_problem(const std::string& event, const Scenario& scenario) {
     return fmt::format("a contact's events are {}", fmt::join(kinds, ", "));
   }
   return "no contact, event, impulse, lock or motor is named " + source;
+}
+
+// What an expression's unknown name may be instead.
+std::string unknown_name_hint(const ExpressionError& error) {
+  return error.unknown_name().empty()
+             ? ""
+             : "; the columns are the trajectory CSV's (t, BODY.x, BODY.w1, JOINT.angle, "
+               "CONTACT.slip, E, ...) and the parameters are the scenario's";
 }
 
 }  // namespace
@@ -202,6 +220,20 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
         throw std::invalid_argument(fmt::format("{}: jump({}, {}): {}", outcome.text,
                                                 reduction.argument, reduction.field, why));
       }
+      if (reduction.kind == ReductionKind::After) {
+        if (const std::string why = event_problem(reduction.argument, scenario); !why.empty()) {
+          throw std::invalid_argument(fmt::format("{}: after({}, {}): {}", outcome.text,
+                                                  reduction.argument, reduction.field, why));
+        }
+        try {
+          after_events_.push_back(std::make_unique<AfterEvent>(reduction.field, row_variables));
+        } catch (const ExpressionError& error) {
+          throw std::invalid_argument(
+              fmt::format("{}: {}{}", outcome.text, error.what(), unknown_name_hint(error)));
+        }
+        slots.row_reduction.push_back(after_events_.size() - 1);
+        continue;
+      }
       if (reduction.over_events()) {
         if (const std::string why = event_problem(reduction.argument, scenario); !why.empty()) {
           throw std::invalid_argument(
@@ -215,12 +247,7 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
             std::make_unique<RowReduction>(reduction.kind, reduction.argument, row_variables));
       } catch (const ExpressionError& error) {
         throw std::invalid_argument(
-            fmt::format("{}: {}{}", outcome.text, error.what(),
-                        error.unknown_name().empty()
-                            ? ""
-                            : "; the columns are the trajectory CSV's (t, BODY.x, BODY.w1, "
-                              "JOINT.angle, CONTACT.slip, E, ...) and the parameters are the "
-                              "scenario's"));
+            fmt::format("{}: {}{}", outcome.text, error.what(), unknown_name_hint(error)));
       }
       slots.row_reduction.push_back(row_reductions_.size() - 1);
     }
@@ -237,6 +264,7 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
     read.push_back(&reduction->value);
     if (reduction->margin) read.push_back(reduction->margin.get());
   }
+  for (const auto& after : after_events_) read.push_back(&after->value);
   row_.read_by(read);
 }
 
@@ -265,12 +293,20 @@ void RunRecorder::start(const Scenario& scenario) {
     reduction->integral = 0.0;
     reduction->turns = 0.0;
   }
+  for (const auto& after : after_events_) after->samples.clear();
 }
 
 void RunRecorder::observe(const OutputRow& row) {
   if (row_reductions_.empty()) return;  // events only: the rows are not needed
   row_.take(row);
   for (const auto& reduction : row_reductions_) reduction->observe(row.t);
+}
+
+void RunRecorder::observe_event_state(const OutputRow& row) {
+  if (after_events_.empty()) return;
+  row_.take(row);
+  for (const auto& after : after_events_)
+    after->samples.emplace_back(row.t, after->value.evaluate());
 }
 
 std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> events,
@@ -305,7 +341,8 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
         }
         continue;
       }
-      if (!reduction.over_events()) {
+      const bool after = reduction.kind == ReductionKind::After;
+      if (!reduction.over_events() && !after) {
         value = row_reductions_[slots.row_reduction[r]]->result();
         continue;
       }
@@ -327,6 +364,15 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
         if (reduction.argument != "event." + e.name) continue;
         if (count == 0.0 || e.t < first) first = e.t;
         ++count;
+      }
+      if (after) {
+        // The last state at that instant: the one the run went on from.
+        value = std::numeric_limits<double>::quiet_NaN();
+        for (const auto& [t, x] : after_events_[slots.row_reduction[r]]->samples) {
+          if (t > first) break;
+          if (t == first) value = x;
+        }
+        continue;
       }
       value = reduction.kind == ReductionKind::First ? first : count;
     }

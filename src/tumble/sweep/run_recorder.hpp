@@ -29,6 +29,10 @@ class RunRecorder {
   // A new run of it: its parameter values, and nothing accumulated.
   void start(const Scenario& scenario);
   void observe(const OutputRow& row);
+  // Whether an outcome reads the state just after an event (after(EVENT, X)): then each run's
+  // rows of those states (PreparedSimulation::on_event_state) go to observe_event_state.
+  bool reads_event_states() const { return !after_events_.empty(); }
+  void observe_event_state(const OutputRow& row);
   // Each outcome's value, after the last row, with the run's events and, where an outcome reads
   // them, the modes of its initial state (nan without).
   std::vector<double> finish(std::span<const ContactEventRecord> events,
@@ -38,6 +42,7 @@ class RunRecorder {
 
  private:
   struct RowReduction;
+  struct AfterEvent;
   // What jump(JUMP, FIELD) reads of the jump: its kinetic energy before or after, or a component
   // of a joint's reaction impulse.
   struct JumpField {
@@ -49,13 +54,14 @@ class RunRecorder {
   ColumnLayout layout_;
   RowVariables row_;  // the columns the reductions read, and the run's parameters
   std::vector<std::unique_ptr<RowReduction>> row_reductions_;
+  std::vector<std::unique_ptr<AfterEvent>> after_events_;
   // Per outcome: its expression over its reductions' values, and where each value comes from
   // (an index into row_reductions_, or an event reduction).
   struct OutcomeSlots {
     std::unique_ptr<BoundExpression> expression;
     std::unique_ptr<std::vector<double>> values;  // what the expression reads, __r0, __r1, ...
     std::vector<Reduction> reductions;
-    std::vector<std::size_t> row_reduction;  // for reductions over rows
+    std::vector<std::size_t> row_reduction;  // for reductions over rows (after(): after_events_)
     std::vector<JumpField> jump_field;       // for jump(): what it reads of the jump
   };
   std::vector<OutcomeSlots> outcomes_;

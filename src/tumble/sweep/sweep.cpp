@@ -156,6 +156,12 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     record.values = recorder_->finish({}, {}, {}, modes ? &*modes : nullptr);
     return;
   }
+  if (recorder_->reads_event_states()) {
+    simulation.on_event_state = [&](double t, std::span<const BodyState> states,
+                                    const SystemQuantities& q, const RowExtras& extras) {
+      recorder_->observe_event_state({t, states, &q, &extras});
+    };
+  }
   const SimulationResult result =
       run_simulation(simulation, [&](double t, std::span<const BodyState> states,
                                      const SystemQuantities& q, const RowExtras& extras) {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 
 #include "modes_checks.hpp"
 #include "run_tumble.hpp"
+#include "scenario_run.hpp"
 #include "test_files.hpp"
 #include "tumble/math/rotation.hpp"
 #include "tumble/modes/mode_shape_rows.hpp"
@@ -77,6 +79,36 @@ TEST(Modes, InvertedMastFallsBelowTheCriticalStiffness) {
   const ScenarioModes critical = modes_of(example("modes/inverted_mast.yaml"), {{"k_ratio", "1"}});
   EXPECT_EQ(critical.analysis.verdict, ModalAnalysis::Verdict::Marginal);
   EXPECT_NE(critical.analysis.verdict_text.find("base.angle"), std::string::npos);
+}
+
+// A free mast held to ground by a torsional spring alone (no hinge; no gravity): its moment is
+// -k theta_n for the turn theta_n from rest, so it turns about each principal axis at
+// sqrt(k / I_i). Linearised right after the hinged mast (two coordinates), as a fuzzing run did:
+// ground's dual-number state was then a shared constant that Eigen's AutoDiff had resized to
+// the hinged mast's two derivatives, and this twelve-coordinate linearisation read past them.
+TEST(Modes, AFreeMastOnATorsionalSpringToGroundTurnsAtSqrtKOverI) {
+  (void)modes_of(example("modes/inverted_mast.yaml"));
+  const double M = 3, r = 0.01, length = 2, k = 50;
+  const ScenarioModes modes = modes_of_scenario(test::load_inline_scenario(R"(tumble: 1
+gravity: [0, 0, 0]
+bodies:
+  mast: {shape: cylinder, radius: 0.01, length: 2, mass: 3, position: [0, 0, 1]}
+forces:
+  - {type: torsional_spring, name: spring, bodies: [ground, mast], stiffness: 50}
+simulate: {duration: 1, integrator: dopri5, rtol: 1e-8, atol: 1e-10}
+)",
+                                                                           "free_spring"));
+  std::vector<double> found;
+  for (const Mode& mode : modes.analysis.modes) {
+    if (mode.kind == Mode::Kind::Oscillating) found.push_back(mode.natural_frequency);
+  }
+  const double I_side = M * (3 * r * r + length * length) / 12, I_axis = M * r * r / 2;
+  std::vector<double> expected = {std::sqrt(k / I_side), std::sqrt(k / I_side),
+                                  std::sqrt(k / I_axis)};
+  std::sort(found.begin(), found.end());
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(found.size(), expected.size());
+  for (std::size_t i = 0; i < found.size(); ++i) expect_relative(found[i], expected[i]);
 }
 
 // The animation page's rows of the mast's mode (tumble modes --animate): the angle swings to

@@ -3,9 +3,8 @@
 # pytest suite), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (but for a few
 # long integrations), the runs that share a model on threads under ThreadSanitizer (both built by
 # clang), a minute of fuzzing the scenario reader (on the sanitizer build's library), the main
-# example end to end, the Python package as installed, and
-# the animation page and its videos (`tumble run --video`, checked with ffprobe) in headless
-# Chromium.
+# example end to end, the Python package as installed, and the animation page and its videos
+# (`tumble run --video`, checked with ffprobe) in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

@@ -141,6 +141,26 @@ TEST(ModesPage, TheMastsRowsSwingItsRateWithItsAngle) {
   }
 }
 
+// The page's rows of a free prism's modes (set-aside turns shown by speed / lambda, up to 0.2 rad):
+// every orientation a rotation to round-off, the turns exact, not the linearisation's first-order
+// R0 (1 + [r]x), which would shear the prism by |r|^2 (4e-2 at 0.2 rad).
+TEST(ModesPage, APrismsRowsTurnItByRotations) {
+  const ScenarioModes modes = modes_of(example("modes/prism_axes.yaml"));
+  std::vector<ShownMode> shown;
+  const RecordedTrajectory rows = mode_shape_rows(modes, 1.0, shown);
+  ASSERT_FALSE(shown.empty());
+  double largest_turn = 0.0;
+  for (std::size_t r = 0; r < rows.rows(); ++r) {
+    for (std::size_t b = 0; b < rows.body_count(); ++b) {
+      const Mat3& R = rows.state(r, b).R_WB;
+      EXPECT_LE(orthonormality_error(R), 1e-14) << "row " << r;
+      largest_turn =
+          std::max(largest_turn, log_so3(Mat3(rows.state(0, b).R_WB.transpose() * R)).norm());
+    }
+  }
+  EXPECT_GT(largest_turn, 0.1);  // the rows do turn it
+}
+
 TEST(Modes, DampedMastDecaysWithItsDampingRatio) {
   const double c = 1.5, k = 2 * Mast::critical;  // the example's k_ratio 2
   const ScenarioModes modes =

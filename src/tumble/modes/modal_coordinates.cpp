@@ -38,4 +38,17 @@ ModalLayout make_modal_layout(const ArticulatedModel& model, double t0) {
   return layout;
 }
 
+VecX displace_positions(const ArticulatedModel& model, const ModalLayout& layout, const VecX& y0,
+                        const VecX& z) {
+  VecX y = y0;
+  for (std::size_t k = 0; k < model.tree.size(); ++k) {
+    const Eigen::Index o = layout.position_offset[k];
+    if (o < 0) continue;
+    const TreeJoint& joint = model.tree[k];
+    const auto count = static_cast<Eigen::Index>(joint.kind->modal_positions().size());
+    joint.kind->displace_modal(joint, z.segment(o, count), layout.sign[k], y);
+  }
+  return y;
+}
+
 }  // namespace tumble

@@ -42,4 +42,9 @@ struct ModalLayout {
 // The layout at the model's schedule time t0 (which joints are held or driven then).
 ModalLayout make_modal_layout(const ArticulatedModel& model, double t0);
 
+// y0 moved by the positions of z, turns as exact rotations (its speeds are left as they are): the
+// configuration a mode shape shows, for the animation page.
+VecX displace_positions(const ArticulatedModel& model, const ModalLayout& layout, const VecX& y0,
+                        const VecX& z);
+
 }  // namespace tumble

@@ -165,12 +165,10 @@ std::vector<ModalKinematics<S>> ModalEquations::kinematics(const VecXOf<S>& z) c
   return kin;
 }
 
-void ModalEquations::calc_body_states(const VecX& z, std::span<BodyState> states) const {
+void ModalEquations::calc_body_velocities(const VecX& z, std::span<BodyState> states) const {
   const std::vector<ModalKinematics<double>> kin = kinematics<double>(z);
   for (std::size_t k = 0; k < kin.size(); ++k) {
     BodyState& s = states[static_cast<std::size_t>(model_->tree[k].child)];
-    s.r_G = kin[k].r_G;
-    s.R_WB = kin[k].R_WC;
     s.v_G = kin[k].v_G;
     s.omega_W = kin[k].omega;
   }

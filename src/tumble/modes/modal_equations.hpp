@@ -80,9 +80,10 @@ class ModalEquations {
   // The rates of z while the state turns along `symmetry` at unit rate.
   template <typename Scalar>
   VecXOf<Scalar> symmetry_field(const Symmetry& symmetry, const VecXOf<Scalar>& z) const;
-  // The bodies' states at z (world, one per body in the scenario's order): where z puts them
-  // and how fast it moves them (a mode shape's configuration and motion, for the animation page).
-  void calc_body_states(const VecX& z, std::span<BodyState> states) const;
+  // How fast z moves the bodies (world, one per body in the scenario's order): each one's v_G and
+  // omega_W in `states`, to first order in z as the equations are (their turns are; the
+  // positions a mode shape shows come from displace_positions, exactly).
+  void calc_body_velocities(const VecX& z, std::span<BodyState> states) const;
 
  private:
   // Where tree joint k is in the linearisation at z.

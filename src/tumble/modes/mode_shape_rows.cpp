@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "tumble/modes/modal_equations.hpp"
+#include "tumble/multibody/articulated_formulation.hpp"
 
 namespace tumble {
 
@@ -15,6 +16,7 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
   const ArticulatedModel& model = eq.model();
   const ModalLayout& layout = eq.layout();
   const Linearisation& lin = modes.linearisation;
+  const ArticulatedFormulation formulation(eq.shared_model());
   RecordedTrajectory rows(model.body_count());
   std::vector<BodyState> states(model.body_count());
   shown.clear();
@@ -56,10 +58,12 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
       const std::complex<double> swing =
           oscillates ? std::exp(std::complex<double>(0.0, phase)) : std::sin(phase);
       // Positions and speeds alike, so that the rows' speeds, angular velocities and KE move with
-      // the shape instead of staying at y0's.
+      // the shape instead of staying at y0's: the configuration exactly (turns as rotations), the
+      // velocities as the linearisation has them.
       VecX z(layout.size());
       for (Eigen::Index i = 0; i < layout.size(); ++i) z(i) = scale * (shape(i) * swing).real();
-      eq.calc_body_states(z, states);
+      formulation.unpack_all(displace_positions(model, layout, eq.y0(), z), states);
+      eq.calc_body_velocities(z, states);
       rows.record(t + cycle * row / kRowsPerCycle, states,
                   calc_system_quantities(model.model.bodies, states, model.model.gravity_W));
     }

@@ -66,6 +66,11 @@ std::span<const int> BallJoint::modal_position_blocks() const {
   return kBallBlocks;
 }
 
+void BallJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /*sign*/,
+                               VecX& y) const {
+  turn_quaternion(y, joint.q, z_q.head<3>());
+}
+
 template <typename S>
 void BallJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                              JointMotionOf<S>& motion) const {

@@ -32,6 +32,7 @@ class BallJoint final : public JointKindOf<BallJoint> {
   std::span<const CoordinateName> modal_speeds() const override;
   std::span<const int> modal_position_blocks() const override;
   bool turns_freely() const override { return true; }
+  void displace_modal(const TreeJoint& joint, const VecX& z_q, double sign, VecX& y) const override;
   template <typename S>
   void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                     JointMotionOf<S>& motion) const;

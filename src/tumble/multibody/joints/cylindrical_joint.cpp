@@ -82,6 +82,11 @@ std::span<const int> CylindricalJoint::modal_position_blocks() const {
   return kCylindricalBlocks;
 }
 
+void CylindricalJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
+                                      VecX& y) const {
+  displace_numbers(joint, z_q, sign, y);
+}
+
 template <typename S>
 void CylindricalJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                                     JointMotionOf<S>& motion) const {

@@ -28,6 +28,8 @@ class FixedJoint final : public JointKindOf<FixedJoint> {
   std::span<const CoordinateName> modal_positions() const override { return {}; }
   std::span<const CoordinateName> modal_speeds() const override { return {}; }
   std::span<const int> modal_position_blocks() const override { return {}; }
+  void displace_modal(const TreeJoint& /*joint*/, const VecX& /*z_q*/, double /*sign*/,
+                      VecX& /*y*/) const override {}
   template <typename S>
   void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                     JointMotionOf<S>& motion) const;

@@ -62,6 +62,12 @@ std::span<const int> FreeJoint::modal_position_blocks() const {
   return kFreeBlocks;
 }
 
+void FreeJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /*sign*/,
+                               VecX& y) const {
+  y.segment<3>(joint.q) += z_q.head<3>();
+  turn_quaternion(y, joint.q + 3, z_q.tail<3>());
+}
+
 template <typename S>
 void FreeJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                              JointMotionOf<S>& motion) const {

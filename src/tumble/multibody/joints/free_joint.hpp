@@ -34,6 +34,7 @@ class FreeJoint final : public JointKindOf<FreeJoint> {
   std::span<const int> modal_position_blocks() const override;
   bool modal_positions_are_symmetries() const override { return true; }
   bool turns_freely() const override { return true; }
+  void displace_modal(const TreeJoint& joint, const VecX& z_q, double sign, VecX& y) const override;
   template <typename S>
   void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                     JointMotionOf<S>& motion) const;

@@ -67,6 +67,11 @@ std::span<const int> HingeJoint::modal_position_blocks() const {
   return kHingeBlocks;
 }
 
+void HingeJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
+                                VecX& y) const {
+  displace_numbers(joint, z_q, sign, y);
+}
+
 template <typename S>
 void HingeJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                               JointMotionOf<S>& motion) const {

@@ -153,6 +153,9 @@ class JointKind {
   virtual void calc_modal_world_turn(const TreeJoint& joint, const ModalJointPoint<Dual>& at,
                                      const Vec3& k_W, VecXOf<Dual>& z_q_field,
                                      VecXOf<Dual>& z_u_field) const = 0;
+  // y moved by its modal positions z_q (the configuration a mode shape shows).
+  virtual void displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
+                              VecX& y) const = 0;
 };
 
 // The one place that makes the kinds: each JointType's, and the kind a scenario names ("hinge";

@@ -104,6 +104,9 @@ void modal_rates_of_numbers(const ModalJointPoint<S>& at, const JointMotionOf<S>
   z_q_rate = sign * motion.u;
   z_u_rate = sign * u_dot;
 }
+inline void displace_numbers(const TreeJoint& joint, const VecX& z_q, double sign, VecX& y) {
+  y.segment(joint.q, joint.nq) += sign * z_q;
+}
 // Their CSV columns: each coordinate, then its rate (J.angle J.rate, J.travel J.speed, ...).
 inline void write_number_columns(const TreeJoint& joint, const VecX& y, std::span<double> values) {
   for (int i = 0; i < joint.nq; ++i) {

@@ -72,6 +72,11 @@ std::span<const int> PrismaticJoint::modal_position_blocks() const {
   return kPrismaticBlocks;
 }
 
+void PrismaticJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
+                                    VecX& y) const {
+  displace_numbers(joint, z_q, sign, y);
+}
+
 template <typename S>
 void PrismaticJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                                   JointMotionOf<S>& motion) const {

@@ -135,6 +135,11 @@ std::span<const int> UniversalJoint::modal_position_blocks() const {
   return kUniversalBlocks;
 }
 
+void UniversalJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
+                                    VecX& y) const {
+  displace_numbers(joint, z_q, sign, y);
+}
+
 template <typename S>
 void UniversalJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                                   JointMotionOf<S>& motion) const {

@@ -41,6 +41,7 @@ class UniversalJoint final : public JointKindOf<UniversalJoint> {
   std::span<const CoordinateName> modal_positions() const override;
   std::span<const CoordinateName> modal_speeds() const override;
   std::span<const int> modal_position_blocks() const override;
+  void displace_modal(const TreeJoint& joint, const VecX& z_q, double sign, VecX& y) const override;
   template <typename S>
   void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                     JointMotionOf<S>& motion) const;

@@ -9,8 +9,8 @@ template <typename S>
 ElementLoadOf<S> calc_spring_load(const LinearSpring& spring,
                                   std::span<const BodyStateOf<S>> states) {
   using std::sqrt;
-  const BodyStateOf<S>& a = state_or_ground<S>(states, spring.body_a);
-  const BodyStateOf<S>& b = state_or_ground<S>(states, spring.body_b);
+  const BodyStateOf<S>& a = state_or_ground(states, spring.body_a);
+  const BodyStateOf<S>& b = state_or_ground(states, spring.body_b);
   // Attachment points from each COM (world axes) and their velocities.
   const Vec3Of<S> p_A_W = a.R_WB * spring.p_A_A.cast<S>();
   const Vec3Of<S> p_B_W = b.R_WB * spring.p_B_B.cast<S>();
@@ -38,8 +38,8 @@ ElementLoadOf<S> calc_torsional_spring_load(const TorsionalSpring& spring,
                                             std::span<const BodyStateOf<S>> states,
                                             const S& hinge_angle, const S& hinge_rate,
                                             const Vec3Of<S>& axis_W) {
-  const BodyStateOf<S>& a = state_or_ground<S>(states, spring.body_a);
-  const BodyStateOf<S>& b = state_or_ground<S>(states, spring.body_b);
+  const BodyStateOf<S>& a = state_or_ground(states, spring.body_a);
+  const BodyStateOf<S>& b = state_or_ground(states, spring.body_b);
   ElementLoadOf<S> load;
   Vec3Of<S> M_b_W;
   const Vec3Of<S> omega_rel_W = b.omega_W - a.omega_W;

@@ -36,16 +36,18 @@ struct TorsionalSpring {
 };
 
 // The state of one of the bodies a force element joins; ground is at rest at the origin.
+// For dual numbers ground is a new state each time, not a shared constant: Eigen's AutoDiff sizes
+// an empty derivative vector to its partner's in place, even through const (make_coherent), so a
+// shared dual-number ground would keep the size of the last linearisation (the next one, of
+// another size, then read past its end) and be written by two threads at once. A run's doubles
+// are never written so: they share one, and a call copies nothing.
 template <typename S>
 BodyStateOf<S> state_or_ground(std::span<const BodyStateOf<S>> states, int body) {
-  // Ground is a new state each time, not a shared constant: Eigen's AutoDiff sizes an empty
-  // derivative vector to its partner's in place, even through const (make_coherent), so a shared
-  // dual-number ground would keep the size of the last linearisation (the next one, of another
-  // size, then read past its end) and be written by two threads at once.
   return body == kGround ? BodyStateOf<S>{} : states[static_cast<std::size_t>(body)];
 }
-inline BodyState state_or_ground(std::span<const BodyState> states, int body) {
-  return state_or_ground<double>(states, body);
+inline const BodyState& state_or_ground(std::span<const BodyState> states, int body) {
+  static const BodyState kGroundState{};
+  return body == kGround ? kGroundState : states[static_cast<std::size_t>(body)];
 }
 
 // What one element does at an instant: the force (at the COM) and moment (about the COM) on each

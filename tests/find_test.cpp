@@ -1,9 +1,12 @@
 // tumble find reproduces the chapter's critical values (equations.md, 6.8): the Cubli's wheel
 // speed, the critical friction of a rolling sphere, cylinder and ring, and the mast's spring,
-// each to 1e-6 of the closed form or better; and it refuses a range whose ends agree.
+// each to 1e-6 of the closed form or better; a maximum read between the rows; and it refuses a
+// range whose ends agree.
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include <fmt/format.h>
 
 #include "test_files.hpp"
 #include "tumble/scenario/scenario_document.hpp"
@@ -103,6 +106,53 @@ TEST(FindByJump, TheBatsCentreOfPercussionWhereTheKnobFeelsNoImpulse) {
   EXPECT_FALSE(found.at_lo);
   EXPECT_TRUE(found.at_hi);
   EXPECT_NEAR(middle(found), d_star, 1e-9 * d_star);
+}
+
+// A compound pendulum (the chapter's bat on its pivot) released at rest from theta0 pulls on the
+// pivot hardest at the bottom of its swing: there its COM, L below the pivot, turns at w with
+// w^2 = 2 M g L (1 - cos theta0) / I_O (energy) and no tangential acceleration, so the pivot's
+// reaction is knob.Fz = M g + M L w^2. find brackets the release angle at which that pull reaches
+// F on the continuous solution, not the rows: the same angle with rows 1 ms apart, 1 us apart,
+// and 0.1 s apart (four rows, none near the bottom at 0.376 s), to the closed form.
+const char* const kPendulumPull = R"yaml(tumble: 1
+parameters: {M: 0.9, length: 0.84, r: 0.03, L: length/2, theta0: 0.3, g: 9.81, h: 0.001}
+gravity: [0, 0, -g]
+bodies:
+  bat:
+    shape: cylinder
+    radius: r
+    length: length
+    mass: M
+    position: ["-L*sin(theta0)", 0, "-L*cos(theta0)"]
+    orientation: {axis: [0, 1, 0], angle: theta0}
+joints:
+  knob: {type: hinge, body: bat, at: [0, 0, 0], axis: [0, 1, 0]}
+simulate: {duration: 0.4, integrator: dopri5, rtol: 1e-12, atol: 1e-14, output_every: h}
+)yaml";
+
+TEST(FindOnTheSolution, ThePendulumsPullAtTheBottomWhateverTheRows) {
+  const double M = 0.9, length = 0.84, r = 0.03, L = length / 2, g = 9.81;
+  const double I_O = M * (3 * r * r + length * length) / 12 + M * L * L;
+  const double theta_star = 0.3;
+  const double F = M * g + M * L * 2 * M * g * L * (1 - std::cos(theta_star)) / I_O;
+  std::vector<double> found_at;
+  for (const char* h : {"0.001", "1e-6", "0.1"}) {
+    SweepSpec spec;
+    spec.text = kPendulumPull;
+    spec.path = "pendulum_pull.yaml";
+    spec.fixed = {{"h", h}};
+    spec.varied = {"theta0"};
+    spec.outcomes = {parse_outcome("condition", fmt::format("max(knob.Fz) > {:.17g}", F))};
+    const FindResult found = find_change(spec, 0.29, 0.31, 3e-10 * theta_star);
+    EXPECT_FALSE(found.at_lo) << h;
+    EXPECT_TRUE(found.at_hi) << h;
+    // rtol 1e-12 gives w^2 to about 1e-12, which moves the angle by 1e-12 / (d ln(F - M g) /
+    // d theta0) ~ 1e-13: the bracket's width sets the bound.
+    EXPECT_NEAR(middle(found), theta_star, 1e-9 * theta_star) << h;
+    found_at.push_back(middle(found));
+  }
+  EXPECT_NEAR(found_at[1], found_at[0], 1e-9 * theta_star);
+  EXPECT_NEAR(found_at[2], found_at[0], 1e-9 * theta_star);
 }
 
 TEST(FindCritical, RefusesARangeWhoseEndsAgree) {

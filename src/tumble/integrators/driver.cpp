@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tumble/math/sign_change.hpp"
+
 namespace tumble {
 
 namespace {
@@ -116,39 +118,32 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
     if (options.on_event_state) options.on_event_state(t, y);
   };
 
-  // The root of g_k inside the last step by the Illinois method (regula falsi that halves the
-  // value kept at an end that survives twice running) on the dense output.
+  // The root of g_k inside the last step, on the dense output.
   auto locate = [&](std::size_t k) {
     const auto ki = static_cast<Eigen::Index>(k);
-    double a = integrator.t_previous(), b = integrator.t();
-    double ga = g_before(ki), gb = g_after(ki);
-    // A zero at the step's end is the root itself (`t > 10` on a step that lands on 10, a stop at
-    // t >= duration): the bracketing below would take it for the side that g comes from.
-    if (gb == 0.0) return b;
-    int last_side = 0;  // +1: the last probe replaced b; -1: it replaced a
-    for (int iteration = 0; iteration < 200; ++iteration) {
-      const double width_floor =
-          4.0 * std::numeric_limits<double>::epsilon() * std::max({1.0, std::abs(a), std::abs(b)});
-      if (b - a <= width_floor) break;
-      double c = b - gb * (b - a) / (gb - ga);
-      if (!(c > a && c < b)) c = 0.5 * (a + b);  // keep strictly inside the bracket
-      integrator.dense_output(c, y_event);
-      system.event_functions(c, y_event, g_probe);
-      const double gc = g_probe(ki);
-      if (gc == 0.0) return c;
-      if ((gc > 0.0) == (gb > 0.0)) {
-        b = c;
-        gb = gc;
-        if (last_side == +1) ga *= 0.5;
-        last_side = +1;
-      } else {
-        a = c;
-        ga = gc;
-        if (last_side == -1) gb *= 0.5;
-        last_side = -1;
-      }
+    return sign_change_in(integrator.t_previous(), integrator.t(), g_before(ki), g_after(ki),
+                          [&](double c) {
+                            integrator.dense_output(c, y_event);
+                            system.event_functions(c, y_event, g_probe);
+                            return g_probe(ki);
+                          });
+  };
+
+  // The run's smooth pieces, for whoever reads the solution between the rows: each ends at an
+  // event, a jump, a breakpoint or a step's end, and the next starts there.
+  double piece_start = integrator.t();
+  bool piece_continues = false;  // the run's first piece, or one after a jump, starts afresh
+  auto piece_until = [&](double t_upto) {
+    if (!options.on_piece) return;
+    if (t_upto > piece_start || !piece_continues) {
+      options.on_piece(SolutionPiece(integrator, system, piece_start, t_upto, piece_continues));
     }
-    return b;  // the end of the bracket on the far side of the crossing
+    piece_start = t_upto;
+    piece_continues = true;
+  };
+  auto piece_restarts = [&](double t) {
+    piece_start = t;
+    piece_continues = false;
   };
 
   long steps = position.steps;
@@ -227,6 +222,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
         } else {
           integrator.dense_output(t_first, y_event);
         }
+        piece_until(t_first);
         const EventAction action = system.on_event(k_first, t_first, y_event);
         report.events.push_back({t_first, k_first, action});
         t_last_event = t_first;
@@ -259,6 +255,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
           integrator.restart(t_first, y_event);
           system.event_functions(t_first, integrator.y(), g_before);
           event_state(t_first, integrator.y());
+          piece_restarts(t_first);
           restarted = true;
         }
         break;
@@ -272,11 +269,13 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
     const bool breakpoint = integrator.t() == t_stop && t_stop < t_end;
     emit_rows_until(integrator.t(), !breakpoint);
     if (clock.every_step() && !breakpoint) observe(integrator.t(), integrator.y());
+    piece_until(integrator.t());
     if (event_count > 0) {
       g_before = g_after;
       if (system.refresh_event_functions(integrator.t(), integrator.y())) {
         system.event_functions(integrator.t(), integrator.y(), g_before);
         event_state(integrator.t(), integrator.y());
+        piece_restarts(integrator.t());
       }
     }
 
@@ -288,6 +287,7 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
       system.at_breakpoint(t_stop, y_break);
       system.project(t_stop, y_break);
       integrator.restart(t_stop, y_break);
+      piece_restarts(t_stop);
       emit_rows_until(t_stop);
       if (clock.every_step()) observe(t_stop, integrator.y());
       event_state(t_stop, integrator.y());
@@ -313,7 +313,10 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
             stopped_by_event = true;
           }
         }
-        if (stopped) break;
+        if (stopped) {
+          piece_until(t_stop);  // the state the run ends in, just after the jump
+          break;
+        }
       }
     }
 

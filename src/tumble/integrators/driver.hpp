@@ -7,7 +7,9 @@
 //    pinned down by the Illinois variant of regula falsi on the dense output, to a bracket of a
 //    few ulps of t; the system then records, jumps (the method restarts) or stops;
 //  - breakpoints: a step lands exactly on each, the system may change the state there, and the
-//    method restarts, so no step straddles a discontinuity of f.
+//    method restarts, so no step straddles a discontinuity of f;
+//  - the solution's smooth pieces (each step, cut at its events), for what reads the run between
+//    its rows.
 #include <functional>
 #include <limits>
 #include <memory>
@@ -18,6 +20,8 @@
 #include "tumble/integrators/integrator.hpp"
 
 namespace tumble {
+
+class SolutionPiece;
 
 struct DriverOptions {
   double output_every = 0.0;    // s; 0: one row per accepted step
@@ -38,6 +42,46 @@ struct DriverOptions {
   // after" an event (a sweep's after(EVENT, X)); empty: not called. y is only valid during the
   // call. Several calls may come at one instant: the last has the state the run goes on from.
   std::function<void(double t, const VecX& y)> on_event_state;
+  // Called with each smooth piece of the solution the run goes along, in time order: for what
+  // is read between the rows (a sweep's max, min, mean and conditions); empty: not called.
+  std::function<void(const SolutionPiece& piece)> on_piece;
+};
+
+// A smooth piece of the solution: [t_begin, t_end] inside the last step, with no event, jump,
+// breakpoint or change of the system's modes inside it (each ends one piece and starts the next).
+// The pieces cover the run, and they are the steps' and the events', not the rows': output_every
+// does not change them. Valid only during the call it is handed to.
+class SolutionPiece {
+ public:
+  SolutionPiece(const Integrator& integrator, const OdeSystem& system, double t_begin, double t_end,
+                bool continues)
+      : integrator_(integrator),
+        system_(system),
+        t_begin_(t_begin),
+        t_end_(t_end),
+        continues_(continues) {}
+  double t_begin() const { return t_begin_; }
+  double t_end() const { return t_end_; }
+  // Whether it starts where the last piece ended with nothing between: false for the run's first
+  // piece and for one after a jump, an event that changed the state, or a change of modes.
+  bool continues() const { return continues_; }
+  // The state at t in [t_begin, t_end] from the continuous extension, put back on the
+  // constraints as a row's is (at a step's end, the step's state): at a row's time, the row's.
+  void state_at(double t, VecX& y) const {
+    y.resize(integrator_.y().size());  // once: a no-op at the right size
+    if (t == integrator_.t()) {
+      y = integrator_.y();
+    } else {
+      integrator_.dense_output(t, y);
+      system_.project(t, y);
+    }
+  }
+
+ private:
+  const Integrator& integrator_;
+  const OdeSystem& system_;
+  double t_begin_, t_end_;
+  bool continues_;
 };
 
 struct EventRecord {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -13,6 +13,7 @@
 #include "tumble/simulation/exact_integrator.hpp"
 #include "tumble/simulation/make_formulation.hpp"
 #include "tumble/simulation/model_from_scenario.hpp"
+#include "tumble/simulation/planar_angles.hpp"
 
 namespace tumble {
 
@@ -213,31 +214,6 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const RowObserve
 
 namespace {
 
-// Each body's angle about z at this row: the rotation's, on the branch nearest to where the
-// rates say the body turned from the row before (the trapezoid of the two rates), so that a
-// body that turns on past a half turn between rows, as a rolling disk does, is counted on
-// (provided the rates' error over a row stays below half a turn).
-void continue_planar_angles(double t, std::span<const BodyState> states, RowExtras& extras) {
-  const bool first = extras.planar_angles.size() != states.size();
-  extras.planar_angles.resize(states.size());
-  extras.planar_rates.resize(states.size());
-  for (std::size_t b = 0; b < states.size(); ++b) {
-    const Mat3& R = states[b].R_WB;
-    const double raw = std::atan2(R(1, 0), R(0, 0));
-    const double rate = states[b].omega_W.z();
-    double angle = raw;
-    if (!first) {
-      const double expected =
-          extras.planar_angles[b] + 0.5 * (extras.planar_rates[b] + rate) * (t - extras.planar_t);
-      angle =
-          raw + 2.0 * std::numbers::pi * std::round((expected - raw) / (2.0 * std::numbers::pi));
-    }
-    extras.planar_angles[b] = angle;
-    extras.planar_rates[b] = rate;
-  }
-  extras.planar_t = t;
-}
-
 // One run's rows: each is handed over with its quantities and booked into the conservation
 // report against the first row's baseline; from a checkpoint, against the baseline of the run
 // it was taken from.
@@ -332,6 +308,16 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
       if (simulation.planar) continue_planar_angles(t, event_states, event_extras);
       const SystemQuantities q = row_quantities(model, event_states, event_extras);
       simulation.on_event_state(t, event_states, q, event_extras);
+    };
+  }
+
+  // The run's pieces as rows, only for a run that reads between its rows.
+  std::optional<PieceRows> piece_rows;
+  if (simulation.on_piece) {
+    piece_rows.emplace(formulation, simulation.planar);
+    options.on_piece = [&](const SolutionPiece& piece) {
+      piece_rows->set_piece(piece, extras);
+      simulation.on_piece(*piece_rows);
     };
   }
 

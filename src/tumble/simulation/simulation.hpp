@@ -18,6 +18,7 @@
 #include "tumble/output/output_row.hpp"
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/simulation/make_formulation.hpp"
+#include "tumble/simulation/piece_rows.hpp"
 #include "tumble/simulation/user_events.hpp"
 
 namespace tumble {
@@ -40,6 +41,9 @@ struct PreparedSimulation {
   std::function<void(double t, std::span<const BodyState> states,
                      const SystemQuantities& quantities, const RowExtras& extras)>
       on_event_state;
+  // Where set, handed each smooth piece of the run as rows (DriverOptions::on_piece): what a
+  // sweep's max, min, mean and conditions read between the rows. Not the trajectory's rows.
+  std::function<void(PieceRows& piece)> on_piece;
 };
 
 // One problem, built once from a scenario and then run any number of times, on any number of

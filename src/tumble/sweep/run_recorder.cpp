@@ -10,102 +10,6 @@
 
 namespace tumble {
 
-// One reduction over the rows: an expression of the columns and parameters, and what has been
-// gathered of it so far.
-struct RunRecorder::RowReduction {
-  ReductionKind kind;
-  BoundExpression value;
-  // For first() and count() of a comparison A < B: A - B, whose zero is where it turns.
-  std::unique_ptr<BoundExpression> margin;
-  std::size_t rows = 0;
-  double last = 0.0, best = 0.0, t_best = 0.0;
-  double t_first = 0.0, t_last = 0.0, integral = 0.0;
-  bool held = false;  // whether the condition held at the last row
-  double last_margin = 0.0, turned_at = 0.0, turns = 0.0;
-
-  RowReduction(ReductionKind k, std::string text, std::span<const BoundExpression::Variable> vars)
-      : kind(k), value(text, vars) {
-    if (const auto comparison = split_comparison(text)) {
-      margin = std::make_unique<BoundExpression>(comparison->margin(), vars);
-    }
-  }
-
-  bool counts_turns() const { return kind == ReductionKind::First || kind == ReductionKind::Count; }
-
-  void observe_turn(double t) {
-    const bool holds = value.evaluate() != 0.0;
-    const double m = margin ? margin->evaluate() : 0.0;
-    if (holds && !(rows > 0 && held)) {
-      // Where A - B crossed zero between the rows, or this row where that is not known.
-      double at = t;
-      if (rows > 0 && margin && m != last_margin && std::isfinite(m) &&
-          std::isfinite(last_margin)) {
-        at = t_last + (t - t_last) * last_margin / (last_margin - m);
-      }
-      if (turns == 0.0) turned_at = at;
-      ++turns;
-    }
-    held = holds;
-    last_margin = m;
-    t_last = t;
-    ++rows;
-  }
-
-  void observe(double t) {
-    switch (kind) {
-      case ReductionKind::First:
-      case ReductionKind::Count:
-        observe_turn(t);
-        return;
-      case ReductionKind::Final:
-        last = value.evaluate();
-        break;
-      case ReductionKind::Mean: {
-        const double v = value.evaluate();
-        if (rows == 0) {
-          t_first = t;
-        } else {
-          integral += 0.5 * (t - t_last) * (v + last);  // trapezoidal rule between rows
-        }
-        last = v;
-        break;
-      }
-      default: {  // max, min, time_of_max
-        const double v = value.evaluate();
-        const bool better = kind == ReductionKind::Min ? v < best : v > best;
-        if (rows == 0 || better) {
-          best = v;
-          t_best = t;
-        }
-        break;
-      }
-    }
-    t_last = t;
-    ++rows;
-  }
-
-  double result() const {
-    if (rows == 0) return std::numeric_limits<double>::quiet_NaN();
-    switch (kind) {
-      case ReductionKind::Final:
-        return last;
-      case ReductionKind::Max:
-      case ReductionKind::Min:
-        return best;
-      case ReductionKind::TimeOfMax:
-        return t_best;
-      case ReductionKind::Mean:
-        return t_last > t_first ? integral / (t_last - t_first) : last;
-      case ReductionKind::First:
-        return turns > 0.0 ? turned_at : std::numeric_limits<double>::quiet_NaN();
-      case ReductionKind::Count:
-        return turns;
-      default:
-        return std::numeric_limits<double>::quiet_NaN();
-    }
-  }
-};
-
 // after(EVENT, X): X in each state just after an event, jump or change of modes of the run (t,
 // value), in time order; finish() picks the last one at the instant of EVENT's first occurrence.
 struct RunRecorder::AfterEvent {
@@ -243,13 +147,13 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
         continue;
       }
       try {
-        row_reductions_.push_back(
-            std::make_unique<RowReduction>(reduction.kind, reduction.argument, row_variables));
+        reductions_.push_back(
+            std::make_unique<RunReduction>(reduction.kind, reduction.argument, row_variables));
       } catch (const ExpressionError& error) {
         throw std::invalid_argument(
             fmt::format("{}: {}{}", outcome.text, error.what(), unknown_name_hint(error)));
       }
-      slots.row_reduction.push_back(row_reductions_.size() - 1);
+      slots.row_reduction.push_back(reductions_.size() - 1);
     }
     try {
       slots.expression = std::make_unique<BoundExpression>(outcome.expression, value_variables);
@@ -260,9 +164,10 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
   }
   // Only the columns the reductions read are taken from each row.
   std::vector<const BoundExpression*> read;
-  for (const auto& reduction : row_reductions_) {
-    read.push_back(&reduction->value);
-    if (reduction->margin) read.push_back(reduction->margin.get());
+  for (const auto& reduction : reductions_) {
+    read.push_back(&reduction->value());
+    if (reduction->margin()) read.push_back(reduction->margin());
+    (reduction->reads_pieces() ? reads_pieces_ : reads_rows_) = true;
   }
   for (const auto& after : after_events_) read.push_back(&after->value);
   row_.read_by(read);
@@ -288,18 +193,32 @@ bool RunRecorder::fits(const ColumnLayout& layout, const Scenario& scenario) con
 
 void RunRecorder::start(const Scenario& scenario) {
   row_.set_parameters(scenario.parameters);
-  for (const auto& reduction : row_reductions_) {
-    reduction->rows = 0;
-    reduction->integral = 0.0;
-    reduction->turns = 0.0;
-  }
+  for (const auto& reduction : reductions_) reduction->start();
   for (const auto& after : after_events_) after->samples.clear();
 }
 
 void RunRecorder::observe(const OutputRow& row) {
-  if (row_reductions_.empty()) return;  // events only: the rows are not needed
+  if (!reads_rows_) return;  // final() alone reads rows
   row_.take(row);
-  for (const auto& reduction : row_reductions_) reduction->observe(row.t);
+  for (const auto& reduction : reductions_) {
+    if (!reduction->reads_pieces()) reduction->observe_row();
+  }
+}
+
+void RunRecorder::observe_piece(PieceRows& piece) {
+  if (!reads_pieces_) return;
+  const bool extras = row_.reads_extras(), quantities = row_.reads_quantities();
+  const auto load = [&](double t) { row_.take(piece.row_at(t, extras, quantities)); };
+  const PieceSamples samples = PieceSamples::on(piece.t_begin(), piece.t_end(), !piece.continues());
+  for (int k = samples.fresh_start ? 0 : 1; k < samples.count; ++k) {
+    load(samples.t[static_cast<std::size_t>(k)]);
+    for (const auto& reduction : reductions_) {
+      if (reduction->reads_pieces()) reduction->take_sample(k);
+    }
+  }
+  for (const auto& reduction : reductions_) {
+    if (reduction->reads_pieces()) reduction->observe_piece(samples, load);
+  }
 }
 
 void RunRecorder::observe_event_state(const OutputRow& row) {
@@ -343,7 +262,7 @@ std::vector<double> RunRecorder::finish(std::span<const ContactEventRecord> even
       }
       const bool after = reduction.kind == ReductionKind::After;
       if (!reduction.over_events() && !after) {
-        value = row_reductions_[slots.row_reduction[r]]->result();
+        value = reductions_[slots.row_reduction[r]]->result();
         continue;
       }
       // Contact events, jumps and the scenario's events are each in time order; the first is the

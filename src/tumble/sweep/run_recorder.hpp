@@ -1,5 +1,7 @@
 #pragma once
-// The outcomes of one run (outcome.hpp), accumulated row by row as the run goes: no row is kept.
+// The outcomes of one run (outcome.hpp), accumulated as the run goes, from its rows (final()),
+// its continuous solution piece by piece (max, min, mean, conditions: run_reduction.hpp), the
+// states just after its events (after()) and its events and jumps: no row is kept.
 // A recorder is made once for a scenario's columns and parameters, its expressions compiled
 // then, and reused for each run of a sweep on its thread.
 #include <map>
@@ -12,7 +14,9 @@
 #include "tumble/output/row_variables.hpp"
 #include "tumble/scenario/expression.hpp"
 #include "tumble/scenario/scenario.hpp"
+#include "tumble/simulation/piece_rows.hpp"
 #include "tumble/sweep/outcome.hpp"
+#include "tumble/sweep/run_reduction.hpp"
 
 namespace tumble {
 
@@ -29,6 +33,10 @@ class RunRecorder {
   // A new run of it: its parameter values, and nothing accumulated.
   void start(const Scenario& scenario);
   void observe(const OutputRow& row);
+  // Whether an outcome reads the run between its rows (all but final() of a column): then each
+  // run's pieces (PreparedSimulation::on_piece) go to observe_piece.
+  bool reads_pieces() const { return reads_pieces_; }
+  void observe_piece(PieceRows& piece);
   // Whether an outcome reads the state just after an event (after(EVENT, X)): then each run's
   // rows of those states (PreparedSimulation::on_event_state) go to observe_event_state.
   bool reads_event_states() const { return !after_events_.empty(); }
@@ -41,7 +49,6 @@ class RunRecorder {
                              const ModesOutcome* modes = nullptr) const;
 
  private:
-  struct RowReduction;
   struct AfterEvent;
   // What jump(JUMP, FIELD) reads of the jump: its kinetic energy before or after, or a component
   // of a joint's reaction impulse.
@@ -53,7 +60,8 @@ class RunRecorder {
   static JumpField jump_field(const std::string& field, std::span<const std::string> joints);
   ColumnLayout layout_;
   RowVariables row_;  // the columns the reductions read, and the run's parameters
-  std::vector<std::unique_ptr<RowReduction>> row_reductions_;
+  std::vector<std::unique_ptr<RunReduction>> reductions_;
+  bool reads_rows_ = false, reads_pieces_ = false;
   std::vector<std::unique_ptr<AfterEvent>> after_events_;
   // Per outcome: its expression over its reductions' values, and where each value comes from
   // (an index into row_reductions_, or an event reduction).
@@ -61,7 +69,7 @@ class RunRecorder {
     std::unique_ptr<BoundExpression> expression;
     std::unique_ptr<std::vector<double>> values;  // what the expression reads, __r0, __r1, ...
     std::vector<Reduction> reductions;
-    std::vector<std::size_t> row_reduction;  // for reductions over rows (after(): after_events_)
+    std::vector<std::size_t> row_reduction;  // into reductions_ (after(): after_events_)
     std::vector<JumpField> jump_field;       // for jump(): what it reads of the jump
   };
   std::vector<OutcomeSlots> outcomes_;

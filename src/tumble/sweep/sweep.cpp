@@ -162,6 +162,9 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
       recorder_->observe_event_state({t, states, &q, &extras});
     };
   }
+  if (recorder_->reads_pieces()) {
+    simulation.on_piece = [&](PieceRows& piece) { recorder_->observe_piece(piece); };
+  }
   const SimulationResult result =
       run_simulation(simulation, [&](double t, std::span<const BodyState> states,
                                      const SystemQuantities& q, const RowExtras& extras) {

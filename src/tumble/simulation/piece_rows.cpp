@@ -1,0 +1,29 @@
+#include "tumble/simulation/piece_rows.hpp"
+
+#include "tumble/simulation/planar_angles.hpp"
+#include "tumble/simulation/simulation.hpp"
+
+namespace tumble {
+
+PieceRows::PieceRows(const Formulation& formulation, bool planar)
+    : formulation_(formulation), planar_(planar), states_(formulation.body_count()) {}
+
+void PieceRows::set_piece(const SolutionPiece& piece, const RowExtras& run_extras) {
+  piece_ = &piece;
+  if (!started_) {
+    // Sized here, once a run: the samples after it reuse these buffers.
+    extras_ = run_extras;
+    started_ = true;
+  }
+}
+
+OutputRow PieceRows::row_at(double t, bool with_extras, bool with_quantities) {
+  piece_->state_at(t, y_);
+  formulation_.unpack_all(y_, states_);
+  if (with_extras) formulation_.calc_row_extras(t, y_, extras_);
+  if (planar_) continue_planar_angles(t, states_, extras_);
+  if (with_quantities) quantities_ = row_quantities(formulation_.model(), states_, extras_);
+  return {t, states_, &quantities_, &extras_};
+}
+
+}  // namespace tumble

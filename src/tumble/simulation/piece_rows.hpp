@@ -1,0 +1,44 @@
+#pragma once
+// A smooth piece of a run (SolutionPiece) as output rows: the row at any time in it, computed
+// from the integrator's continuous extension as the trajectory's rows are. What a sweep's
+// reductions read between the rows: a maximum where it is, not where a row happened to fall.
+#include <span>
+#include <vector>
+
+#include "tumble/body/rigid_body.hpp"
+#include "tumble/dynamics/formulation.hpp"
+#include "tumble/integrators/driver.hpp"
+#include "tumble/output/output_row.hpp"
+
+namespace tumble {
+
+class PieceRows {
+ public:
+  PieceRows(const Formulation& formulation, bool planar);
+
+  // The run's first piece takes its plane angles on from `run_extras` (the first row's, or the
+  // last row's before a checkpoint); later ones from the samples before them.
+  void set_piece(const SolutionPiece& piece, const RowExtras& run_extras);
+
+  double t_begin() const { return piece_->t_begin(); }
+  double t_end() const { return piece_->t_end(); }
+  // Whether the piece starts where the last one ended, with nothing between (SolutionPiece).
+  bool continues() const { return piece_->continues(); }
+
+  // The row at t in [t_begin, t_end]: the bodies' states always; the joints', contacts' and
+  // elements' columns (extras) and the system's energies and momenta (quantities) only where
+  // asked, as they cost a solve. Valid until the next call.
+  OutputRow row_at(double t, bool with_extras, bool with_quantities);
+
+ private:
+  const Formulation& formulation_;
+  bool planar_;
+  const SolutionPiece* piece_ = nullptr;
+  bool started_ = false;
+  VecX y_;
+  std::vector<BodyState> states_;
+  RowExtras extras_;
+  SystemQuantities quantities_;
+};
+
+}  // namespace tumble

@@ -31,17 +31,22 @@ bool peaks_between(double x_end, double f_end, double x_next, double f_next, dou
 
 }  // namespace
 
-PieceSamples PieceSamples::on(double a, double b, bool fresh_start) {
+PieceSamples PieceSamples::on(double a, double b, bool fresh_start, bool for_a_mean) {
   PieceSamples samples;
   samples.fresh_start = fresh_start;
-  if (!(b > a)) {
-    samples.count = 1;
-    samples.t.fill(a);
-    return samples;
-  }
-  static const double inner = std::sqrt(21.0) / 14.0;
+  samples.t.fill(a);
   const double h = b - a;
-  samples.t = {a, a + (0.5 - inner) * h, a + 0.5 * h, a + (0.5 + inner) * h, b};
+  if (!(h > 0.0)) {
+    samples.count = 1;
+  } else if (for_a_mean) {
+    static const double inner = std::sqrt(21.0) / 14.0;
+    samples.t = {a, a + (0.5 - inner) * h, a + 0.5 * h, a + (0.5 + inner) * h, b};
+    samples.count = 5;
+  } else {
+    samples.t[1] = a + 0.5 * h;
+    samples.t[2] = b;
+    samples.count = 3;
+  }
   return samples;
 }
 
@@ -112,16 +117,17 @@ void RunReduction::observe_extremum(const PieceSamples& samples, FunctionRef<voi
   for (int k = samples.fresh_start ? 0 : 1; k < samples.count; ++k) {
     consider(samples.t[static_cast<std::size_t>(k)], values_[static_cast<std::size_t>(k)]);
   }
-  if (samples.count < PieceSamples::kNodes) return;
+  const auto n = static_cast<std::size_t>(samples.count);
+  if (n < 3) return;
   // Maxima of sign * value.
   const double sign = kind_ == ReductionKind::Min ? -1.0 : 1.0;
   const auto& t = samples.t;
   std::array<double, PieceSamples::kNodes> f{};
-  for (std::size_t k = 0; k < f.size(); ++k) {
+  for (std::size_t k = 0; k < n; ++k) {
     f[k] = sign * values_[k];
     if (!std::isfinite(f[k])) return;
   }
-  const auto i = static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+  const auto i = static_cast<std::size_t>(std::max_element(f.begin(), f.begin() + n) - f.begin());
   // Where the function is highest between samples: beside the highest sample, inside the piece.
   double lo = 0.0, hi = 0.0, lower = 0.0;
   if (i == 0) {
@@ -129,11 +135,11 @@ void RunReduction::observe_extremum(const PieceSamples& samples, FunctionRef<voi
     lo = t[0];
     hi = t[1];
     lower = f[1];
-  } else if (i == f.size() - 1) {
-    if (!peaks_between(t[4], f[4], t[3], f[3], t[2], f[2])) return;
-    lo = t[3];
-    hi = t[4];
-    lower = f[3];
+  } else if (i == n - 1) {
+    if (!peaks_between(t[i], f[i], t[i - 1], f[i - 1], t[i - 2], f[i - 2])) return;
+    lo = t[i - 1];
+    hi = t[i];
+    lower = f[i - 1];
   } else {
     lo = t[i - 1];
     hi = t[i + 1];
@@ -150,7 +156,7 @@ void RunReduction::observe_extremum(const PieceSamples& samples, FunctionRef<voi
 }
 
 void RunReduction::observe_mean(const PieceSamples& samples) {
-  if (samples.count < PieceSamples::kNodes) return;  // no width
+  if (samples.count != PieceSamples::kNodes) return;  // no width (a mean's pieces have 5 samples)
   double sum = 0.0;
   for (std::size_t k = 0; k < kLobattoWeights.size(); ++k) sum += kLobattoWeights[k] * values_[k];
   const double h = samples.t.back() - samples.t.front();

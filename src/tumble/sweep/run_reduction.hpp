@@ -1,10 +1,11 @@
 #pragma once
 // One reduction of a run over its columns (final, max, min, mean, time_of_max, and first and
 // count of a condition), gathered as the run goes. All but final() read the run's continuous
-// solution, piece by piece (PieceRows), not its rows: each piece is sampled at Gauss-Lobatto's
-// five points, a maximum between them is found on the continuous extension by Brent's method, a
-// condition's turn located there to a few ulps of t, and a mean integrated by the five-point
-// rule (exact for a polynomial of degree 7). Their values do not depend on output_every.
+// solution, piece by piece (PieceRows), not its rows: each piece is sampled at its ends and its
+// middle, a maximum beside the highest sample is found on the continuous extension by Brent's
+// method, and a condition's turn between two samples located there to a few ulps of t. A mean
+// takes two more samples, at Gauss-Lobatto's points, and integrates by their five-point rule
+// (exact for a polynomial of degree 7). Their values do not depend on output_every.
 #include <array>
 #include <memory>
 #include <span>
@@ -16,8 +17,9 @@
 
 namespace tumble {
 
-// A piece's samples: at t[0] = its start ... t[4] = its end, what the run's reductions read. A
-// piece of no width (the state just after a jump, at its instant) has one.
+// A piece's samples: at t[0] = its start ... t[count - 1] = its end, what the run's reductions
+// read: its middle between (three), or for a mean Gauss-Lobatto's five points. A piece of no
+// width (the state just after a jump, at its instant) has one.
 struct PieceSamples {
   static constexpr int kNodes = 5;
   std::array<double, kNodes> t{};
@@ -25,8 +27,8 @@ struct PieceSamples {
   // Whether t[0] was sampled for this piece (the run's start, or just after a jump or a change
   // of modes); otherwise t[0] is the last piece's end, which each reduction already has.
   bool fresh_start = true;
-  // The nodes on [a, b]; the ends exactly.
-  static PieceSamples on(double a, double b, bool fresh_start);
+  // The samples on [a, b], the ends exactly: five where a mean reads them.
+  static PieceSamples on(double a, double b, bool fresh_start, bool for_a_mean);
 };
 
 class RunReduction {
@@ -38,6 +40,7 @@ class RunReduction {
   // What it evaluates: its expression, and for a condition that is one comparison A < B, A - B.
   const BoundExpression& value() const { return value_; }
   const BoundExpression* margin() const { return margin_.get(); }
+  ReductionKind kind() const { return kind_; }
   bool reads_pieces() const { return kind_ != ReductionKind::Final; }
 
   void start();  // a new run

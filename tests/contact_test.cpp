@@ -388,14 +388,43 @@ TEST(ContactScenario, TheBackspinExampleWritesContactColumnsAndEvents) {
   std::string events_header, event_line;
   std::getline(events, events_header);
   EXPECT_EQ(events_header,
-            "t,source,what,KE_before,KE_after,approach_speed,rebound_speed,Px,Py,Pz");
+            "t,source,what,KE_before,KE_after,approach_speed,rebound_speed,Px,Py,Pz,normal_speed,"
+            "slip_speed");
   std::vector<std::string> lines;
   while (std::getline(events, event_line)) lines.push_back(event_line);
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "0,\"floor\",\"slides on its rim\",,,,,,,");  // no impact: no numbers
-  EXPECT_NE(lines[1].find(",\"floor\",\"slip stops\",,"), std::string::npos) << lines[1];
-  const double t_roll = (2 + 60 * 0.1) / (3 * 0.2 * 9.81);
+  const auto cell = [](const std::string& line, std::size_t index) {
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i < index; ++i) begin = line.find(',', begin) + 1;
+    return line.substr(begin, line.find(',', begin) - begin);
+  };
+  const auto number = [&](const std::string& line, std::size_t index) {
+    return std::stod(cell(line, index));
+  };
+  // Changes of modes: no landing (approach and rebound empty), no impulse, the energy the same
+  // on both sides. At the throw: KE = M v0^2 / 2 + (M R^2 / 2) w0^2 / 2 = 2.2 J, and the rim
+  // point slips at v0 + R w0 = 8 m/s along the floor, not across it.
+  const double M = 0.2, R = 0.1, v0 = 2, w0 = 60;
+  EXPECT_EQ(lines[0].substr(0, 30), "0,\"floor\",\"slides on its rim\",") << lines[0];
+  const double KE0 = M * v0 * v0 / 2 + M * R * R * w0 * w0 / 4;
+  EXPECT_NEAR(number(lines[0], 3), KE0, 1e-15 * KE0);
+  EXPECT_EQ(cell(lines[0], 4), cell(lines[0], 3));
+  EXPECT_EQ(cell(lines[0], 5) + cell(lines[0], 6), "");
+  EXPECT_EQ(cell(lines[0], 7) + cell(lines[0], 8) + cell(lines[0], 9), "000");
+  EXPECT_NEAR(number(lines[0], 10), 0.0, 1e-15 * (v0 + R * w0));
+  EXPECT_NEAR(number(lines[0], 11), v0 + R * w0, 1e-15 * (v0 + R * w0));
+  EXPECT_NE(lines[1].find(",\"floor\",\"slip stops\","), std::string::npos) << lines[1];
+  const double t_roll = (v0 + w0 * R) / (3 * 0.2 * 9.81);
   EXPECT_NEAR(std::stod(lines[1]), t_roll, 1e-9 * t_roll) << lines[1];
+  // Where the slip stops it rolls at v = (2 v0 - R w0) / 3 with KE = (3/4) M v^2 (rtol 1e-10 on
+  // the speeds: 1e-9 on the energy), and nothing of the slip is left in the state it leaves.
+  const double v_roll = (2 * v0 - R * w0) / 3, KE_roll = 0.75 * M * v_roll * v_roll;
+  for (const std::string& line : {lines[1], lines[2]}) {
+    EXPECT_NEAR(number(line, 3), KE_roll, 1e-9 * KE_roll) << line;
+    EXPECT_EQ(cell(line, 4), cell(line, 3)) << line;
+    EXPECT_NEAR(number(line, 10), 0.0, 1e-12 * std::abs(v_roll)) << line;
+    EXPECT_NEAR(number(line, 11), 0.0, 1e-12 * std::abs(v_roll)) << line;
+  }
   std::ifstream csv(dir / "backspin_disk.csv");
   std::string header, row, last;
   std::getline(csv, header);

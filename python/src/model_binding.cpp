@@ -50,31 +50,33 @@ py::array_t<double> rows_array(std::vector<double> values, std::size_t columns) 
 
 py::list contact_and_scenario_events(const Scenario& scenario, const SimulationResult& result) {
   // events.csv's order: at one instant the contacts' events before the scenario's own.
-  using Impact = std::optional<ContactImpactNumbers>;
-  std::vector<std::tuple<double, int, std::string, std::string, Impact>> events;
+  std::vector<std::tuple<double, int, std::string, std::string, const ContactEventRecord*>> events;
   for (const ContactEventRecord& e : result.contact_events) {
-    events.emplace_back(e.t, 0, scenario.contacts[e.contact].name, e.what, e.impact);
+    events.emplace_back(e.t, 0, scenario.contacts[e.contact].name, e.what, &e);
   }
   for (const UserEventRecord& e : result.user_events) {
-    events.emplace_back(e.t, 1, "event", e.stopped ? e.name + " (stops the run)" : e.name,
-                        std::nullopt);
+    events.emplace_back(e.t, 1, "event", e.stopped ? e.name + " (stops the run)" : e.name, nullptr);
   }
   std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) {
     return std::get<0>(a) != std::get<0>(b) ? std::get<0>(a) < std::get<0>(b)
                                             : std::get<1>(a) < std::get<1>(b);
   });
   py::list out;
-  for (const auto& [t, order, source, what, impact] : events) {
+  for (const auto& [t, order, source, what, contact_event] : events) {
     py::dict event;
     event["t"] = t;
     event["source"] = source;
     event["what"] = what;
-    if (impact) {  // events.csv's numbers of an impact
-      event["KE_before"] = impact->kinetic_energy_before;
-      event["KE_after"] = impact->kinetic_energy_after;
-      event["approach_speed"] = impact->approach_speed;
-      event["rebound_speed"] = impact->rebound_speed;
-      event["impulse"] = Vec3(impact->impulse_W);
+    if (contact_event != nullptr) {  // events.csv's numbers of a contact's event
+      event["KE_before"] = contact_event->kinetic_energy_before;
+      event["KE_after"] = contact_event->kinetic_energy_after;
+      if (const auto& impact = contact_event->impact) {
+        event["approach_speed"] = impact->approach_speed;
+        event["rebound_speed"] = impact->rebound_speed;
+        event["impulse"] = Vec3(impact->impulse_W);
+      }
+      event["normal_speed"] = contact_event->normal_speed;
+      event["slip_speed"] = contact_event->slip_speed;
     }
     out.append(event);
   }

@@ -229,6 +229,25 @@ void ContactSystem::note_contact(double t, std::size_t contact, std::string what
   s_.events.push_back({t, contact, std::move(what), impact});
 }
 
+void ContactSystem::note_event_numbers(std::size_t first, const VecX& y) {
+  if (first >= s_.events.size()) return;
+  dynamics_.calc_motion(y, true);
+  calc_contact_points();
+  const double kinetic_energy = dynamics_.kinetic_energy();
+  for (std::size_t i = first; i < s_.events.size(); ++i) {
+    ContactEventRecord& e = s_.events[i];
+    const ContactNow& now = d_.now[e.contact];
+    // An impact's energies are its own; a change of modes gives no impulse, so the energy is
+    // the same on both sides of it (a stopping slip's last trace, below slip_zero, aside).
+    e.kinetic_energy_before = e.impact ? e.impact->kinetic_energy_before : kinetic_energy;
+    e.kinetic_energy_after = e.impact ? e.impact->kinetic_energy_after : kinetic_energy;
+    e.normal_speed = now.velocity_W.dot(contacts_[e.contact].normal_W);
+    e.slip_speed =
+        (now.slip_W - contacts_[e.contact].normal_W * contacts_[e.contact].normal_W.dot(now.slip_W))
+            .norm();
+  }
+}
+
 double ContactSystem::height_above_plane(std::size_t c, const Vec3& p_B) const {
   const PlaneContact& contact = contacts_[c];
   return tumble::height_above_plane(contact, dynamics_.motion(contact.body), p_B);
@@ -500,6 +519,7 @@ void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed)
 }
 
 void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
+  const std::size_t first_new = s_.events.size();
   d_.time_now = t;
   s_.last_event_t = -std::numeric_limits<double>::infinity();  // until it is handled
   const std::size_t c = event_index / 3;
@@ -577,6 +597,7 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
       break;
   }
   s_.last_event_t = t;
+  note_event_numbers(first_new, y);
 }
 
 namespace {
@@ -666,9 +687,11 @@ void ContactSystem::begin(double t0, const VecX& y) {
     pairs_[c]->find_touching_part(v, status.touching_height, false);
     classify_contact(c, t0, y_start);
   }
+  note_event_numbers(0, y_start);
 }
 
 void ContactSystem::reclassify(double t, VecX& y, bool speeds_jumped) {
+  const std::size_t first_new = s_.events.size();
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode == ContactMode::Apart) continue;
     if (speeds_jumped && !still_touches_after_jump(c, y)) {
@@ -678,6 +701,7 @@ void ContactSystem::reclassify(double t, VecX& y, bool speeds_jumped) {
     }
     classify_contact(c, t, y);
   }
+  note_event_numbers(first_new, y);
 }
 
 bool ContactSystem::still_touches_after_jump(std::size_t c, const VecX& y) {

@@ -67,6 +67,12 @@ struct ContactEventRecord {
   std::size_t contact = 0;
   std::string what;  // "touchdown, rolls", "impact: normal speed 4.4 -> 3.5 m/s", "slides", ...
   std::optional<ContactImpactNumbers> impact;  // an impact's (and a settling touchdown's)
+  // The whole system's kinetic energy before and after it, J: an impact's, or for a change of
+  // modes (no impulse) the energy at it, twice. Then the contact point's velocity relative to
+  // the plane in the state the event leaves, m/s: along the normal (away from the plane > 0) and
+  // the size of its part along the plane (the slip; 0 where it rolls or sticks).
+  double kinetic_energy_before = 0.0, kinetic_energy_after = 0.0;
+  double normal_speed = 0.0, slip_speed = 0.0;
 };
 
 // The contact subsystem's part of a run's state: every contact's status and what has happened.

@@ -199,6 +199,9 @@ class ContactSystem {
   void check_landing_cascade(std::size_t contact, double t, double speed);
   void note_contact(double t, std::size_t contact, std::string what,
                     std::optional<ContactImpactNumbers> impact = std::nullopt);
+  // The numbers of the events from `first` on, in the state y they leave: the kinetic energy
+  // and the contact point's velocity relative to the plane (ContactEventRecord).
+  void note_event_numbers(std::size_t first, const VecX& y);
   // The work J done on contact c's body at an instant (an impact, a projection), into y's ledger.
   void add_work(std::size_t contact, double work, VecX& y) const;
   // After a jump of the speeds: whether a touching contact still touches (some of its points at

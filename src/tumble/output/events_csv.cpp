@@ -24,17 +24,24 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
     }
   }
   // After the joints' columns, so that those keep their places: an impact's own numbers.
-  fmt::format_to(out, ",approach_speed,rebound_speed,Px,Py,Pz");
+  fmt::format_to(out, ",approach_speed,rebound_speed,Px,Py,Pz,normal_speed,slip_speed");
   text.push_back('\n');
-  // The cells after a row's joint columns: an impact's numbers, or none.
-  const auto write_impact_cells = [&](const std::optional<ContactImpactNumbers>& impact) {
-    if (!impact) {
-      fmt::format_to(out, ",,,,,");
+  // The cells after a row's joint columns: a contact event's numbers (an impact's landing speeds
+  // and impulse; a change of modes has no landing and no impulse), or none.
+  const auto write_contact_cells = [&](const ContactEventRecord* e) {
+    if (e == nullptr) {
+      fmt::format_to(out, ",,,,,,,");
       return;
     }
-    fmt::format_to(out, ",{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", impact->approach_speed,
-                   impact->rebound_speed, impact->impulse_W.x(), impact->impulse_W.y(),
-                   impact->impulse_W.z());
+    if (e->impact) {
+      const ContactImpactNumbers& impact = *e->impact;
+      fmt::format_to(out, ",{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", impact.approach_speed,
+                     impact.rebound_speed, impact.impulse_W.x(), impact.impulse_W.y(),
+                     impact.impulse_W.z());
+    } else {
+      fmt::format_to(out, ",,,0,0,0");
+    }
+    fmt::format_to(out, ",{:.17g},{:.17g}", e->normal_speed, e->slip_speed);
   };
   // In time order; at one instant the jump comes first (the contacts' modes are decided again
   // after it).
@@ -43,16 +50,10 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
     for (; next_event < contact_events.size(); ++next_event) {
       const ContactEventRecord& e = contact_events[next_event];
       if (e.t > t || (e.t == t && !including)) break;
-      fmt::format_to(out, "{:.17g},{},{},", e.t, csv_quoted(contacts[e.contact]),
-                     csv_quoted(e.what));
-      if (e.impact) {
-        fmt::format_to(out, "{:.17g},{:.17g}", e.impact->kinetic_energy_before,
-                       e.impact->kinetic_energy_after);
-      } else {
-        text.push_back(',');
-      }
+      fmt::format_to(out, "{:.17g},{},{},{:.17g},{:.17g}", e.t, csv_quoted(contacts[e.contact]),
+                     csv_quoted(e.what), e.kinetic_energy_before, e.kinetic_energy_after);
       for (std::size_t k = 0; k < 6 * joints.size(); ++k) text.push_back(',');
-      write_impact_cells(e.impact);
+      write_contact_cells(&e);
       text.push_back('\n');
     }
   };
@@ -65,7 +66,7 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
       fmt::format_to(out, "{:.17g},\"event\",{},,", e.t,
                      csv_quoted(e.stopped ? e.name + " (stops the run)" : e.name));
       for (std::size_t k = 0; k < 6 * joints.size(); ++k) text.push_back(',');
-      write_impact_cells(std::nullopt);
+      write_contact_cells(nullptr);
       text.push_back('\n');
     }
   };
@@ -89,7 +90,7 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
       for (int k = 0; k < 3; ++k) fmt::format_to(out, ",{:.17g}", r.F_W(k));
       for (int k = 0; k < 3; ++k) fmt::format_to(out, ",{:.17g}", r.M_J_W(k));
     }
-    write_impact_cells(std::nullopt);
+    write_contact_cells(nullptr);
     text.push_back('\n');
   }
   write_contact_events_until(std::numeric_limits<double>::infinity(), true);

@@ -6,12 +6,15 @@
 // each joint's reaction impulse.
 //   t, source (the contact's name, "jump", or "event"; texts are quoted), what (as the summary
 //   says it; an event's name, with " (stops the run)" where it did),
-//   KE_before,
-//   KE_after (J, the whole system's; jumps and impacts), then per joint J: J.Fx J.Fy J.Fz (N s)
+//   KE_before, KE_after (J, the whole system's; jumps and contact events: a change of modes,
+//   which gives no impulse, has the energy at it in both), then per joint J: J.Fx J.Fy J.Fz (N s)
 //   J.Mx J.My J.Mz (N m s, about the joint point): the impulse its first body exerts on its
 //   second (jumps only), then an impact's approach_speed and rebound_speed (m/s, the landing
 //   point's speed into the plane before it and away from it after) and Px Py Pz (N s, world: the
-//   impulse the plane gave the body); empty cells where a row has none.
+//   impulse the plane gave the body; 0 for a change of modes), and every contact event's
+//   normal_speed and slip_speed (m/s: the contact point's velocity relative to the plane in the
+//   state the event leaves, along the normal, away > 0, and the size of its part along the
+//   plane); empty cells where a row has none.
 // Written through an AtomicFile: it appears only when complete.
 #include <filesystem>
 #include <span>

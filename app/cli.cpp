@@ -150,8 +150,8 @@ int run_cli(int argc, const char* const* argv) {
                   "Override a parameter: NAME=VALUE (VALUE may be an expression); repeatable");
   run->add_flag("--animate", run_args.animate,
                 "Also write the animation page: one self-contained HTML file (3D view of the "
-                "bodies, plots of omega, E and |L|) named like the trajectory with .html, or "
-                "output.animation");
+                "bodies, plots of omega, E, |L| and output.plots' columns, the events marked) "
+                "named like the trajectory with .html, or output.animation");
   CLI::Option* video =
       run->add_option("--video", run_args.video,
                       "Also write a video of the page's 3D view, with the name and the time: "

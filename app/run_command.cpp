@@ -1,7 +1,11 @@
 #include <fmt/core.h>
+#include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "child_process.hpp"
 #include "commands.hpp"
@@ -126,10 +130,31 @@ std::optional<std::filesystem::path> animation_path(const RunArguments& args,
   return page;
 }
 
+// What the page marks on its plots' time axes: the contacts' events, the jumps and the
+// scenario's own events, in time order (at one instant: jumps, contacts', the scenario's).
+std::vector<AnimationEvent> animation_events(const Scenario& scenario,
+                                             const SimulationResult& result) {
+  std::vector<std::pair<int, AnimationEvent>> events;
+  for (const JumpRecord& jump : result.jumps) events.push_back({0, {jump.t, "jump: " + jump.what}});
+  for (const ContactEventRecord& e : result.contact_events) {
+    events.push_back({1, {e.t, scenario.contacts[e.contact].name + ": " + e.what}});
+  }
+  for (const UserEventRecord& e : result.user_events) {
+    events.push_back({2, {e.t, "event: " + e.name}});
+  }
+  std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) {
+    return a.second.t != b.second.t ? a.second.t < b.second.t : a.first < b.first;
+  });
+  std::vector<AnimationEvent> out;
+  for (auto& [order, e] : events) out.push_back(std::move(e));
+  return out;
+}
+
 // Renders the video from the page: the one written for --animate, or else one written for the
 // video alone into a temporary directory that goes with it. Returns the summary's line.
 std::string make_video(const VideoRequest& video, const std::optional<std::filesystem::path>& page,
                        const Scenario& scenario, const RecordedTrajectory& recorded,
+                       std::span<const AnimationEvent> events,
                        const std::filesystem::path& trajectory) {
   const long frames = video_frame_count(recorded.t(0), recorded.t(recorded.rows() - 1), video);
   if (page) {
@@ -138,7 +163,7 @@ std::string make_video(const VideoRequest& video, const std::optional<std::files
     const TemporaryDirectory scratch("tumble-page");
     std::filesystem::path temporary_page = scratch.path() / trajectory.filename();
     temporary_page.replace_extension(".html");
-    write_animation_html(temporary_page, make_animation_scene(scenario), recorded);
+    write_animation_html(temporary_page, make_animation_scene(scenario), recorded, events);
     render_video(temporary_page, video, frames);
   }
   return fmt::format("{} ({} frames, {}x{}, {} fps)", video.path.string(), frames, video.width,
@@ -175,8 +200,11 @@ int run_command(const RunArguments& args) {
   }
 
   std::optional<PreparedSimulation> simulation;
+  std::vector<AnimationPlot> plots;
   try {
     simulation = prepare_simulation(scenario);
+    // output.plots is checked whether or not a page is asked for: it names columns.
+    plots = animation_plots(scenario, column_layout(scenario, *simulation->formulation));
   } catch (const ScenarioError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInvalidScenario;
@@ -222,12 +250,16 @@ int run_command(const RunArguments& args) {
   // Rows are kept in memory only for the animation page (which the video is drawn from).
   const std::optional<std::filesystem::path> animation = animation_path(args, scenario, trajectory);
   std::optional<RecordedTrajectory> recorded;
-  if (animation || video) recorded.emplace(scenario.bodies.size());
+  if (animation || video) {
+    recorded.emplace(scenario.bodies.size());
+    recorded->record_plots(column_layout(scenario, *simulation->formulation), std::move(plots));
+  }
 
   std::vector<RowSink*> sinks = {&*writer};
   if (recorded) sinks.push_back(&*recorded);
   RowFanOut rows(std::move(sinks));
   const SimulationResult result = run_simulation(*simulation, rows);
+  const std::vector<AnimationEvent> page_events = animation_events(scenario, result);
   // The events CSV: when the run had events or jumps, or the scenario asks for it.
   std::optional<std::filesystem::path> events;
   if (scenario.output.events_given || !result.contact_events.empty() || !result.jumps.empty() ||
@@ -246,7 +278,7 @@ int run_command(const RunArguments& args) {
     }
     if (animation && recorded->rows() > 0) {
       std::filesystem::create_directories(animation->parent_path());
-      write_animation_html(*animation, make_animation_scene(scenario), *recorded);
+      write_animation_html(*animation, make_animation_scene(scenario), *recorded, page_events);
     }
   } catch (const std::exception& e) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
@@ -260,7 +292,7 @@ int run_command(const RunArguments& args) {
   std::string video_failure;
   if (video && recorded->rows() > 0) {
     try {
-      video_line = make_video(*video, animation, scenario, *recorded, trajectory);
+      video_line = make_video(*video, animation, scenario, *recorded, page_events, trajectory);
     } catch (const ChildInterrupted& e) {
       end_by_signal(e.signal_number());  // the temporary page went with the unwinding
     } catch (const std::invalid_argument& e) {

@@ -185,6 +185,35 @@ TEST(Cli, OutputsThatWouldShareAFileAreRefused) {
   EXPECT_FALSE(fs::exists(dir / "out" / "run.html"));
 }
 
+// output.plots names trajectory columns: a name the run does not write is refused at its key,
+// before the run and whether or not the page is asked for; a list that is not one of names too.
+TEST(Cli, APlotOfAColumnTheRunDoesNotWriteIsRefusedAtItsKey) {
+  const fs::path dir = fresh_run_dir("plots");
+  const std::string ball =
+      "tumble: 1\nbodies:\n  ball: {shape: sphere, radius: 0.1, mass: 1}\n"
+      "simulate: {duration: 0.1}\n";
+  std::ofstream(dir / "typo.yaml") << ball + "output:\n  plots: [ball.speed, [ball.z, bal.vz]]\n";
+  const CommandResult typo =
+      run_tumble("run " + (dir / "typo.yaml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(typo.status, 3) << typo.out;
+  EXPECT_NE(typo.out.find("typo.yaml:6:32: output.plots[1][1]: 'bal.vz' is not a column of this "
+                          "run's trajectory"),
+            std::string::npos)
+      << typo.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "typo.csv"));
+  std::ofstream(dir / "nested.yaml") << ball + "output:\n  plots: [[ball.z, {a: 1}]]\n";
+  const CommandResult nested = run_tumble("run " + (dir / "nested.yaml").string() +
+                                          " --animate --out " + (dir / "out").string());
+  EXPECT_EQ(nested.status, 3) << nested.out;
+  EXPECT_NE(nested.out.find("output.plots[0][1]: expected a column's name"), std::string::npos)
+      << nested.out;
+  std::ofstream(dir / "good.yaml") << ball + "output:\n  plots: [ball.speed, [ball.z, ball.vz]]\n";
+  const CommandResult good = run_tumble("run " + (dir / "good.yaml").string() +
+                                        " --animate --out " + (dir / "out").string());
+  EXPECT_EQ(good.status, 0) << good.out;
+  EXPECT_TRUE(fs::exists(dir / "out" / "good.html"));
+}
+
 // Outputs that met only once the run knew its paths were written over each other with exit 0:
 // the events file named as the page --animate derives (the events lost), a page named as the
 // default events file, events written through a linked folder onto the trajectory. Each is now

@@ -488,9 +488,9 @@ TEST(ScenarioError, UnknownKeySuggestsTheClosestValidKey) {
   expect_load_error(kHead + "bodies:\n  b: {shpe: sphere, radius: 1, mass: 1}\n" + kSimulate,
                     {3, 7, "bodies.b.shpe", "unknown key 'shpe'; did you mean 'shape'?"});
   // A key with no near match lists the valid ones.
-  expect_load_error(
-      kHead + kSphere + kSimulate + "output: {movie: a.mp4}\n",
-      {5, 10, "output.movie", "unknown key 'movie' (output takes: trajectory, animation, events)"});
+  expect_load_error(kHead + kSphere + kSimulate + "output: {movie: a.mp4}\n",
+                    {5, 10, "output.movie",
+                     "unknown key 'movie' (output takes: trajectory, animation, events, plots)"});
 }
 
 TEST(ScenarioError, ADimensionOfAnotherShapeIsAnUnknownKey) {

@@ -41,6 +41,15 @@ before(async () => {
   animate(join(root, 'examples', 'planar', 'bat_struck.yaml'), work);
   pages.planarBat = join(work, 'bat_struck_planar.html');
 
+  // The backspin disk with plots of its choosing: its speed, and the floor's slip and normal force.
+  const disk = readFileSync(join(root, 'examples', 'backspin_disk.yaml'), 'utf8');
+  assert.match(disk, /trajectory: backspin_disk\.csv/);
+  writeFileSync(join(work, 'plotted_disk.yaml'),
+    disk.replace('  trajectory: backspin_disk.csv',
+      '  trajectory: plotted_disk.csv\n  plots: [disk.speed, [floor.slip, floor.N]]'));
+  animate(join(work, 'plotted_disk.yaml'), work);
+  pages.plottedDisk = join(work, 'plotted_disk.html');
+
   // 20,000 rows: the prism with a row every millisecond.
   const prism = readFileSync(join(root, 'examples', 'tumbling_prism.yaml'), 'utf8');
   assert.match(prism, /output_every: 0\.05/);
@@ -111,7 +120,9 @@ test('the prism page draws the body, plays, pauses, scrubs, and plots every row'
   const { page, context, seen } = await open(pages.prism);
   const rows = await page.evaluate(() => window.tumble.rows);
   assert.equal(rows, 401);
-  assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()), [401, 401, 401, 401]);
+  // omega (body, world), energy, |L|, and the default speed plot.
+  assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()),
+    [401, 401, 401, 401, 401]);
   assert.equal(await page.title(), 'tumbling prism');
 
   // Play: time advances; pause: it stops.
@@ -161,10 +172,40 @@ test('the prism page draws the body, plays, pauses, scrubs, and plots every row'
   await context.close();
 });
 
+// The backspin disk (v0 = 2 m/s, w0 = 60 rad/s backspin, R = 0.1 m, mu = 0.2): it slides at
+// first, its slip v0 + R w0 = 8 m/s falling by 3 mu g a second, and from t = 8 / (3 mu g) =
+// 1.359 s it rolls back at (2 v0 - R w0) / 3 = -2/3 m/s with no slip; the floor bears M g.
+test('the scenario\'s own plots are drawn with the run\'s events marked on every plot', async () => {
+  const { page, context, seen } = await open(pages.plottedDisk);
+  assert.equal(await page.evaluate(() => window.tumble.events), 3);
+  const details = await page.evaluate(() => window.tumble.plotDetails());
+  assert.equal(details.length, 6);
+  assert.deepEqual(details.slice(4).map((d) => [d.title, d.labels]),
+    [['disk.speed', ['disk.speed']], ['floor.slip, floor.N', ['floor.slip', 'floor.N']]]);
+  // Every plot marks the three events (the slip's stop and the rolling it starts: one instant).
+  assert.deepEqual(details.map((d) => d.eventMarks), [3, 3, 3, 3, 3, 3]);
+  const [speed, [slip, normal]] = [details[4].values[0], details[5].values];
+  assert.ok(Math.abs(speed[0] - 2) < 1e-12 && Math.abs(speed[1] - 2 / 3) < 1e-8, String(speed));
+  assert.ok(Math.abs(slip[0] - 8) < 1e-12 && Math.abs(slip[1]) < 1e-9, String(slip));
+  assert.ok(Math.abs(normal[1] - 0.2 * 9.81) < 1e-9, String(normal));
+  // Tick labels tell their ticks apart on every plot (|L| varies by a part in a thousand here).
+  for (const d of details) {
+    assert.ok(d.ticks.length >= 2, d.title);
+    assert.equal(new Set(d.ticks).size, d.ticks.length, `${d.title}: ${d.ticks}`);
+  }
+  await page.evaluate(() => window.tumble.seek(1.0));
+  await page.waitForTimeout(100);
+  await page.screenshot({ path: join(artifacts, 'plotted_disk.png'), fullPage: true });
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
 test('the projectile page opens offline without errors', async () => {
   const { page, context, seen } = await open(pages.projectile);
   assert.equal(await page.evaluate(() => window.tumble.rows), 181);
-  assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()), [181, 181, 181, 181]);
+  assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()),
+    [181, 181, 181, 181, 181]);
   await page.evaluate(() => window.tumble.seek(0.9));
   await page.waitForTimeout(100);
   await page.screenshot({ path: join(artifacts, 'projectile.png'), fullPage: true });
@@ -267,7 +308,7 @@ test('a 20,000-row page stays under 5 MB, plays, and a frame does a bounded amou
   const { page, context, seen } = await open(pages.dense);
   assert.equal(await page.evaluate(() => window.tumble.rows), 20001);
   assert.deepEqual(await page.evaluate(() => window.tumble.plotPoints()),
-    [20001, 20001, 20001, 20001]);
+    [20001, 20001, 20001, 20001, 20001]);
   await page.waitForTimeout(500);
   // Mean interval between animation frames over two seconds of playback.
   const frame = await page.evaluate(() => new Promise((done) => {

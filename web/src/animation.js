@@ -309,6 +309,61 @@ const plotSpecs = [
     columns: [time, systemColumn(3)],
   },
 ];
+// The scenario's own plots (output.plots; by default each body's speed and the joints' angles):
+// their columns' values row by row, each plot's columns in turn.
+const chosenPlots = data.plots ?? [];
+const chosenColumns = chosenPlots.reduce((n, plot) => n + plot.columns.length, 0);
+const chosenValues = chosenColumns > 0 ? decode(data.plot_values, Float64Array) : new Float64Array(0);
+{
+  let first = 0;
+  for (const plot of chosenPlots) {
+    const series = [{}], columns = [time];
+    plot.columns.forEach((name, k) => {
+      const column = new Float64Array(rows);
+      for (let i = 0; i < rows; ++i) column[i] = chosenValues[i * chosenColumns + first + k];
+      columns.push(column);
+      series.push({ label: name, stroke: kColors[k % kColors.length], width: 1.5 });
+    });
+    first += plot.columns.length;
+    plotSpecs.push({ title: plot.title, series, columns });
+  }
+}
+// The run's events (contacts', jumps, the scenario's), marked on every plot's time axis.
+const events = data.events ?? [];
+// Tick labels with the digits their spacing needs: ticks 5e-4 apart on |L| = 0.1125 read
+// 0.1120 0.1125 0.1130, not 0.112 0.113 0.113.
+function tickLabels(_plot, splits) {
+  const step = splits.length > 1 ? Math.abs(splits[1] - splits[0]) : 0;
+  const largest = Math.max(...splits.map((v) => Math.abs(v)));
+  if (!(step > 0) || !Number.isFinite(largest)) return splits.map((v) => String(v));
+  if (largest >= 1e6 || largest < 1e-3) {
+    const digits = Math.min(15, Math.max(1, Math.ceil(Math.log10(largest / step))));
+    return splits.map((v) => (v === 0 ? '0' : v.toExponential(digits)));
+  }
+  const decimals = Math.min(15, Math.max(0, Math.ceil(-Math.log10(step) - 1e-9)));
+  return splits.map((v) => v.toFixed(decimals));
+}
+// A dashed line across a plot at each event's time.
+function markEvents(plot) {
+  const { ctx } = plot;
+  const top = plot.bbox.top, height = plot.bbox.height;
+  ctx.save();
+  ctx.strokeStyle = '#888';
+  ctx.lineWidth = 1;
+  ctx.setLineDash([4, 3]);
+  let drawn = 0;
+  for (const event of events) {
+    const x = Math.round(plot.valToPos(event.t, 'x', true)) + 0.5;
+    if (x < plot.bbox.left || x > plot.bbox.left + plot.bbox.width) continue;
+    ctx.beginPath();
+    ctx.moveTo(x, top);
+    ctx.lineTo(x, top + height);
+    ctx.stroke();
+    ++drawn;
+  }
+  ctx.restore();
+  plot.eventMarks = drawn;
+}
 // A y range never narrower than a thousandth of the values' size: a conserved quantity that
 // wobbles at round-off (1e-12 relative) must read as the flat line it is, not as noise blown up
 // to fill the panel.
@@ -327,8 +382,9 @@ const plots = plotSpecs.map((spec) => {
     height: 190,
     series: spec.series.map((s, i) => (i === 0 ? { label: 't (s)' } : s)),
     scales: { x: { time: false }, y: { range: conservedAwareRange } },
-    axes: [{ label: 't (s)' }, { size: 60 }],
+    axes: [{ label: 't (s)' }, { size: 70, values: tickLabels }],
     cursor: { drag: { x: true, y: false } },
+    hooks: { draw: [markEvents] },
   }, spec.columns, holder);
   const cursor = document.createElement('div');
   cursor.className = 'plot-cursor';
@@ -494,6 +550,15 @@ window.tumble = {
   get playing() { return playing; },
   get video() { return video; },
   plotPoints: () => plots.map(({ plot }) => plot.data[0].length),
+  // Each plot's title, its series' labels, the event marks drawn on it and its y ticks' labels.
+  plotDetails: () => plots.map(({ plot }, i) => ({
+    title: plotSpecs[i].title,
+    labels: plotSpecs[i].series.slice(1).map((x) => x.label),
+    eventMarks: plot.eventMarks ?? 0,
+    ticks: (plot.axes[1]._values ?? []).map(String),
+    values: plot.data.slice(1).map((column) => [column[0], column[column.length - 1]]),
+  })),
+  events: events.length,
   // The last frame's work: rows' times searched, rows drawn from, and the renderer's draw calls
   // and triangles (three.js resets these each render).
   frameWork: () => ({ ...frameWork, drawCalls: renderer.info.render.calls,

@@ -185,7 +185,8 @@ void append_part(std::string& json, const AnimationPart& part) {
 }
 
 // The page's data: see web/src/animation.js for the layout it reads.
-std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& rows) {
+std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& rows,
+                       std::span<const AnimationEvent> events) {
   const std::size_t n = rows.rows();
   const std::size_t nb = rows.body_count();
   std::string json =
@@ -249,7 +250,26 @@ std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& ro
   append_base64_of(json, system);
   json += R"(,"body_rows":)";
   append_base64_of(json, body_rows);
-  json += '}';
+  // The scenario's plots: their titles and columns, and the columns' values row by row.
+  json += R"(,"plots":[)";
+  for (std::size_t p = 0; p < rows.plots().size(); ++p) {
+    const AnimationPlot& plot = rows.plots()[p];
+    json +=
+        fmt::format(R"({}{{"title":{},"columns":[)", p == 0 ? "" : ",", json_string(plot.title));
+    for (std::size_t c = 0; c < plot.columns.size(); ++c) {
+      if (c > 0) json += ',';
+      json += json_string(plot.columns[c]);
+    }
+    json += "]}";
+  }
+  json += R"(],"plot_values":)";
+  append_base64_of(json, rows.plot_values());
+  json += R"(,"events":[)";
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    json += fmt::format(R"({}{{"t":{},"what":{}}})", e == 0 ? "" : ",", number(events[e].t),
+                        json_string(events[e].what));
+  }
+  json += "]}";
   return json;
 }
 
@@ -345,6 +365,39 @@ AnimationScene make_animation_scene(const Scenario& scenario) {
   return scene;
 }
 
+void RecordedTrajectory::record_plots(const ColumnLayout& layout,
+                                      std::vector<AnimationPlot> plots) {
+  std::vector<std::string> wanted;
+  for (const AnimationPlot& plot : plots) {
+    wanted.insert(wanted.end(), plot.columns.begin(), plot.columns.end());
+  }
+  std::vector<std::function<double(const OutputRow&)>> by_name(wanted.size());
+  const std::vector<std::string> names = column_names(layout);
+  std::size_t i = 0;
+  for_each_column(layout, [&](std::string_view, std::string_view, auto&& value_of) {
+    for (std::size_t k = 0; k < wanted.size(); ++k) {
+      if (wanted[k] == names[i]) {
+        by_name[k] = [value_of](const OutputRow& row) {
+          return static_cast<double>(value_of(row));
+        };
+      }
+    }
+    ++i;
+  });
+  for (std::size_t k = 0; k < wanted.size(); ++k) {
+    if (!by_name[k]) {
+      throw std::invalid_argument("RecordedTrajectory: no column " + wanted[k]);
+    }
+  }
+  plots_ = std::move(plots);
+  plot_columns_ = std::move(by_name);
+}
+
+void RecordedTrajectory::write_row(const OutputRow& row) {
+  record(row.t, row.states, *row.quantities);
+  for (const auto& value_of : plot_columns_) plot_values_.push_back(value_of(row));
+}
+
 void RecordedTrajectory::record(double t, std::span<const BodyState> states,
                                 const SystemQuantities& q) {
   if (states.size() != body_count_) {
@@ -357,7 +410,7 @@ void RecordedTrajectory::record(double t, std::span<const BodyState> states,
 }
 
 void write_animation_html(const std::filesystem::path& path, const AnimationScene& scene,
-                          const RecordedTrajectory& rows) {
+                          const RecordedTrajectory& rows, std::span<const AnimationEvent> events) {
   if (scene.bodies.size() != rows.body_count()) {
     throw std::invalid_argument(
         fmt::format("write_animation_html: {} bodies in the scene, {} in "
@@ -367,7 +420,7 @@ void write_animation_html(const std::filesystem::path& path, const AnimationScen
   if (rows.rows() == 0) {
     throw std::invalid_argument("write_animation_html: no rows to animate");
   }
-  const std::string json = scene_json(scene, rows);
+  const std::string json = scene_json(scene, rows, events);
   AtomicFile file(path);
   file.write("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
   file.write("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");

@@ -2,8 +2,9 @@
 // The animation page of `tumble run --animate`: ONE self-contained HTML file that shows the
 // bodies with their true shapes moving through the recorded rows over the planes they touch,
 // their axes, the angular velocity and the angular momentum about the COM, a trail of the COM,
-// and the time plots of omega (body and world axes), KE / PE / E and |L|, with a cursor that
-// follows the animation.
+// and the time plots of omega (body and world axes), KE / PE / E and |L|, then the scenario's own
+// plots of chosen columns (animation_plots.hpp), with a cursor that follows the animation and the
+// run's events marked on every plot.
 // three.js and uPlot are embedded (animation_assets.hpp): the page makes no network request.
 //
 // The trajectory is embedded as base64 in a <script type="application/json"> element: per row
@@ -12,12 +13,15 @@
 // end the element early, and the page shows names as text only.
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/inertia/shapes.hpp"
+#include "tumble/output/animation_plots.hpp"
+#include "tumble/output/columns.hpp"
 #include "tumble/output/output_row.hpp"
 #include "tumble/scenario/scenario.hpp"
 
@@ -79,8 +83,10 @@ AnimationScene make_animation_scene(const Scenario& scenario);
 class RecordedTrajectory final : public RowSink {
  public:
   explicit RecordedTrajectory(std::size_t body_count) : body_count_(body_count) {}
+  // From now on each row's values of these plots' columns are kept too (write_row).
+  void record_plots(const ColumnLayout& layout, std::vector<AnimationPlot> plots);
   void record(double t, std::span<const BodyState> states, const SystemQuantities& q);
-  void write_row(const OutputRow& row) override { record(row.t, row.states, *row.quantities); }
+  void write_row(const OutputRow& row) override;
   std::size_t rows() const { return t_.size(); }
   std::size_t body_count() const { return body_count_; }
   double t(std::size_t row) const { return t_[row]; }
@@ -88,9 +94,15 @@ class RecordedTrajectory final : public RowSink {
     return states_[row * body_count_ + body];
   }
   const SystemQuantities& quantities(std::size_t row) const { return quantities_[row]; }
+  const std::vector<AnimationPlot>& plots() const { return plots_; }
+  // Row after row, each plot's columns in turn.
+  const std::vector<double>& plot_values() const { return plot_values_; }
 
  private:
   std::size_t body_count_;
+  std::vector<AnimationPlot> plots_;
+  std::vector<std::function<double(const OutputRow&)>> plot_columns_;
+  std::vector<double> plot_values_;
   std::vector<double> t_;
   std::vector<BodyState> states_;  // row-major: rows x bodies
   std::vector<SystemQuantities> quantities_;
@@ -99,8 +111,10 @@ class RecordedTrajectory final : public RowSink {
 // Writes the page under a temporary name beside `path` and renames it into place. Throws
 // std::runtime_error naming the path if it cannot be written, or std::invalid_argument if the
 // scene and the rows disagree on the number of bodies.
+// `events` (in time order) are marked on the plots' time axes.
 void write_animation_html(const std::filesystem::path& path, const AnimationScene& scene,
-                          const RecordedTrajectory& rows);
+                          const RecordedTrajectory& rows,
+                          std::span<const AnimationEvent> events = {});
 
 // For the tests: the JSON string literal of `text` (with quotes), safe inside <script>.
 std::string json_string(std::string_view text);

@@ -187,6 +187,13 @@ struct SimulateSpec {
   SourceLocation where;
 };
 
+// One of the animation page's own plots (output.plots): trajectory columns drawn on one panel.
+struct PlotSpec {
+  std::vector<std::string> columns;   // as the CSV's header names them
+  std::vector<std::string> keys;      // each one's key, "output.plots[1][0]"
+  std::vector<SourceLocation> where;  // and its place
+};
+
 struct OutputSpec {
   std::string trajectory;  // relative path; default "<scenario file stem>.csv"
   std::string animation;   // relative path of the animation page; empty: none (unless --animate)
@@ -197,6 +204,10 @@ struct OutputSpec {
   SourceLocation trajectory_where;  // where output.trajectory is given (line 0: the default)
   SourceLocation animation_where;   // ... output.animation (line 0: not given)
   SourceLocation events_where;      // ... output.events (line 0: the default)
+  // The animation page's plots of the scenario's choosing, after its own (omega, energy, |L|);
+  // not given: each body's speed, and the joints' angles where there are any.
+  std::vector<PlotSpec> plots;
+  bool plots_given = false;
 };
 
 // An `events:` entry: a moment the run locates, as it does contacts' mode changes (to the

@@ -184,8 +184,34 @@ OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
   if (!field) return output;
   const MapReader map(reader, *field,
                       "the output's settings {trajectory: file.csv, animation: file.html, "
-                      "events: file.csv}");
-  map.allow_only({"trajectory", "animation", "events"}, "output");
+                      "events: file.csv, plots: [[COLUMN, ...], ...]}");
+  map.allow_only({"trajectory", "animation", "events", "plots"}, "output");
+  if (const auto f = map.find("plots")) {
+    output.plots_given = true;
+    const char* form =
+        "of plots, each a column or a list of columns (e.g. [disk.speed, "
+        "[floor.slip, floor.N]])";
+    for (const Field& item : reader.items(*f, form)) {
+      PlotSpec plot;
+      const auto add = [&](const Field& column) {
+        if (!column.node.IsScalar()) {
+          reader.fail_at_value(column,
+                               "expected a column's name (a trajectory CSV header, "
+                               "e.g. disk.speed)");
+        }
+        plot.columns.push_back(reader.text(column));
+        plot.keys.push_back(column.path);
+        plot.where.push_back(reader.location(column.value_mark()));
+      };
+      if (item.node.IsSequence()) {
+        for (const Field& column : reader.items(item, "of columns")) add(column);
+        if (plot.columns.empty()) reader.fail_at_value(item, "a plot needs a column at least");
+      } else {
+        add(item);
+      }
+      output.plots.push_back(std::move(plot));
+    }
+  }
   if (const auto f = map.find("trajectory")) {
     output.trajectory = read_relative_path(reader, *f, "run.csv");
     output.trajectory_where = reader.location(f->value_mark());

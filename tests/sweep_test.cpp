@@ -211,6 +211,26 @@ TEST(SweepReductions, AJumpsReactionImpulseAndEnergiesAgainstTheBatsClosedForms)
 // there), M R vx + I wy, so once its slip stops it rolls at vx = (2 v0 - R w0) / 3; a ball dropped
 // from h leaves its first impact at vz = e sqrt(2 g h). An event the scenario cannot have, or no
 // expression, is refused with the text.
+// The bat hanging at rest, struck by P at d below the knob at t = 0.1 s: a condition the blow
+// turns is at the blow's instant exactly, and the swing it starts, w0 = P d / I_O, rises to the
+// angle where M g L (1 - cos theta) = I_O w0^2 / 2, read between the rows (1 ms apart here).
+TEST(SweepReductions, AConditionAJumpTurnsIsAtItsInstantAndTheSwingPeaksBetweenRows) {
+  const double M = 0.9, length = 0.84, r = 0.03, L = length / 2, P = 1.5, d = 0.5, g = 9.81;
+  const double I_O = M * (3 * r * r + length * length) / 12 + M * L * L;
+  const double w0 = P * d / I_O;
+  const double theta_max = std::acos(1 - I_O * w0 * w0 / (2 * M * g * L));
+  const SweepSpec spec = spec_for(test::read_file(test::example("bat_struck.yaml")), {"d"},
+                                  {"hit=first(bat.speed > 1e-3)", "swing=max(abs(knob.angle))",
+                                   "at=time_of_max(abs(knob.angle))"});
+  SweepRunner runner(spec);
+  const RunRecord rec = runner.run(std::vector<double>{d});
+  ASSERT_EQ(rec.status, RunStatus::Ok) << rec.message;
+  EXPECT_EQ(rec.values[0], 0.1);
+  // rtol 1e-8 on the swing: the peak angle to 1e-7 (rows 1 ms apart alone: 2e-6 rad off).
+  EXPECT_NEAR(rec.values[1], theta_max, 1e-7 * theta_max);
+  EXPECT_GT(rec.values[2], 0.1);
+}
+
 TEST(SweepReductions, AfterAnEventReadsTheStateItLeaves) {
   {
     const double M = 0.9, length = 0.84, r = 0.03, L = length / 2, P = 1.5;

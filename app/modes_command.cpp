@@ -133,12 +133,15 @@ int modes_command(const ModesArguments& args) {
       const RecordedTrajectory rows = mode_shape_rows(modes, std::max(size, 1e-3), shown);
       if (rows.rows() > 0) {
         const std::filesystem::path page = stem.string() + "_modes.html";
-        write_animation_html(page, scene, rows);
+        // Each mode's start is marked on the plots, as a run's events are.
+        std::vector<AnimationEvent> starts;
         std::string when;
         for (const ShownMode& s : shown) {
+          starts.push_back({s.start, fmt::format("mode {}", s.mode + 1)});
           when += fmt::format("{}mode {} from t = {:.4g} s", when.empty() ? "" : ", ", s.mode + 1,
                               s.start);
         }
+        write_animation_html(page, scene, rows, starts);
         wrote += fmt::format(" and {} ({})", page.string(), when);
       }
     }

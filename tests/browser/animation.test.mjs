@@ -49,6 +49,10 @@ before(async () => {
       '  trajectory: plotted_disk.csv\n  plots: [disk.speed, [floor.slip, floor.N]]'));
   animate(join(work, 'plotted_disk.yaml'), work);
   pages.plottedDisk = join(work, 'plotted_disk.html');
+  // tumble modes' page: the sleeping top's two nutation modes, one after the other.
+  execFileSync(tumble, ['modes', join(root, 'examples', 'modes', 'sleeping_top.yaml'), '--out', work,
+    '--animate'], { stdio: 'pipe' });
+  pages.topModes = join(work, 'sleeping_top_modes.html');
 
   // 20,000 rows: the prism with a row every millisecond.
   const prism = readFileSync(join(root, 'examples', 'tumbling_prism.yaml'), 'utf8');
@@ -196,6 +200,19 @@ test('the scenario\'s own plots are drawn with the run\'s events marked on every
   await page.evaluate(() => window.tumble.seek(1.0));
   await page.waitForTimeout(100);
   await page.screenshot({ path: join(artifacts, 'plotted_disk.png'), fullPage: true });
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
+test('the modes page plots the COM\'s speed and marks where each mode starts', async () => {
+  const { page, context, seen } = await open(pages.topModes);
+  const details = await page.evaluate(() => window.tumble.plotDetails());
+  assert.deepEqual(details.map((d) => d.title).slice(4), ['speed of the COM (m/s)']);
+  assert.deepEqual(details[4].labels, ['top.speed']);
+  // Modes 1 and 2 start at 0 and at 4.47 s: two marks on each of the five plots.
+  assert.equal(await page.evaluate(() => window.tumble.events), 2);
+  assert.deepEqual(details.map((d) => d.eventMarks), [2, 2, 2, 2, 2]);
   assert.deepEqual(seen.errors, []);
   assert.deepEqual(seen.requests, []);
   await context.close();

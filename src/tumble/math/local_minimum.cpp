@@ -16,7 +16,10 @@ LocalMinimum local_minimum(double a, double b, double x0, double f0,
   const double width = b - a;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double middle = 0.5 * (a + b);
-    const double tol = root_eps * (std::abs(x) + width) / 3.0;
+    // Relative to the interval, not to t: a minimum late in a long run is found as finely as an
+    // early one (down to the spacing of doubles near x).
+    const double tol =
+        root_eps * width / 3.0 + 2.0 * std::numeric_limits<double>::epsilon() * std::abs(x);
     if (std::abs(x - middle) <= 2.0 * tol - 0.5 * (b - a)) break;
     bool parabolic = false;
     if (std::abs(step_before) > tol) {

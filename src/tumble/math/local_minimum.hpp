@@ -12,9 +12,10 @@ struct LocalMinimum {
   double value = 0.0;
 };
 
-// The least value of f on [a, b] found from x0 (inside, f(x0) = f0), to |x - x*| within
-// sqrt(eps) (|x| + b - a): near a smooth minimum f is flat, so its value is then within about
-// eps |f''| (|x| + b - a)^2 of the least. Never worse than f0.
+// The least value of f on [a, b] found from x0 (inside, f(x0) = f0), to |x - x*| within about
+// sqrt(eps) (b - a) (or a few ulps of x, if more): near a smooth minimum f is flat, so its value
+// is then within about eps |f''| (b - a)^2 of the least, eps of f's change over [a, b]. Never
+// worse than f0.
 LocalMinimum local_minimum(double a, double b, double x0, double f0, FunctionRef<double(double)> f);
 
 }  // namespace tumble

@@ -18,6 +18,14 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
   const Linearisation& lin = modes.linearisation;
   const ArticulatedFormulation formulation(eq.shared_model());
   RecordedTrajectory rows(model.body_count());
+  // The page's plot of each body's speed, as a run's page has by default: the mode's speeds.
+  ColumnLayout bodies;
+  AnimationPlot speeds{"speed of the COM (m/s)", {}};
+  for (const RigidBody& body : model.model.bodies) {
+    bodies.bodies.push_back(body.name);
+    speeds.columns.push_back(body.name + ".speed");
+  }
+  rows.record_plots(bodies, {std::move(speeds)});
   std::vector<BodyState> states(model.body_count());
   shown.clear();
   double t = 0.0;
@@ -64,8 +72,9 @@ RecordedTrajectory mode_shape_rows(const ScenarioModes& modes, double size,
       for (Eigen::Index i = 0; i < layout.size(); ++i) z(i) = scale * (shape(i) * swing).real();
       formulation.unpack_all(displace_positions(model, layout, eq.y0(), z), states);
       eq.calc_body_velocities(z, states);
-      rows.record(t + cycle * row / kRowsPerCycle, states,
-                  calc_system_quantities(model.model.bodies, states, model.model.gravity_W));
+      const SystemQuantities q =
+          calc_system_quantities(model.model.bodies, states, model.model.gravity_W);
+      rows.write_row({t + cycle * row / kRowsPerCycle, states, &q, nullptr});
     }
     t += cycle * kCycles + cycle / kRowsPerCycle;
   }

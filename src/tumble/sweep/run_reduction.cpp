@@ -146,8 +146,13 @@ void RunReduction::observe_extremum(const PieceSamples& samples, FunctionRef<voi
     lower = std::min(f[i - 1], f[i + 1]);
   }
   // A peak between two samples rises above the higher by less than the higher rises above the
-  // lower: a piece that cannot beat the best so far is not searched.
-  if (f[i] + (f[i] - lower) < sign * best_) return;
+  // lower: a piece that cannot beat the best so far is not searched. Nor one whose samples agree
+  // to round-off (a conserved E): there is nothing between them to find.
+  const double rise = f[i] - lower;
+  if (f[i] + rise < sign * best_ ||
+      rise <= 8.0 * std::numeric_limits<double>::epsilon() * std::abs(f[i])) {
+    return;
+  }
   const LocalMinimum peak = local_minimum(lo, hi, t[i], -f[i], [&](double at) {
     load(at);
     return -sign * value_.evaluate();

@@ -1,7 +1,8 @@
 #pragma once
-// A smooth piece of a run (SolutionPiece) as output rows: the row at any time in it, computed
-// from the integrator's continuous extension as the trajectory's rows are. What a sweep's
-// reductions read between the rows: a maximum where it is, not where a row happened to fall.
+// Output rows of states that are not the trajectory's rows, made as those are: the state just
+// after an event (a sweep's after()), and any time of a smooth piece of the run (SolutionPiece)
+// from the integrator's continuous extension: what a sweep's reductions read between the rows, a
+// maximum where it is, not where a row happened to fall.
 #include <span>
 #include <vector>
 
@@ -12,9 +13,31 @@
 
 namespace tumble {
 
+// The row of any state of a run, into buffers of its own.
+class StateRows {
+ public:
+  StateRows(const Formulation& formulation, bool planar);
+
+  // From now on, plane angles are counted on from those of `row_extras` (a row's), and the
+  // extras not computed keep its values.
+  void continue_from(const RowExtras& row_extras) { extras_ = row_extras; }
+
+  // The row of y at t: the bodies' states always; the joints', contacts' and elements' columns
+  // (extras) and the system's energies and momenta (quantities) only where asked, as they cost a
+  // solve. Valid until the next call.
+  OutputRow row_of(double t, const VecX& y, bool with_extras, bool with_quantities);
+
+ private:
+  const Formulation& formulation_;
+  bool planar_;
+  std::vector<BodyState> states_;
+  RowExtras extras_;
+  SystemQuantities quantities_;
+};
+
 class PieceRows {
  public:
-  PieceRows(const Formulation& formulation, bool planar);
+  PieceRows(const Formulation& formulation, bool planar) : rows_(formulation, planar) {}
 
   // The run's first piece takes its plane angles on from `run_extras` (the first row's, or the
   // last row's before a checkpoint); later ones from the samples before them.
@@ -25,20 +48,14 @@ class PieceRows {
   // Whether the piece starts where the last one ended, with nothing between (SolutionPiece).
   bool continues() const { return piece_->continues(); }
 
-  // The row at t in [t_begin, t_end]: the bodies' states always; the joints', contacts' and
-  // elements' columns (extras) and the system's energies and momenta (quantities) only where
-  // asked, as they cost a solve. Valid until the next call.
+  // The row at t in [t_begin, t_end] (StateRows::row_of). Valid until the next call.
   OutputRow row_at(double t, bool with_extras, bool with_quantities);
 
  private:
-  const Formulation& formulation_;
-  bool planar_;
+  StateRows rows_;
   const SolutionPiece* piece_ = nullptr;
   bool started_ = false;
   VecX y_;
-  std::vector<BodyState> states_;
-  RowExtras extras_;
-  SystemQuantities quantities_;
 };
 
 }  // namespace tumble

@@ -297,17 +297,13 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
   // The states just after events: computed as a row is, into buffers of their own (the rows'
   // planar angles run on from the last row's), only for a run that asks for them.
   DriverOptions options = simulation.options;
-  std::vector<BodyState> event_states;
-  RowExtras event_extras;
+  std::optional<StateRows> event_rows;
   if (simulation.on_event_state) {
-    event_states.resize(states.size());
+    event_rows.emplace(formulation, simulation.planar);
     options.on_event_state = [&](double t, const VecX& y) {
-      formulation.unpack_all(y, event_states);
-      event_extras = extras;
-      formulation.calc_row_extras(t, y, event_extras);
-      if (simulation.planar) continue_planar_angles(t, event_states, event_extras);
-      const SystemQuantities q = row_quantities(model, event_states, event_extras);
-      simulation.on_event_state(t, event_states, q, event_extras);
+      event_rows->continue_from(extras);
+      const OutputRow row = event_rows->row_of(t, y, true, true);
+      simulation.on_event_state(t, row.states, *row.quantities, *row.extras);
     };
   }
 

@@ -129,9 +129,11 @@ int run_cli(int argc, const char* const* argv) {
       "--video an .mp4 or .gif of that page's 3D view) and print a summary (steps, "
       "evaluations, wall time, drift of E and |L|, largest |R^T R - I|, the events).\nExit "
       "status: 0 done, "
-      "2 bad command line, 3 invalid scenario (FILE:LINE:COL: KEY: why; a scenario file over "
-      "64 MiB or a mesh over 1 GiB: TUMBLE_MAX_SCENARIO_MIB and TUMBLE_MAX_MESH_MIB raise the "
-      "limits, docs/scenario.md), 4 integration failed (the rows so far stay a valid CSV), 5 "
+      "2 bad command line (also a --resume FILE that is not a whole checkpoint of this scenario "
+      "and these --set values, or a trajectory under --out that is not the stopped run's), 3 "
+      "invalid scenario (FILE:LINE:COL: KEY: why; a scenario file over 64 MiB or a mesh over 1 "
+      "GiB: TUMBLE_MAX_SCENARIO_MIB and TUMBLE_MAX_MESH_MIB raise the limits, "
+      "docs/scenario.md), 4 integration failed (the rows so far stay a valid CSV), 5 "
       "output not writable (or the video could not be made: node, Chromium or ffmpeg missing or "
       "failing; no partial video is left), or out of memory or threads.");
   run->set_version_flag("--version", version);
@@ -174,6 +176,30 @@ int run_cli(int argc, const char* const* argv) {
                   "L and reaction impulses), 1 to 17 (17: every double exactly)")
       ->check(CLI::Range(1, 17))
       ->capture_default_str();
+  CLI::Option* stop_at =
+      run->add_option("--stop-at", run_args.stop_at,
+                      "Stop the run at the end of its first step at or after T seconds (the "
+                      "summary says when) and save its state to --save-state's FILE")
+          ->check(CLI::Validator(
+              [](const std::string& text) {
+                double t = 0.0;
+                return CLI::detail::lexical_cast(text, t) && std::isfinite(t)
+                           ? std::string()
+                           : std::string("--stop-at: a time in seconds, not '" + text + "'");
+              },
+              "T"));
+  CLI::Option* save_state =
+      run->add_option("--save-state", run_args.save_state,
+                      "Where --stop-at saves the run's state: a text file of every number the "
+                      "run needs to go on exactly (docs/checkpoints.md)");
+  stop_at->needs(save_state);
+  save_state->needs(stop_at);
+  run->add_option("--resume", run_args.resume,
+                  "Go on from the state a --stop-at run saved in FILE (the same scenario and "
+                  "--set values): the rows after it are exactly the rows of the run that never "
+                  "stopped; in the stopped run's --out, its trajectory goes on, else the new "
+                  "trajectory has the rows after the stop")
+      ->check(CLI::ExistingFile);
 
   InertiaArguments inertia_args;
   CLI::App* inertia = app.add_subcommand(

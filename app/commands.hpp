@@ -1,6 +1,6 @@
 #pragma once
 #include <cstdint>
-#include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,6 +18,11 @@ struct RunArguments {
   int video_fps = 30;                   // frames per second of video
   double video_speed = 1.0;             // simulation seconds per second of video
   int digits = 10;                      // significant digits of the summary's values (1 to 17)
+  // A checkpoint (docs/checkpoints.md): stop at the first step end at or after stop_at (s) and
+  // save the state to save_state; go on from the state saved in resume.
+  double stop_at = std::numeric_limits<double>::infinity();  // s; infinity: no --stop-at
+  std::string save_state;
+  std::string resume;
 };
 
 struct InertiaArguments {

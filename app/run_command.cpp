@@ -1,9 +1,12 @@
 #include <fmt/core.h>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <span>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -15,6 +18,7 @@
 #include "tumble/output/animation_html.hpp"
 #include "tumble/output/events_csv.hpp"
 #include "tumble/output/trajectory_csv.hpp"
+#include "tumble/simulation/checkpoint_file.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "video_export.hpp"
 
@@ -52,7 +56,8 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
                    const SimulationResult& result, const std::filesystem::path& trajectory,
                    const std::optional<std::filesystem::path>& events,
                    const std::optional<std::filesystem::path>& animation,
-                   const std::optional<std::string>& video, int digits) {
+                   const std::optional<std::string>& video, int digits,
+                   const std::vector<std::string>& checkpoint_lines) {
   const SimulateSpec& sim = scenario.simulate;
   const IntegratorStats& stats = result.report.stats;
   fmt::print("{} ({})\n", scenario.name, scenario.file);
@@ -107,6 +112,7 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   print_scenario_events(scenario, result);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,
              result.report.t_reached);
+  for (const std::string& line : checkpoint_lines) fmt::print("  {}\n", line);
   if (events) {
     fmt::print("  events         {} ({} contact events, {} jumps, {} of the scenario's events)\n",
                events->string(), result.contact_events.size(), result.jumps.size(),
@@ -170,6 +176,71 @@ std::string make_video(const VideoRequest& video, const std::optional<std::files
                      video.height, video.fps);
 }
 
+// The scenario's identity for a checkpoint: its file's text and the --set values.
+std::uint64_t fingerprint_of(const RunArguments& args) {
+  std::ifstream in(args.scenario, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return scenario_fingerprint(std::move(text).str(), parse_overrides(args.sets));
+}
+
+// The --set options as the command line gave them, each with a space before.
+std::string sets_text(const RunArguments& args) {
+  std::string text;
+  for (const std::string& set : args.sets) text += " --set " + set;
+  return text;
+}
+
+// A --resume FILE read for this run: its checkpoint, or the message and exit status why not.
+std::optional<LoadedCheckpoint> checkpoint_to_resume(const RunArguments& args,
+                                                     PreparedSimulation& simulation) {
+  std::optional<LoadedCheckpoint> loaded;
+  try {
+    loaded = read_checkpoint_file(args.resume, simulation);
+  } catch (const CheckpointFileError& e) {
+    fmt::print(stderr, "tumble run: --resume {}\n", e.what());
+    return std::nullopt;
+  }
+  if (loaded->origin.fingerprint != fingerprint_of(args)) {
+    fmt::print(stderr,
+               "tumble run: --resume {}: a checkpoint of {} as it was, with the --set values it "
+               "had, when the run stopped; {} {} not that (its text or the --set values differ): "
+               "resume with the scenario and --set values the run was stopped with\n",
+               args.resume, loaded->origin.scenario, args.scenario,
+               args.sets.empty() ? "is" : "with these --set values is");
+    return std::nullopt;
+  }
+  return loaded;
+}
+
+// Whether the trajectory at `path` is the one the stopped run wrote (and a resumed run goes on
+// with it): true; false where there is none (the resumed run writes the rows after the stop);
+// the message and nullopt where it is another file.
+std::optional<bool> continues_trajectory(const std::filesystem::path& path,
+                                         const CheckpointOrigin& origin,
+                                         const std::string& resume) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return false;
+  std::uint64_t bytes = 0;
+  std::uint64_t digest = 0;
+  try {
+    digest = file_digest(path, &bytes);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "tumble run: {}\n", e.what());
+    return std::nullopt;
+  }
+  if (bytes != origin.trajectory_bytes || digest != origin.trajectory_digest) {
+    fmt::print(stderr,
+               "tumble run: --resume {}: {} is not the trajectory the stopped run wrote ({} rows, "
+               "{} bytes; this file has {} bytes or other bytes): resume into the stopped run's "
+               "--out to go on with its trajectory, or into a directory without one for the rows "
+               "after the stop alone\n",
+               resume, path.string(), origin.trajectory_rows, origin.trajectory_bytes, bytes);
+    return std::nullopt;
+  }
+  return true;
+}
+
 }  // namespace
 
 int run_command(const RunArguments& args) {
@@ -210,6 +281,12 @@ int run_command(const RunArguments& args) {
     return kInvalidScenario;
   }
 
+  std::optional<LoadedCheckpoint> resumed;
+  if (!args.resume.empty()) {
+    resumed = checkpoint_to_resume(args, *simulation);
+    if (!resumed) return kBadCommandLine;
+  }
+
   const std::filesystem::path out_dir(args.out_dir);
   const std::filesystem::path trajectory = out_dir / scenario.output.trajectory;
   // Every file the run may write, before it starts: the events file's name counts even when the
@@ -237,11 +314,29 @@ int run_command(const RunArguments& args) {
   }
   if (video)
     outputs.push_back({"--video", video->path.string(), "the video's file", video->path, {}});
+  if (!args.save_state.empty()) {
+    outputs.push_back({"--save-state",
+                       args.save_state,
+                       "the saved state's file",
+                       std::filesystem::path(args.save_state),
+                       {}});
+  }
   if (const int shared = refuse_shared_outputs(outputs, scenario); shared != kDone) return shared;
+  bool trajectory_goes_on = false;  // a resumed run's, after the stopped run's rows
+  if (resumed) {
+    const std::optional<bool> goes_on =
+        continues_trajectory(trajectory, resumed->origin, args.resume);
+    if (!goes_on) return kBadCommandLine;
+    trajectory_goes_on = *goes_on;
+  }
   std::optional<TrajectoryCsvWriter> writer;
   try {
     std::filesystem::create_directories(trajectory.parent_path());
-    writer.emplace(trajectory, column_layout(scenario, *simulation->formulation));
+    if (trajectory_goes_on) {
+      writer.emplace(trajectory, column_layout(scenario, *simulation->formulation), trajectory);
+    } else {
+      writer.emplace(trajectory, column_layout(scenario, *simulation->formulation));
+    }
   } catch (const std::exception& e) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
     return kOutputError;
@@ -258,7 +353,16 @@ int run_command(const RunArguments& args) {
   std::vector<RowSink*> sinks = {&*writer};
   if (recorded) sinks.push_back(&*recorded);
   RowFanOut rows(std::move(sinks));
-  const SimulationResult result = run_simulation(*simulation, rows);
+  std::optional<SimulationCheckpoint> checkpoint;
+  CheckpointCallback on_checkpoint;
+  if (!args.save_state.empty()) {
+    simulation->options.checkpoint_after = args.stop_at;
+    simulation->options.stop_at_checkpoint = true;
+    on_checkpoint = [&](SimulationCheckpoint k) { checkpoint = std::move(k); };
+  }
+  const SimulationResult result =
+      resumed ? resume_simulation(*simulation, resumed->checkpoint, rows, on_checkpoint)
+              : run_simulation(*simulation, rows, on_checkpoint);
   const std::vector<AnimationEvent> page_events = animation_events(scenario, result);
   // The events CSV: when the run had events or jumps, or the scenario asks for it.
   std::optional<std::filesystem::path> events;
@@ -266,8 +370,33 @@ int run_command(const RunArguments& args) {
       !result.user_events.empty()) {
     events = out_dir / scenario.output.events;
   }
+  std::vector<std::string> checkpoint_lines;
+  if (resumed) {
+    checkpoint_lines.push_back(fmt::format(
+        "resumed        from {} at t = {:.17g} s{}", args.resume, resumed->checkpoint.t(),
+        trajectory_goes_on
+            ? ": the trajectory goes on from the stopped run's rows"
+            : fmt::format(": the trajectory has the {} rows after it (the run's first {} are "
+                          "the stopped run's)",
+                          writer->rows(), result.rows - writer->rows())));
+  }
   try {
     writer->finish();
+    if (checkpoint) {
+      CheckpointOrigin origin{args.scenario, fingerprint_of(args), static_cast<long>(result.rows),
+                              0, 0};
+      origin.trajectory_digest = file_digest(trajectory, &origin.trajectory_bytes);
+      write_checkpoint_file(args.save_state, *checkpoint, origin);
+      checkpoint_lines.push_back(fmt::format(
+          "stopped        at t = {:.17g} s (--stop-at {:g}); its state is in {}: `tumble run "
+          "{}{} --resume {}{}` goes on as if it had not stopped",
+          checkpoint->t(), args.stop_at, args.save_state, args.scenario, sets_text(args),
+          args.save_state, args.out_dir == "." ? std::string() : " --out " + args.out_dir));
+    } else if (!args.save_state.empty() && result.report.completed) {
+      checkpoint_lines.push_back(fmt::format(
+          "not stopped    the run ended at t = {:g} s, before --stop-at {:g}: no state saved",
+          result.report.t_reached, args.stop_at));
+    }
     if (events) {
       std::vector<std::string> contact_names, joint_names;
       for (const ContactSpec& c : scenario.contacts) contact_names.push_back(c.name);
@@ -304,7 +433,7 @@ int run_command(const RunArguments& args) {
     }
   }
   print_summary(scenario, *simulation, result, trajectory, events, animation, video_line,
-                args.digits);
+                args.digits, checkpoint_lines);
   if (video_status != kDone) {
     fmt::print(stderr, "tumble run: {}\n", video_failure);
     return video_status;

@@ -1,5 +1,7 @@
 #include "tumble/integrators/dop853.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -253,6 +255,22 @@ double Dop853::initial_step() {
   const double h1 = d12 <= 1e-15 ? std::max(1e-6, 1e-3 * h) : std::pow(0.01 / d12, kExponent);
   const double h_start = std::min({100.0 * h, h1, h_max_});
   return std::isfinite(h_start) ? h_start : h_max_;
+}
+
+// The stages, the tolerances taken from y0 at the start, and the lazy continuous extension's
+// extra stages when the last step has made them (made again, they would count
+// evaluations the uninterrupted run did not make).
+void Dop853::archive_memory(StateArchive& archive) {
+  archive_common(archive);
+  archive_stage_sets(archive, direction_, h_max_, accepted_, stages_);
+  archive_sized(archive, "atols", atols_);
+  archive.flag("dense_ready", dense_ready_);
+  for (std::size_t i = 0; i < dense_stages_.size(); ++i) {
+    archive_sized(archive, fmt::format("k{}", i + 14), dense_stages_[i]);
+  }
+  for (std::size_t i = 0; i < dense_terms_.size(); ++i) {
+    archive_sized(archive, fmt::format("r{}", i + 5), dense_terms_[i]);
+  }
 }
 
 void Dop853::restart(double t, const VecX& y) {

@@ -70,6 +70,13 @@ void Dopri5::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
   thresholds_ /= control_.rtol;  // atol_i / rtol, as the error measure takes them
 }
 
+// The stages and the tolerances taken from y0 at the start.
+void Dopri5::archive_memory(StateArchive& archive) {
+  archive_common(archive);
+  archive_stage_sets(archive, direction_, h_max_, accepted_, stages_);
+  archive_sized(archive, "thresholds", thresholds_);
+}
+
 void Dopri5::restart(double t, const VecX& y) {
   if (system_ == nullptr) throw std::logic_error("dopri5: restart() before start()");
   if (y.size() != y_.size()) throw std::invalid_argument("dopri5: restart() with a wrong-size y");

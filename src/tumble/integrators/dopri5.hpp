@@ -52,6 +52,7 @@ class Dopri5 final : public Integrator {
     copy->system_ = &system;
     return copy;
   }
+  void archive_memory(StateArchive& archive) override;
   StepOutcome step(double t_stop) override;
   void dense_output(double t, VecX& y_out) const override;
 

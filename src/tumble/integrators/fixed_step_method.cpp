@@ -45,6 +45,15 @@ void FixedStepMethod::restart(double t, const VecX& y) {
   ++stats_.rhs_evaluations;
 }
 
+void FixedStepMethod::archive_memory(StateArchive& archive) {
+  archive_common(archive);
+  archive.number("direction", direction_);
+  archive.number("t_grid", t_grid_);
+  archive.integer("grid_steps", grid_steps_);
+  archive_sized(archive, "f_previous", f_previous_);
+  archive_sized(archive, "f_current", f_current_);
+}
+
 step_control::FixedStepEnd FixedStepMethod::begin_step(double t_stop) const {
   if (system_ == nullptr) {
     throw std::logic_error(std::string(method_name_) + ": step() before start()");

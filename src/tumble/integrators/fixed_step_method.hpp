@@ -17,6 +17,9 @@ class FixedStepMethod : public Integrator {
   void start(OdeSystem& system, double t0, const VecX& y0, double t_end) override;
   void restart(double t, const VecX& y) override;
   void dense_output(double t, VecX& y_out) const override;
+  // The grid the steps are on and f at both ends of the last step (the continuous extension's);
+  // the stages are scratch.
+  void archive_memory(StateArchive& archive) override;
 
  protected:
   // Throws std::invalid_argument unless control.fixed_step > 0; the tolerances are ignored.

@@ -3,6 +3,7 @@
 // never past a stop time the driver gives it (an output time is NOT a stop: outputs come from the
 // continuous extension), and can evaluate the state anywhere inside its last step. The driver
 // (driver.hpp) builds outputs, event location, breakpoints and jumps on these three calls.
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "tumble/integrators/ode_system.hpp"
 #include "tumble/integrators/tolerances.hpp"
+#include "tumble/math/state_archive.hpp"
 
 namespace tumble {
 
@@ -50,6 +52,11 @@ class Integrator {
   // from now on. A run's checkpoint keeps one; the resumed run goes on with it.
   virtual std::unique_ptr<Integrator> clone_onto(OdeSystem& system) const = 0;
 
+  // The same memory field by field, for a checkpoint file: saved, or loaded into a method of the
+  // same name and control that start() has sized for the same system (a load checks every
+  // vector's length against that: StateArchive::fail where it does not fit).
+  virtual void archive_memory(StateArchive& archive) = 0;
+
   // One accepted step that ends at or before t_stop (and lands on it exactly if it would pass).
   virtual StepOutcome step(double t_stop) = 0;
 
@@ -69,6 +76,31 @@ class Integrator {
   const IntegratorStats& stats() const { return stats_; }
 
  protected:
+  // The memory every method has (t, y and the step before, h, the step bound, the statistics).
+  void archive_common(StateArchive& archive);
+  // A workspace vector's values; a load keeps its length, which start() gave it.
+  static void archive_sized(StateArchive& archive, std::string_view key, VecX& values);
+  // An embedded Runge-Kutta pair's memory: its direction in time, its largest step, and both sets
+  // of stages ("k0_1".."k1_N": the last accepted step's, set `accepted`, for the continuous
+  // extension and a first-same-as-last f; the other is scratch, kept as cheaply).
+  template <std::size_t N>
+  static void archive_stage_sets(StateArchive& archive, double& direction, double& h_max,
+                                 int& accepted, std::array<std::array<VecX, N>, 2>& sets) {
+    archive.number("direction", direction);
+    archive.number("h_max", h_max);
+    archive.integer("accepted", accepted);
+    if (accepted != 0 && accepted != 1) archive.fail("accepted", "0 or 1");
+    for (std::size_t set = 0; set < sets.size(); ++set) {
+      for (std::size_t i = 0; i < N; ++i) {
+        std::string key = "k";
+        key += std::to_string(set);
+        key += '_';
+        key += std::to_string(i + 1);
+        archive_sized(archive, key, sets[set][i]);
+      }
+    }
+  }
+
   double t_ = 0.0;
   double t_previous_ = 0.0;
   double h_ = 0.0;

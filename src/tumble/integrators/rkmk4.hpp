@@ -44,6 +44,8 @@ class Rkmk4 final : public FixedStepMethod {
   std::unique_ptr<Integrator> clone_onto(OdeSystem& system) const override {
     auto copy = std::make_unique<Rkmk4>(*this);
     copy->system_ = &system;
+    // The offsets are the system's own (a span into it), not this method's.
+    copy->quaternion_offsets_ = system.unit_quaternion_offsets();
     return copy;
   }
   StepOutcome step(double t_stop) override;

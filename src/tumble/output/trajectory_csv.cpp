@@ -1,5 +1,9 @@
 #include "tumble/output/trajectory_csv.hpp"
 
+#include <array>
+#include <fstream>
+#include <stdexcept>
+
 namespace tumble {
 
 TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path, ColumnLayout layout)
@@ -11,6 +15,19 @@ TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path, ColumnLayou
   }
   header.push_back('\n');
   file_.write(std::string_view(header.data(), header.size()));
+}
+
+TrajectoryCsvWriter::TrajectoryCsvWriter(std::filesystem::path path, ColumnLayout layout,
+                                         const std::filesystem::path& earlier)
+    : file_(std::move(path)), layout_(std::move(layout)) {
+  std::ifstream in(earlier, std::ios::binary);
+  if (!in) throw std::runtime_error(earlier.string() + ": cannot be read");
+  std::array<char, 1 << 16> buffer;
+  while (in) {
+    in.read(buffer.data(), buffer.size());
+    file_.write(std::string_view(buffer.data(), static_cast<std::size_t>(in.gcount())));
+  }
+  if (in.bad()) throw std::runtime_error(earlier.string() + ": cannot be read");
 }
 
 void TrajectoryCsvWriter::write_row(const OutputRow& row) {

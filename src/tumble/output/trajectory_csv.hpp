@@ -21,6 +21,11 @@ class TrajectoryCsvWriter final : public RowSink {
   // Throws std::runtime_error naming the path if the temporary file cannot be created.
   // Destroyed before finish(), it leaves nothing behind.
   TrajectoryCsvWriter(std::filesystem::path path, ColumnLayout layout);
+  // The same going on from a trajectory of these columns written before (a run stopped at a
+  // checkpoint): its bytes, header and rows, come first, then the rows written here. Throws
+  // std::runtime_error naming `earlier` if it cannot be read.
+  TrajectoryCsvWriter(std::filesystem::path path, ColumnLayout layout,
+                      const std::filesystem::path& earlier);
 
   void write_row(const OutputRow& row) override;
   // Flushes, closes and renames the file to its destination. Throws on an I/O error.

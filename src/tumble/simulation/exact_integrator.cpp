@@ -48,8 +48,21 @@ bool ExactIntegrator::fits(const Model& model) {
 }
 
 void ExactIntegrator::restart(double t, const VecX& y) {
-  t_ = t_previous_ = t_start_ = t;
+  t_ = t_previous_ = t;
   y_ = y;
+  begin_closed_form(t, y);
+}
+
+void ExactIntegrator::archive_memory(StateArchive& archive) {
+  archive_common(archive);
+  archive.number("t_start", t_start_);
+  archive_sized(archive, "y_start", y_start_);
+  if (archive.loading()) begin_closed_form(t_start_, VecX(y_start_));
+}
+
+void ExactIntegrator::begin_closed_form(double t, const VecX& y) {
+  t_start_ = t;
+  y_start_ = y;
   start_states_.clear();
   rotations_.clear();
   for (std::size_t i = 0; i < formulation_->body_count(); ++i) {

@@ -26,12 +26,18 @@ class ExactIntegrator final : public Integrator {
   void start(OdeSystem& system, double t0, const VecX& y0, double t_end) override;
   void restart(double t, const VecX& y) override;
   std::unique_ptr<Integrator> clone_onto(OdeSystem& system) const override;
+  // The state the closed form starts from (the motion after it follows from it).
+  void archive_memory(StateArchive& archive) override;
   StepOutcome step(double t_stop) override;
   void dense_output(double t, VecX& y_out) const override;
 
  private:
   const Formulation* formulation_ = nullptr;
+  // The closed form's start: each body's state at t_start_ and its torque-free rotation from it.
+  void begin_closed_form(double t, const VecX& y);
+
   double t_start_ = 0.0;  // time of the initial (or restart) state
+  VecX y_start_;          // that state
   std::vector<BodyState> start_states_;
   std::vector<TorqueFreeMotion> rotations_;
   bool watches_events_ = false;  // the system has events: steps are bounded (restart)

@@ -317,8 +317,7 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     };
   }
 
-  OdeSystem& system = simulation.user_events ? static_cast<OdeSystem&>(*simulation.user_events)
-                                             : static_cast<OdeSystem&>(*simulation.formulation);
+  OdeSystem& system = ode_system_of(simulation);
   const auto start = std::chrono::steady_clock::now();
   if (from == nullptr) {
     result.report = integrate(*simulation.integrator, system, simulation.t0, simulation.y0,
@@ -350,15 +349,20 @@ SimulationResult run_simulation(PreparedSimulation& simulation, const FullRowObs
   return run_or_resume(simulation, observe, on_checkpoint, nullptr);
 }
 
+namespace {
+
+FullRowObserver rows_to(RowSink& sink) {
+  return [&sink](double t, std::span<const BodyState> states, const SystemQuantities& q,
+                 const RowExtras& extras) {
+    sink.write_row({t, states, &q, &extras});
+  };
+}
+
+}  // namespace
+
 SimulationResult run_simulation(PreparedSimulation& simulation, RowSink& sink,
                                 const CheckpointCallback& on_checkpoint) {
-  return run_simulation(
-      simulation,
-      [&](double t, std::span<const BodyState> states, const SystemQuantities& q,
-          const RowExtras& extras) {
-        sink.write_row({t, states, &q, &extras});
-      },
-      on_checkpoint);
+  return run_simulation(simulation, rows_to(sink), on_checkpoint);
 }
 
 SystemQuantities row_quantities(const Model& model, std::span<const BodyState> states,
@@ -399,11 +403,22 @@ ColumnLayout column_layout(const Scenario& scenario, const SimulationModel& mode
   return layout_with_elements(scenario, model.formulation.element_names());
 }
 
+OdeSystem& ode_system_of(PreparedSimulation& simulation) {
+  return simulation.user_events ? static_cast<OdeSystem&>(*simulation.user_events)
+                                : static_cast<OdeSystem&>(*simulation.formulation);
+}
+
 SimulationResult resume_simulation(PreparedSimulation& simulation,
                                    const SimulationCheckpoint& checkpoint,
                                    const FullRowObserver& observe,
                                    const CheckpointCallback& on_checkpoint) {
   return run_or_resume(simulation, observe, on_checkpoint, &checkpoint);
+}
+
+SimulationResult resume_simulation(PreparedSimulation& simulation,
+                                   const SimulationCheckpoint& checkpoint, RowSink& sink,
+                                   const CheckpointCallback& on_checkpoint) {
+  return run_or_resume(simulation, rows_to(sink), on_checkpoint, &checkpoint);
 }
 
 }  // namespace tumble

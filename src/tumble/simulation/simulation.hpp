@@ -176,11 +176,18 @@ SystemQuantities row_quantities(const Model& model, std::span<const BodyState> s
 ColumnLayout column_layout(const Scenario& scenario, const Formulation& formulation);
 // The same for the model built from it (without making a run).
 ColumnLayout column_layout(const Scenario& scenario, const SimulationModel& model);
+// The system a run of `simulation` integrates: the formulation, or the scenario's events on it.
+OdeSystem& ode_system_of(PreparedSimulation& simulation);
+
 // Goes on from a checkpoint of a run of the same model (prepare_run() of it gives `simulation`;
 // its formulation and integrator are replaced by the checkpoint's).
 SimulationResult resume_simulation(PreparedSimulation& simulation,
                                    const SimulationCheckpoint& checkpoint,
                                    const FullRowObserver& observe,
+                                   const CheckpointCallback& on_checkpoint = {});
+// The same, each row to a sink.
+SimulationResult resume_simulation(PreparedSimulation& simulation,
+                                   const SimulationCheckpoint& checkpoint, RowSink& sink,
                                    const CheckpointCallback& on_checkpoint = {});
 
 }  // namespace tumble

@@ -3,14 +3,18 @@
 // models side by side.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <tuple>
 
 #include "bindings.hpp"
+#include "tumble/simulation/checkpoint_file.hpp"
 #include "tumble/simulation/table_run.hpp"
 
 namespace tumble::python {
@@ -19,21 +23,48 @@ namespace {
 struct LoadedModel {
   Scenario scenario;
   std::shared_ptr<const SimulationModel> model;
+  std::uint64_t fingerprint = 0;  // of the scenario's text and set= values, as tumble run's
 };
 
-// Where a run stopped, to go on from in another run of the same model.
+// Where a run stopped, to go on from in another run of the same model (or, saved to a file, in
+// a model loaded again from the same scenario and values, or by `tumble run --resume`).
 struct SavedState {
   std::shared_ptr<const SimulationModel> model;
   SimulationCheckpoint checkpoint;
+  CheckpointOrigin origin;  // the scenario it belongs to (no trajectory file: none written)
 };
 
 LoadedModel load(const ScenarioSource& source, const Overrides& overrides) {
   LoadedModel loaded;
-  loaded.scenario = source.is_text
-                        ? load_scenario_text(source.source, source.name, to_overrides(overrides))
-                        : load_scenario(source.source, to_overrides(overrides));
+  const std::vector<ParameterOverride> sets = to_overrides(overrides);
+  loaded.scenario = source.is_text ? load_scenario_text(source.source, source.name, sets)
+                                   : load_scenario(source.source, sets);
   loaded.model = build_simulation_model(loaded.scenario);
+  loaded.fingerprint = scenario_fingerprint(source.text(), sets);
   return loaded;
+}
+
+void save_state(const SavedState& state, const std::filesystem::path& path) {
+  write_checkpoint_file(path, state.checkpoint, state.origin);
+}
+
+SavedState load_state(const LoadedModel& loaded, const std::filesystem::path& path) {
+  PreparedSimulation prepared = prepare_run(*loaded.model);
+  LoadedCheckpoint file;
+  try {
+    file = read_checkpoint_file(path, prepared);
+  } catch (const CheckpointFileError& e) {
+    throw std::invalid_argument(e.what());
+  }
+  if (file.origin.fingerprint != loaded.fingerprint) {
+    throw std::invalid_argument(
+        path.string() + ": a state of " + file.origin.scenario +
+        " as it was, with the set= values it had, when its run stopped; this model (" +
+        loaded.scenario.file +
+        ") is not that (its text or its set= values differ): load the scenario with the values "
+        "it was stopped with");
+  }
+  return SavedState{loaded.model, std::move(file.checkpoint), std::move(file.origin)};
 }
 
 // The rows as a (rows x columns) float64 array that owns them: the vector moves into the capsule
@@ -155,7 +186,11 @@ py::dict run(const LoadedModel& loaded, double stop_at, const SavedState* start)
   out["jumps"] = jumps(loaded.scenario, done->result);
   out["summary"] = summary(loaded, done->result);
   if (done->state) {
-    out["state"] = SavedState{loaded.model, std::move(*done->state)};
+    CheckpointOrigin origin;
+    origin.scenario = loaded.scenario.file;
+    origin.fingerprint = loaded.fingerprint;
+    origin.trajectory_rows = static_cast<long>(done->state->rows);
+    out["state"] = SavedState{loaded.model, std::move(*done->state), std::move(origin)};
   } else {
     out["state"] = py::none();
   }
@@ -176,7 +211,10 @@ std::vector<std::string> columns_of(const LoadedModel& loaded) {
 void bind_model(py::module_& m) {
   py::class_<SavedState>(m, "State", "Where a run stopped (Model.run(stop_at=...)).")
       .def_property_readonly(
-          "t", [](const SavedState& s) { return s.checkpoint.t(); }, "The time it stopped at, s.");
+          "t", [](const SavedState& s) { return s.checkpoint.t(); }, "The time it stopped at, s.")
+      .def("save", &save_state, py::arg("path"),
+           "Writes the state to a file (docs/checkpoints.md) that Model.load_state, or tumble "
+           "run --resume, goes on from.");
 
   py::class_<LoadedModel>(m, "LoadedModel")
       .def_property_readonly("name", [](const LoadedModel& l) { return l.scenario.name; })
@@ -193,7 +231,8 @@ void bind_model(py::module_& m) {
       .def_property_readonly("t0", [](const LoadedModel& l) { return l.model->t0; })
       .def_property_readonly("t_end", [](const LoadedModel& l) { return l.model->t_end; })
       .def_property_readonly("columns", &columns_of)
-      .def("run", &run, py::arg("stop_at"), py::arg("start").none(true));
+      .def("run", &run, py::arg("stop_at"), py::arg("start").none(true))
+      .def("load_state", &load_state, py::arg("path"));
 
   m.def(
       "load",

@@ -67,6 +67,33 @@ def test_a_state_goes_on_only_in_its_own_model():
         tumble.load(prism).run(start=state)
 
 
+def test_a_state_saved_to_a_file_goes_on_in_a_model_loaded_again(tmp_path):
+    # The file is all that passes from the stopped run to the resumed one: a model loaded again
+    # from the same scenario goes on from it, and the rows are the uninterrupted run's.
+    path = EXAMPLES / "cubli_falls_back.yaml"
+    whole = tumble.load(path).run()
+    before = tumble.load(path).run(stop_at=0.3)
+    before.state.save(tmp_path / "held.state")
+    model = tumble.load(path)
+    state = model.load_state(tmp_path / "held.state")
+    assert state.t == before.state.t
+    after = model.run(start=state)
+    assert np.array_equal(np.vstack([before.data, after.data]), whole.data)
+    assert [e["t"] for e in after.events] == [e["t"] for e in whole.events]
+    assert [(j["t"], j["KE_after"]) for j in after.jumps] == [
+        (j["t"], j["KE_after"]) for j in whole.jumps
+    ]
+    assert after.summary["rhs_evaluations"] == whole.summary["rhs_evaluations"]
+
+    # Another set= value is another run; a file changed after it was written is no state.
+    with pytest.raises(ValueError, match="its text or its set= values differ"):
+        tumble.load(path, set={"t_lock": 0.002}).load_state(tmp_path / "held.state")
+    text = (tmp_path / "held.state").read_text()
+    (tmp_path / "edited.state").write_text(text.replace("integrator.t 0.", "integrator.t 1.", 1))
+    with pytest.raises(ValueError, match="not a whole tumble checkpoint"):
+        model.load_state(tmp_path / "edited.state")
+
+
 def test_runs_in_several_threads_give_each_run_its_own_bits():
     # The backspin disk over its v0: each thread runs the same model at other parameter values
     # and the same model twice; the GIL is released while each integrates.

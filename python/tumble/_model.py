@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import math
-from typing import Any, Dict, List, Optional
+import os
+from typing import Any, Dict, List, Optional, Union
 
 import numpy as np
 
@@ -12,7 +13,8 @@ from tumble._errors import IntegrationError
 from tumble._source import Scenario, Values, overrides, scenario_source
 
 #: Where a run stopped (Model.run(stop_at=...)): ``state.t`` is its time, s; Model.run(start=
-#: state) goes on from it.
+#: state) goes on from it. ``state.save(path)`` writes it to a file that Model.load_state(path)
+#: (of the same scenario and set= values) or ``tumble run --resume`` goes on from.
 State = _tumble.State
 
 
@@ -150,6 +152,13 @@ class Model:
         if not result.completed:
             raise IntegrationError(f"integration failed: {result.summary['failure']}", result)
         return result
+
+    def load_state(self, path: Union[str, "os.PathLike[str]"]) -> State:
+        """Reads a state that State.save (or ``tumble run --stop-at T --save-state FILE``) wrote,
+        for ``run(start=...)`` of this model: the rows after it are the uninterrupted run's, bit
+        for bit. Raises ValueError for a file that is not a whole state, or a state of another
+        scenario or of other set= values (docs/checkpoints.md)."""
+        return self._loaded.load_state(os.fspath(path))
 
     def __repr__(self) -> str:
         return f"<tumble.Model {self.name!r} from {self.file!r}: bodies {', '.join(self.bodies)}>"

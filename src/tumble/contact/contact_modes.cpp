@@ -258,14 +258,15 @@ double ContactSystem::normal_speed(std::size_t c, const Vec3& p_B) const {
   return tumble::normal_speed(contact, dynamics_.motion(contact.body), p_B);
 }
 
-double ContactSystem::normal_acceleration(std::size_t c, const Vec3& p_B) const {
+double ContactSystem::normal_acceleration(std::size_t c, const Vec3& p_B,
+                                          const Vec3& rate_B) const {
   const PlaneContact& contact = contacts_[c];
   const BodyMotion w = dynamics_.motion(contact.body);
-  return contact.normal_W.dot(moving_point_acceleration_W(w, p_B, Vec3::Zero()));
+  return contact.normal_W.dot(moving_point_acceleration_W(w, p_B, rate_B));
 }
 
 bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
-                                      std::span<const Vec3> left_out_B) {
+                                      std::span<const SurfacePoint> left_out) {
   ContactStatus& status = s_.contacts[c];
   const PlaneContact& contact = contacts_[c];
   const ContactNow& now = d_.now[c];
@@ -280,8 +281,8 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
       const Vec3& p = contact.surface.vertices[static_cast<std::size_t>(i)];
       if (normal_acceleration(c, p) < -tolerance) return false;
     }
-    for (const Vec3& p : left_out_B) {
-      if (normal_acceleration(c, p) < -tolerance) return false;
+    for (const SurfacePoint& p : left_out) {
+      if (normal_acceleration(c, p.p_B, p.rate_B) < -tolerance) return false;
     }
     return true;
   };
@@ -340,8 +341,9 @@ void ContactSystem::classify_contact(std::size_t c, double t, VecX& y, bool alwa
 bool ContactSystem::settle_on_candidates(std::size_t c, double t, VecX& y) {
   dynamics_.calc_motion(y, false);
   PairView v = view(c);
-  return pairs_[c]->settle_on_candidates(
-      v, [&](std::span<const Vec3> left_out_B) { return settle_on_feature(c, t, y, left_out_B); });
+  return pairs_[c]->settle_on_candidates(v, [&](std::span<const SurfacePoint> left_out) {
+    return settle_on_feature(c, t, y, left_out);
+  });
 }
 
 void ContactSystem::set_apart(std::size_t c) {

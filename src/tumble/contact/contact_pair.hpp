@@ -40,6 +40,15 @@ inline double normal_speed(const PlaneContact& contact, const BodyMotion& w, con
 // last evaluated (it follows later evaluations), the contact's status (its mode, its part, its
 // scales), what was found for it at that state, and the contact subsystem's scratch list of
 // touching vertices.
+// A point of the body's surface, moving over the body at rate_B: a round body's lowest rim point
+// stays lowest as the body spins about its axis, so it does not have the spin's centripetal
+// acceleration that the material point there has (80 m/s^2 up, on a 5 cm rim at 40 rad/s: a
+// rim that comes down would look as if it lifted).
+struct SurfacePoint {
+  Vec3 p_B = Vec3::Zero();
+  Vec3 rate_B = Vec3::Zero();  // m/s, over the body
+};
+
 struct PairView {
   const PlaneContact& contact;
   BodyMotion motion;
@@ -129,8 +138,8 @@ class ContactPair {
 
   // Settling a touching contact on its part or the parts it may tip onto: `settle` is tried on
   // each candidate in order with the points the candidate leaves out (that must not go into the
-  // plane) until one holds; true if one does. After the body's pose.
-  using SettleTry = FunctionRef<bool(std::span<const Vec3> left_out_B)>;
+  // plane) until one holds; true if one does. After the body's pose and velocity.
+  using SettleTry = FunctionRef<bool(std::span<const SurfacePoint> left_out)>;
   virtual bool settle_on_candidates(PairView& v, SettleTry settle) const = 0;
   // Whether the part can tip (a face or an edge, a round body's part) at an impact whose
   // impulse's centre left it; and tipping there onto `side` (false: it cannot, and lands as it
@@ -151,11 +160,11 @@ class ContactPair {
   // Whether, sticking, the part is held at an anchor fixed in the body (a polyhedron's feature, a
   // cone's apex, a round body's face); a rolling part moves over the body and is not.
   virtual bool anchored(const PairView& v) const = 0;
-  // On one end's rim point: the other end's lowest rim point (into other_B), which must not go
-  // into the plane if it is at it; false where there is none.
-  virtual bool other_end_B(const PairView& v, Vec3& other_B) const {
+  // On one end's rim point: the other end's lowest rim point and its rate over the body (into
+  // other), which must not go into the plane if it is at it; false where there is none.
+  virtual bool other_end_B(const PairView& v, SurfacePoint& other) const {
     (void)v;
-    (void)other_B;
+    (void)other;
     return false;
   }
   // Whether the part's points are its support point and nothing more (a sphere's lowest point, a

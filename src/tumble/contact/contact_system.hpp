@@ -170,15 +170,17 @@ class ContactSystem {
   void classify_contact(std::size_t contact, double t, VecX& y, bool always_note = false);
   // Tries contact c on its current feature or part: sticking if the friction fits, else
   // sliding; true if the forces are consistent (N > 0, the CoP in the part, no touching vertex
-  // (d_.touching) or other point the candidate leaves out (left_out_B) going into the plane).
+  // (d_.touching) or other point the candidate leaves out (left_out) going into the plane).
   bool settle_on_feature(std::size_t contact, double t, VecX& y,
-                         std::span<const Vec3> left_out_B = {});
+                         std::span<const SurfacePoint> left_out = {});
   // classify_contact's candidates for contact c, its pair's (settle_on_feature on the part, then
   // on each part it may tip onto); true if one holds.
   bool settle_on_candidates(std::size_t contact, double t, VecX& y);
   void set_apart(std::size_t contact);
-  // The acceleration along the plane's normal of the body's material point p_B (after a solve).
-  double normal_acceleration(std::size_t contact, const Vec3& p_B) const;
+  // The acceleration along the plane's normal of the point p_B moving over the body at rate_B
+  // (0: the material point), after a solve.
+  double normal_acceleration(std::size_t contact, const Vec3& p_B,
+                             const Vec3& rate_B = Vec3::Zero()) const;
   // The height above the plane of the body's point p_B, and its material velocity along the
   // plane's normal (after calc_motion).
   double height_above_plane(std::size_t contact, const Vec3& p_B) const;

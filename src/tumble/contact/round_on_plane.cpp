@@ -238,32 +238,34 @@ class RoundOnPlane final : public ContactPair {
     ContactStatus& status = v.status;
     const RoundEnds ends = round_ends(v.surface());
     v.touching.clear();  // the round body's left-out points are named per candidate
-    const Vec3 n_B = v.n_B();
-    const Vec3 u = rim_direction(n_B, status.rim_direction_B);
-    const std::array<Vec3, 2> end_points = {rim_point(ends, 0, u), rim_point(ends, 1, u)};
-    const auto one = [](const Vec3& p) { return std::span<const Vec3>(&p, 1); };
+    const std::array<SurfacePoint, 2> ends_low = end_points(v);
+    const auto one = [](const SurfacePoint& p) { return std::span<const SurfacePoint>(&p, 1); };
     const RoundPart part = status.round_part;
     switch (part) {
       case RoundPart::Side:
-        if (settle(std::span<const Vec3>())) return true;
+        if (settle({})) return true;
         status.round_part = RoundPart::EndA;  // end B's rim point lifts
-        if (settle(one(end_points[1]))) return true;
+        if (settle(one(ends_low[1]))) return true;
         status.round_part = RoundPart::EndB;  // end A's lifts
-        return settle(one(end_points[0]));
+        return settle(one(ends_low[0]));
       case RoundPart::FaceA:
-      case RoundPart::FaceB:
-        if (settle(std::span<const Vec3>())) return true;
+      case RoundPart::FaceB: {
+        if (settle({})) return true;
         tip(v, 0);  // onto the rim where the CoP went (the face's forces, in v.now)
-        return settle(one(ends.centre_B[static_cast<std::size_t>(end_of(part))]));
+        const SurfacePoint centre{ends.centre_B[static_cast<std::size_t>(end_of(part))]};
+        return settle(one(centre));
+      }
       case RoundPart::EndA:
       case RoundPart::EndB: {
         // The other end, if it is at the plane too, must not go into it.
-        Vec3 other = Vec3::Zero();
-        const bool at_plane = other_end_B(v, other) && v.height(other) <= status.touching_height;
-        return settle(at_plane ? one(other) : std::span<const Vec3>());
+        if (ends.one_rim) return settle({});
+        const SurfacePoint& other = ends_low[status.round_part == RoundPart::EndA ? 1 : 0];
+        return settle(v.height(other.p_B) <= status.touching_height
+                          ? one(other)
+                          : std::span<const SurfacePoint>());
       }
       default:
-        return settle(std::span<const Vec3>());
+        return settle({});
     }
   }
 
@@ -288,12 +290,11 @@ class RoundOnPlane final : public ContactPair {
     return part == RoundPart::EndA && round_ends(v.surface()).radius[0] == 0.0;
   }
 
-  bool other_end_B(const PairView& v, Vec3& other_B) const override {
+  bool other_end_B(const PairView& v, SurfacePoint& other) const override {
     const ContactStatus& status = v.status;
     const RoundEnds ends = round_ends(v.surface());
     if (ends.one_rim || !is_end(status.round_part)) return false;
-    const int other = status.round_part == RoundPart::EndA ? 1 : 0;
-    other_B = rim_point(ends, other, rim_direction(v.n_B(), status.rim_direction_B));
+    other = end_points(v)[status.round_part == RoundPart::EndA ? 1 : 0];
     return true;
   }
 
@@ -324,6 +325,17 @@ class RoundOnPlane final : public ContactPair {
   }
 
  private:
+  // Each end's lowest rim point, which moves over the body as the body turns (not as it spins
+  // about its axis), and its rate.
+  static std::array<SurfacePoint, 2> end_points(const PairView& v) {
+    const RoundEnds ends = round_ends(v.surface());
+    Vec3 u = Vec3::UnitX(), u_rate = Vec3::Zero();
+    rim_direction_and_rate(v.n_B(), v.motion.velocity.head<3>(), v.status.rim_direction_B, u,
+                           u_rate);
+    return {SurfacePoint{rim_point(ends, 0, u), ends.radius[0] * u_rate},
+            SurfacePoint{rim_point(ends, 1, u), ends.radius[1] * u_rate}};
+  }
+
   // A round body on its side or a face tips onto the end of the side (side 0: end A's rim point,
   // 1: end B's), or the face's rim point where the CoP leaves it (after a solve).
   static void tip(PairView& v, int side) {

@@ -108,15 +108,17 @@ void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& 
   ContactStatus& status = s_.contacts[c];
   const ContactStatus sliding = status;
   const ContactNow& now = d_.now[c];
-  std::array<Vec3, 4> points_B = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  // The part's points, as the body's points there, and the other end's lowest rim point, which
+  // moves over the body as it turns.
+  std::array<SurfacePoint, 4> points;
   std::size_t count = 0;
   for (int k = 0; k < now.normal_point_count; ++k) {
-    points_B[count++] = now.normal_points_B[static_cast<std::size_t>(k)];
+    points[count++] = {now.normal_points_B[static_cast<std::size_t>(k)], Vec3::Zero()};
   }
-  Vec3 other = Vec3::Zero();
+  SurfacePoint other;
   if (pairs_[c]->other_end_B(view(c), other) &&
-      height_above_plane(c, other) <= status.touching_height) {
-    points_B[count++] = other;
+      height_above_plane(c, other.p_B) <= status.touching_height) {
+    points[count++] = other;
   }
   set_apart(c);
   calc_accelerations(y);
@@ -124,7 +126,7 @@ void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& 
   const double tolerance = status.slip_zero / status.time_scale;
   bool leaves = true;
   for (std::size_t k = 0; k < count; ++k) {
-    leaves = leaves && normal_acceleration(c, points_B[k]) >= -tolerance;
+    leaves = leaves && normal_acceleration(c, points[k].p_B, points[k].rate_B) >= -tolerance;
   }
   if (leaves) {
     note_contact(t, c, "lifts off: sliding would need friction pressing it on");

@@ -13,14 +13,16 @@ namespace {
 
 // Solves the leading n x n block of A x = b in a larger preallocated matrix, as the contact
 // system does.
-VecX solve_block(const MatX& A, const VecX& b, double zero = 0.0) {
+VecX solve_block(const MatX& A, const VecX& b, double zero = 0.0, const VecX& scales = VecX()) {
   const Eigen::Index n = A.rows(), room = n + 3;
   MatX work = MatX::Constant(room, room, 7.0);  // entries outside the block must not matter
   VecX x = VecX::Constant(room, 7.0);
   work.topLeftCorner(n, n) = A;
   x.head(n) = b;
   ConstraintSolveScratch scratch(room);
-  solve_constraints_in_place(work, x, n, scratch, zero);
+  VecX scales_room = VecX::Constant(room, 7.0);
+  scales_room.head(scales.size()) = scales;
+  solve_constraints_in_place(work, x, n, scratch, zero, scales.size() > 0 ? &scales_room : nullptr);
   return x.head(n);
 }
 
@@ -48,6 +50,38 @@ TEST(ConstraintSolve, RedundantRowsGiveTheLeastNormForces) {
   const VecX heave = A * VecX::Constant(4, 2.5);
   const VecX shares = solve_block(A, heave);
   for (Eigen::Index i = 0; i < 4; ++i) EXPECT_NEAR(shares(i), 2.5, 1e-12);
+}
+
+// With scales, of the forces that give the motion, the least in sum (x_i / s_i)^2: here the
+// least-norm one of (A S) x' = b, times S, by Eigen's decomposition. A contact on a bob that a
+// joint holds: its normal row and a friction row are one freedom; the normal row scaled 1e3
+// carries the load, the friction ~1e-6 of it (x_f = b / (1 + s^2) for rows of equal response).
+TEST(ConstraintSolve, ScalesChooseWhichRedundantRowsCarryTheLoad) {
+  MatX G(4, 3);
+  G << 1, 0.2, 0.25, 1, -0.2, 0.25, 1, 0.2, -0.25, 1, -0.2, -0.25;
+  const Eigen::Vector3d W(1.0 / 6.0, 1.0 / 0.05, 1.0 / 0.08);
+  const MatX A = G * W.asDiagonal() * G.transpose();
+  const VecX b = A * (VecX(4) << 3, 1, 2, 5).finished();
+  const VecX scales = (VecX(4) << 1.0, 1e3, 2.0, 1.0).finished();
+  const VecX x = solve_block(A, b, 0.0, scales);
+  const MatX AS = A * scales.asDiagonal();
+  const VecX expected = scales.asDiagonal() * AS.completeOrthogonalDecomposition().solve(b);
+  EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), 1e-12 * b.cwiseAbs().maxCoeff());
+  EXPECT_LT((x - expected).cwiseAbs().maxCoeff(), 1e-9 * expected.cwiseAbs().maxCoeff());
+
+  MatX pair(2, 2);
+  pair << 1, 1, 1, 1;  // a normal and a friction row that move the one freedom alike
+  const VecX load = solve_block(pair, VecX::Constant(2, 2.0), 0.0, VecX::Constant(2, 1.0));
+  EXPECT_NEAR(load(0), 1.0, 1e-15);  // equal scales: shared evenly, as without
+  const double s = 1e3;
+  const VecX held = solve_block(pair, VecX::Constant(2, 2.0), 0.0, (VecX(2) << 1.0, s).finished());
+  EXPECT_NEAR(held(0), 2.0 / (1.0 + s * s), 1e-15);
+  EXPECT_NEAR(held(1), 2.0 * s * s / (1.0 + s * s), 1e-12);
+  // Independent rows have one solution: the scales are not read.
+  MatX B(2, 2);
+  B << 2, 1, 1, 3;
+  EXPECT_EQ(solve_block(B, VecX::Constant(2, 1.0), 0.0, (VecX(2) << 1.0, s).finished()),
+            solve_block(B, VecX::Constant(2, 1.0)));
 }
 
 // A row repeated twice and a third row that is their sum: the same least-norm answer in any

@@ -16,7 +16,15 @@
 //    where (M + m) g (L/sqrt(2)) (sin phi_max - sin 45 deg) = I_total Omega^2 / 2, falls back and
 //    lands on its face at t_lock + 2 T, T = the integral of dphi / phi' from 45 deg to phi_max,
 //    at Omega again (energy); it rebounds at e Omega, and with e = 0 lies still on its face with
-//    the plane pushing (M + m) g / 2 at the far edge (moments about O).
+//    the plane pushing (M + m) g / 2 at the far edge (moments about O);
+//  - a ball joint's bob (a sphere, its centre p from the pivot) resting on a floor of normal n in
+//    the plane of p and z: the floor's contact rows are redundant with the joint (the joint
+//    carries any force along the line from the pivot to the contact point), and of the forces that
+//    hold it the one without friction does, the floor pushing N = m g / (n_z - n_x p_z / p_x)
+//    (moments about the pivot: p x (N n - m g z) = 0) and the joint carrying m g z - N n: on a
+//    level floor N = m g and the joint nothing. It rests there from the start, sticking, with no
+//    event after the first (before, the least-norm force needed friction outside the cone, and
+//    the bob landed and went apart every 2e-10 s).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -255,6 +263,45 @@ TEST(ContactOnAJointedBody, TheCubliStartedOnTheGroundFallsBackAndLandsOnItsFace
       }
     }
     EXPECT_NEAR(highest, phi_max, 1e-4) << "the rows are 1 ms apart: the peak within their step";
+  }
+}
+
+TEST(ContactOnAJointedBody, ABobAJointHoldsOnAFloorRestsOnTheFloorsPushWithoutFriction) {
+  const Vec3 p(0.6, 0.0, -0.8);  // the bob's centre from the pivot, m
+  const double m = 1.0, r = 0.05;
+  for (const Vec3& floor_normal : {Vec3(0.0, 0.0, 1.0), Vec3(0.2, 0.0, 1.0).normalized()}) {
+    SCOPED_TRACE(
+        fmt::format("floor normal ({:.6f}, 0, {:.6f})", floor_normal.x(), floor_normal.z()));
+    const Vec3 c = p - r * floor_normal;  // the contact point
+    const std::string yaml = fmt::format(
+        "tumble: 1\n"
+        "gravity: [0, 0, -{}]\n"
+        "bodies:\n"
+        "  bob: {{shape: sphere, radius: {}, mass: {}, position: [{}, {}, {}]}}\n"
+        "joints:\n"
+        "  pivot: {{type: ball, body: bob, at: [0, 0, 0]}}\n"
+        "contacts:\n"
+        "  - {{name: floor, type: plane, body: bob, plane: {{point: [{:.17g}, 0, {:.17g}], "
+        "normal: [{:.17g}, 0, {:.17g}]}}, friction: 0.5}}\n"
+        "simulate: {{duration: 1, integrator: dop853, rtol: 1e-10, atol: 1e-12, "
+        "output_every: 0.01}}\n",
+        kG, r, m, p.x(), p.y(), p.z(), c.x(), c.z(), floor_normal.x(), floor_normal.z());
+    const auto run = run_inline_scenario(yaml, "bob_on_floor");
+    const double N = m * kG / (floor_normal.z() - floor_normal.x() * p.z() / p.x());
+    const Vec3 joint_force_W = m * kG * Vec3::UnitZ() - N * floor_normal;  // on the bob
+    EXPECT_LE(run.contact_events.size(), 1u) << run.contact_events.back().what;
+    ASSERT_EQ(run.rows.size(), 101u);
+    for (const Row& row : run.rows) {
+      EXPECT_NEAR((row.states[0].r_G - p).norm(), 0.0, 1e-12) << "t = " << row.t;
+      EXPECT_EQ(row.extras.contacts[0].mode, 2);
+      // The solve takes the least friction to ~1e-6 of the push (a normal row's force counts
+      // 1e-6 of a friction row's: kNormalRowScale = 1e3), and N and the joint's force with it.
+      EXPECT_NEAR(row.extras.contacts[0].normal_force, N, 1e-5 * m * kG) << "t = " << row.t;
+      // Without the choice, the least-norm force took 4.6 N of friction on the level floor.
+      EXPECT_LT(row.extras.contacts[0].friction_W.norm(), 1e-5 * m * kG) << "t = " << row.t;
+      // The joint's force on the bob (the first body, ground, exerts it on the second).
+      EXPECT_NEAR((row.extras.joints[0].F_W - joint_force_W).norm(), 0.0, 1e-5 * m * kG);
+    }
   }
 }
 

@@ -21,6 +21,7 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
   rhs.resize(rows);
   x.resize(rows);
   solve_scratch = ConstraintSolveScratch(rows);
+  row_scales.resize(rows);
   impact_y.resize(dimension);
   onset_y.resize(dimension);
   onset_dydt.resize(dimension);

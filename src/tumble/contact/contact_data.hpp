@@ -69,6 +69,7 @@ struct ContactData {
   MatX matrix;                           // the rows' response to the unknowns
   VecX rhs, x;
   ConstraintSolveScratch solve_scratch;  // for rows that joints or other contacts make redundant
+  VecX row_scales;                       // per row, for those: normal rows carry the load first
   std::vector<BodyWrench> wrenches;      // as many: forces or impulses on bodies
   std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                         // impact()'s

@@ -39,6 +39,11 @@ Vec6 wrench_at(const Mat3& R_WB, const Vec3& p_B, const Vec3& F_W, const Vec3& M
 
 // Responses below this fraction of the heaviest touching body's 1/m are round-off.
 constexpr double kRoundOffResponse = 1e-6;
+// Where redundant rows leave the forces open, a normal row's force counts 1e-6 of a friction
+// row's of the same size (solve_contact_system): the friction taken is the least, to ~1e-6 of
+// the push. (A larger scale leaves the friction rows' pivots at the solve's round-off threshold
+// against the normal rows': at 1e6 the forces came out with noise of 1e-5.)
+constexpr double kNormalRowScale = 1e3;
 
 }  // namespace
 
@@ -329,7 +334,16 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
                           : rows == RowQuantity::Velocity ? s.slip_zero
                                                           : s.slip_zero / s.time_scale);
   }
-  solve_constraints_in_place(d_.matrix, x, count, d_.solve_scratch, zero);
+  // Where a joint (or another contact) makes rows redundant, it can carry part of a contact's
+  // force, and the forces are not unique: a bob that a ball joint holds on a floor can be held by
+  // the floor's push alone, or by a push and a friction that the rod balances. Of them, the one
+  // with the least friction: friction the motion does not need would leave the cone where the
+  // push alone holds (and the bob would slide off and land again for ever). The normal rows are
+  // scaled to carry the load first (kNormalRowScale); among rows alike it is shared evenly.
+  for (Eigen::Index i = 0; i < count; ++i) {
+    d_.row_scales(i) = d_.unknowns[static_cast<std::size_t>(i)].normal ? kNormalRowScale : 1.0;
+  }
+  solve_constraints_in_place(d_.matrix, x, count, d_.solve_scratch, zero, &d_.row_scales);
 }
 
 void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) const {

@@ -137,7 +137,7 @@ ConstraintSolveScratch::ConstraintSolveScratch(Eigen::Index largest)
 }
 
 void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch,
-                                double zero) {
+                                double zero, const VecX* scales) {
   double scale = 0.0;
   for (Eigen::Index c = 0; c < n; ++c) {
     for (Eigen::Index r = 0; r < n; ++r) scale = std::max(scale, std::abs(A(r, c)));
@@ -154,7 +154,19 @@ void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolv
     if (std::abs(A(pivot, col)) <= kRedundantPivot * scale) {
       A.topLeftCorner(n, n) = scratch.A.topLeftCorner(n, n);
       b.head(n) = scratch.b.head(n);
-      solve_with_redundant_rows(A, b, n, scale, zero, scratch);
+      if (scales == nullptr) {
+        solve_with_redundant_rows(A, b, n, scale, zero, scratch);
+        return;
+      }
+      // x = S x' with S = diag(scales): the least-norm x' of (A S) x' = b is the x of least
+      // sum (x_i / scales_i)^2.
+      double scaled = 0.0;
+      for (Eigen::Index c = 0; c < n; ++c) {
+        A.col(c).head(n) *= (*scales)(c);
+        scaled = std::max(scaled, A.col(c).head(n).cwiseAbs().maxCoeff());
+      }
+      solve_with_redundant_rows(A, b, n, scaled, zero, scratch);
+      b.head(n).array() *= scales->head(n).array();
       return;
     }
     if (pivot != col) {

@@ -36,7 +36,10 @@ struct ConstraintSolveScratch {
   std::vector<Eigen::Index> column_of;  // the unknown at each pivot position
 };
 
+// With `scales` (n entries, > 0), the solution taken where rows are redundant is the least in
+// sum (x_i / scales_i)^2 instead: unknowns of a large scale carry the load before the others.
+// (Independent rows have one solution: the scales are not read.)
 void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch,
-                                double zero = 0.0);
+                                double zero = 0.0, const VecX* scales = nullptr);
 
 }  // namespace tumble

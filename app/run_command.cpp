@@ -1,10 +1,8 @@
 #include <fmt/core.h>
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -18,6 +16,7 @@
 #include "tumble/output/animation_html.hpp"
 #include "tumble/output/events_csv.hpp"
 #include "tumble/output/trajectory_csv.hpp"
+#include "tumble/scenario/scenario_document.hpp"
 #include "tumble/simulation/checkpoint_file.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "video_export.hpp"
@@ -176,12 +175,10 @@ std::string make_video(const VideoRequest& video, const std::optional<std::files
                      video.height, video.fps);
 }
 
-// The scenario's identity for a checkpoint: its file's text and the --set values.
+// The scenario's identity for a checkpoint: its file's text and the --set values (the file was
+// just read: it reads again).
 std::uint64_t fingerprint_of(const RunArguments& args) {
-  std::ifstream in(args.scenario, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return scenario_fingerprint(std::move(text).str(), parse_overrides(args.sets));
+  return scenario_fingerprint(read_scenario_file(args.scenario), parse_overrides(args.sets));
 }
 
 // The --set options as the command line gave them, each with a space before.
@@ -193,6 +190,7 @@ std::string sets_text(const RunArguments& args) {
 
 // A --resume FILE read for this run: its checkpoint, or the message and exit status why not.
 std::optional<LoadedCheckpoint> checkpoint_to_resume(const RunArguments& args,
+                                                     std::uint64_t fingerprint,
                                                      PreparedSimulation& simulation) {
   std::optional<LoadedCheckpoint> loaded;
   try {
@@ -201,7 +199,7 @@ std::optional<LoadedCheckpoint> checkpoint_to_resume(const RunArguments& args,
     fmt::print(stderr, "tumble run: --resume {}\n", e.what());
     return std::nullopt;
   }
-  if (loaded->origin.fingerprint != fingerprint_of(args)) {
+  if (loaded->origin.fingerprint != fingerprint) {
     fmt::print(stderr,
                "tumble run: --resume {}: a checkpoint of {} as it was, with the --set values it "
                "had, when the run stopped; {} {} not that (its text or the --set values differ): "
@@ -281,9 +279,11 @@ int run_command(const RunArguments& args) {
     return kInvalidScenario;
   }
 
+  const std::uint64_t fingerprint =
+      args.resume.empty() && args.save_state.empty() ? 0 : fingerprint_of(args);
   std::optional<LoadedCheckpoint> resumed;
   if (!args.resume.empty()) {
-    resumed = checkpoint_to_resume(args, *simulation);
+    resumed = checkpoint_to_resume(args, fingerprint, *simulation);
     if (!resumed) return kBadCommandLine;
   }
 
@@ -383,8 +383,7 @@ int run_command(const RunArguments& args) {
   try {
     writer->finish();
     if (checkpoint) {
-      CheckpointOrigin origin{args.scenario, fingerprint_of(args), static_cast<long>(result.rows),
-                              0, 0};
+      CheckpointOrigin origin{args.scenario, fingerprint, static_cast<long>(result.rows), 0, 0};
       origin.trajectory_digest = file_digest(trajectory, &origin.trajectory_bytes);
       write_checkpoint_file(args.save_state, *checkpoint, origin);
       checkpoint_lines.push_back(fmt::format(

@@ -36,10 +36,6 @@ inline double normal_speed(const PlaneContact& contact, const BodyMotion& w, con
   return contact.normal_W.dot(w.R_WB * v_P_B);
 }
 
-// One contact as its pair sees it: the plane and the surface, the body's motion at the state
-// last evaluated (it follows later evaluations), the contact's status (its mode, its part, its
-// scales), what was found for it at that state, and the contact subsystem's scratch list of
-// touching vertices.
 // A point of the body's surface, moving over the body at rate_B: a round body's lowest rim point
 // stays lowest as the body spins about its axis, so it does not have the spin's centripetal
 // acceleration that the material point there has (80 m/s^2 up, on a 5 cm rim at 40 rad/s: a
@@ -49,6 +45,10 @@ struct SurfacePoint {
   Vec3 rate_B = Vec3::Zero();  // m/s, over the body
 };
 
+// One contact as its pair sees it: the plane and the surface, the body's motion at the state
+// last evaluated (it follows later evaluations), the contact's status (its mode, its part, its
+// scales), what was found for it at that state, and the contact subsystem's scratch list of
+// touching vertices.
 struct PairView {
   const PlaneContact& contact;
   BodyMotion motion;

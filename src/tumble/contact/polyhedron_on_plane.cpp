@@ -169,7 +169,7 @@ class PolyhedronOnPlane final : public ContactPair {
         make_feature(v.surface().vertices, std::span<const int>(pick.data(), count), n_B,
                      status.feature);
       }
-      if (settle(std::span<const SurfacePoint>())) return true;
+      if (settle({})) return true;
     }
     return false;
   }

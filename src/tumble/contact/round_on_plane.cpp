@@ -258,11 +258,10 @@ class RoundOnPlane final : public ContactPair {
       case RoundPart::EndA:
       case RoundPart::EndB: {
         // The other end, if it is at the plane too, must not go into it.
-        if (ends.one_rim) return settle({});
-        const SurfacePoint& other = ends_low[status.round_part == RoundPart::EndA ? 1 : 0];
-        return settle(v.height(other.p_B) <= status.touching_height
-                          ? one(other)
-                          : std::span<const SurfacePoint>());
+        SurfacePoint other;
+        const bool at_plane =
+            other_end_B(v, other) && v.height(other.p_B) <= status.touching_height;
+        return settle(at_plane ? one(other) : std::span<const SurfacePoint>());
       }
       default:
         return settle({});

@@ -59,7 +59,7 @@ class SphereOnPlane final : public ContactPair {
   bool keep_unbounced_part(PairView&) const override { return false; }
   bool settle_on_candidates(PairView& v, SettleTry settle) const override {
     v.touching.clear();  // no vertices to leave out
-    return settle(std::span<const SurfacePoint>());
+    return settle({});
   }
   bool can_tip(const PairView&) const override { return false; }
   bool tip_at_impact(PairView&, int) const override { return false; }

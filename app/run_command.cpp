@@ -51,6 +51,21 @@ std::optional<Scenario> load_scenario_for(const char* command, const std::string
 
 namespace {
 
+// The joints that close loops, and how far their rows were from closing at worst.
+void print_loop_closure(const Scenario& scenario, const LoopErrors& worst) {
+  std::string joints;
+  for (const JointSpec& joint : scenario.joints) {
+    if (!joint.closes_loop) continue;
+    if (!joints.empty()) joints += ", ";
+    joints += joint.name;
+  }
+  if (joints.empty()) return;
+  fmt::print(
+      "  loops          closed by {}: held to {:.3e} m and {:.3e} rad, their velocity rows to "
+      "{:.3e} (m/s, rad/s); reactions least-norm where rows repeat\n",
+      joints, worst.gap, worst.turn, worst.speed);
+}
+
 void print_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                    const SimulationResult& result, const std::filesystem::path& trajectory,
                    const std::optional<std::filesystem::path>& events,
@@ -107,6 +122,7 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   fmt::print("  |L| (origin)   {}{}\n", momentum_drift,
              external_moments_act(scenario) ? " (external moments act: |L| is not conserved)" : "");
   fmt::print("  |R^T R - I|    max {:.3e}\n", result.conservation.max_orthonormality_error);
+  print_loop_closure(scenario, result.conservation.max_loop_error);
   print_system_summary(scenario, simulation, result, digits);
   print_scenario_events(scenario, result);
   fmt::print("  trajectory     {} ({} rows to t = {:g} s)\n", trajectory.string(), result.rows,

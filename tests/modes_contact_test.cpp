@@ -18,14 +18,7 @@ namespace {
 
 using test::example;
 using test::expect_relative;
-
-// `text` with its first `from` replaced by `to` (which must be there).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using test::replaced;
 
 ScenarioModes modes_of_text(const std::string& yaml,
                             const std::vector<ParameterOverride>& sets = {}) {

@@ -57,6 +57,14 @@ std::vector<double> upward_zero_crossings(const std::vector<double>& t,
                                           const std::vector<double>& x,
                                           const std::vector<double>& rate);
 
+// `text` with its first `from` replaced by `to` (which must be there: a test failure if not).
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
 // Reads and prepares an inline scenario that must fail with a ScenarioError at line:column, for
 // key, whose reason contains `why`.
 void expect_error(const std::string& yaml, int line, int column, const std::string& key,

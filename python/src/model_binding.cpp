@@ -160,6 +160,9 @@ py::dict summary(const LoadedModel& loaded, const SimulationResult& result) {
   s["max_orthonormality_error"] = c.max_orthonormality_error;
   s["max_work_energy_residual"] = c.max_work_energy_residual;
   s["max_contact_work"] = c.max_contact_work;
+  s["max_loop_gap"] = c.max_loop_error.gap;
+  s["max_loop_turn"] = c.max_loop_error.turn;
+  s["max_loop_speed"] = c.max_loop_error.speed;
   return s;
 }
 

@@ -42,6 +42,9 @@ class Formulation : public OdeSystem {
   virtual std::string_view name() const = 0;
   // Writes the bodies' states into y (sized by the caller to dimension()).
   virtual void pack(std::span<const BodyState> states, VecX& y) const = 0;
+  // After pack (and the check that the given velocities are the ones packed): y onto the
+  // constraints that pack does not hold by construction (the loops' joints). Nothing by default.
+  virtual void assemble(VecX& /*y*/) const {}
   // Reads one body's state from y; unit quaternions are normalised on the way out.
   virtual BodyState unpack(const VecX& y, std::size_t body) const = 0;
   // Every body's state at once (states sized to body_count()).

@@ -44,6 +44,9 @@ struct JointModel {
   Vec3 axis_A = Vec3::UnitX();
   JointMotor motor;
   double lock_at = std::numeric_limits<double>::infinity();  // s: the joint is rigid from then
+  // It closes a loop: its bodies are already joined through the joints listed before it (and
+  // ground). It is not part of the kinematic tree but a constraint on it (multibody/loop_joints).
+  bool closes_loop = false;
 };
 
 // An impulse (a jump of momentum) at a body point at one instant.

@@ -29,12 +29,19 @@ struct ContactOutput {
 struct JointCoordinates {
   std::array<double, 6> values{};
 };
+// How far the joints that close loops are from closing (0 where none does).
+struct LoopErrors {
+  double gap = 0.0;    // m: the largest distance of a joint's two points along a held direction
+  double turn = 0.0;   // rad: the largest turn a joint forbids
+  double speed = 0.0;  // the largest row velocity (m/s along a point row, rad/s about a turn row)
+};
 struct RowExtras {
   std::vector<JointReaction> joints;          // one per Model::joints entry
   std::vector<JointCoordinates> coordinates;  // one per Model::joints entry
   std::vector<ContactOutput> contacts;        // one per Model::contacts entry
   std::vector<ElementWork> elements;          // one per element_names() entry
   double elastic_energy = 0.0;                // J, stored in springs: part of PE
+  LoopErrors loops;                           // of the joints that close loops
   // A planar scenario's bodies' angles about z (rad, counted on from the row before, so they run
   // on past a turn) and rates (rad/s), at the row's time `planar_t`; empty otherwise.
   std::vector<double> planar_angles, planar_rates;

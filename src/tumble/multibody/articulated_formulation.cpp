@@ -100,7 +100,8 @@ ArticulatedFormulation::ArticulatedFormulation(std::shared_ptr<const Articulated
       s_(hybrid_),
       contact_bodies_(*this),
       contacts_(model_.contacts, model_.bodies, model_.gravity_W, contact_bodies_, s_.contact,
-                m_.dimension) {}
+                m_.dimension),
+      loops_(model_, contact_bodies_) {}
 
 ArticulatedFormulation::ArticulatedFormulation(Model model)
     : ArticulatedFormulation(std::make_shared<const ArticulatedModel>(
@@ -300,8 +301,10 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
   }
 }
 
-void ArticulatedFormulation::solve_with_contacts() const {
-  if (contacts_.empty()) {
+void ArticulatedFormulation::solve_with_contacts(double t) const {
+  if (!loops_.empty()) {
+    loops_.solve_forces(t);
+  } else if (contacts_.empty()) {
     solve(s_.schedule_time, false);
   } else {
     contacts_.solve_forces();
@@ -312,7 +315,7 @@ void ArticulatedFormulation::derivative(double t, const VecX& y, VecX& dydt) con
   contacts_.set_time(t);
   calc_kinematics(y, true);
   accumulate_element_loads(y, s_.schedule_time, dydt, m_.ledger, nullptr);
-  solve_with_contacts();
+  solve_with_contacts(t);
   write_state_rates(y, dydt);
   contacts_.write_powers(dydt, m_.ledger);
 }
@@ -347,6 +350,10 @@ void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) co
     const BodyState& parent = state_or_ground(states, joint.parent);
     joint.kind->pack(joint, parent, child, y);
   }
+}
+
+void ArticulatedFormulation::assemble(VecX& y) const {
+  if (!loops_.empty()) loops_.project(s_.schedule_time, y);
 }
 
 void ArticulatedFormulation::unpack_all(const VecX& y, std::span<BodyState> states) const {
@@ -390,6 +397,7 @@ Vec3 ArticulatedFormulation::angular_momentum_about_origin() const {
 }
 
 JointReaction ArticulatedFormulation::reaction_of(std::size_t model_joint) const {
+  if (model_.joints[model_joint].closes_loop) return loops_.reaction(model_joint);
   const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[model_joint]);
   const TreeJoint& joint = m_.tree[k];
   const Workspace& w = d_.work[k];
@@ -406,12 +414,13 @@ void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras&
   contacts_.set_time(t);
   calc_kinematics(y, true);
   accumulate_element_loads(y, s_.schedule_time, d_.rates, 0, &extras.elastic_energy);
-  solve_with_contacts();
+  solve_with_contacts(t);
   extras.joints.resize(model_.joints.size());
   extras.coordinates.resize(model_.joints.size());
   for (std::size_t j = 0; j < model_.joints.size(); ++j) {
     extras.joints[j] = reaction_of(j);
     const JointModel& joint = model_.joints[j];
+    if (joint.closes_loop) continue;  // its coordinates are not in the state: it has no columns
     const TreeJoint& tree_joint = m_.tree[static_cast<std::size_t>(m_.slot_of_joint[j])];
     tree_joint.kind->calc_coordinate_columns(
         tree_joint, y, state_or_ground(d_.states, joint.body_a),
@@ -426,6 +435,7 @@ void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras&
     out.friction_W = now.friction_W;
     out.slip_speed = now.slip_W.norm();
   }
+  if (!loops_.empty()) extras.loops = loops_.errors_now();
   write_joint_powers(y, d_.rates, 0);
   contacts_.write_powers(d_.rates, 0);
   extras.elements.resize(static_cast<std::size_t>(d_.rates.size()));
@@ -459,6 +469,7 @@ EventAction ArticulatedFormulation::on_event(std::size_t event_index, double t, 
 
 void ArticulatedFormulation::project(double t, VecX& y) const {
   contacts_.project(t, y);
+  if (!loops_.empty()) loops_.project(t, y);
 }
 
 bool ArticulatedFormulation::refresh_event_functions(double t, const VecX& y) {

@@ -33,6 +33,7 @@
 #include "tumble/dynamics/formulation.hpp"
 #include "tumble/multibody/articulated_data.hpp"
 #include "tumble/multibody/articulated_model.hpp"
+#include "tumble/multibody/loop_joints.hpp"
 
 namespace tumble {
 
@@ -56,8 +57,11 @@ class ArticulatedFormulation final : public Formulation {
   }
   // Joint coordinates from the bodies' states: each joint takes the relative angular velocity
   // its freedoms allow (a hinge the component along its axis); velocities the joints forbid are
-  // dropped. consistency_error() says by how much.
+  // dropped.
   void pack(std::span<const BodyState> states, VecX& y) const override;
+  // The loops closed (LoopJoints::project): the velocities go onto their tangent by the least
+  // change in kinetic energy, so that the bodies of a loop may leave theirs to the joints.
+  void assemble(VecX& y) const override;
   BodyState unpack(const VecX& y, std::size_t body) const override;
   void unpack_all(const VecX& y, std::span<BodyState> states) const override;
 
@@ -71,7 +75,8 @@ class ArticulatedFormulation final : public Formulation {
   void event_functions(double t, const VecX& y, VecX& g) const override;
   EventAction on_event(std::size_t event_index, double t, VecX& y) override;
   // Normalises the quaternions, then puts each touching contact back on the plane and its
-  // velocity on the mode's constraints (no normal velocity; rolling: no slip).
+  // velocity on the mode's constraints (no normal velocity; rolling: no slip), and closes the
+  // loops (LoopJoints::project).
   void project(double t, VecX& y) const override;
   bool refresh_event_functions(double t, const VecX& y) override;
   // While a contact is apart: no step so long that a point of its surface could dip through the
@@ -114,8 +119,9 @@ class ArticulatedFormulation final : public Formulation {
   void accumulate_element_loads(const VecX& y, double mode_time, VecX& rates, Eigen::Index offset,
                                 double* elastic_energy) const;
   // solve() with the contacts' forces in their current modes (the contact subsystem's
-  // solve_forces), after calc_kinematics and accumulate_element_loads.
-  void solve_with_contacts() const;
+  // solve_forces) and the loops' (LoopJoints::solve_forces), after calc_kinematics and
+  // accumulate_element_loads.
+  void solve_with_contacts(double t) const;
   // Motors' powers (tau theta', after solve()) and zero for impulses and locks, into rates from
   // offset + first_motor_entry() to the end.
   void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
@@ -165,6 +171,7 @@ class ArticulatedFormulation final : public Formulation {
   HybridState& s_;      // hybrid_: the modes and records (Formulation::hybrid_state)
   ContactBodies contact_bodies_;
   ContactSystem contacts_;  // the planes' contacts, their scratch, and their state in s_.contact
+  LoopJoints loops_;        // the joints that close loops: constraints on the tree
 };
 
 }  // namespace tumble

@@ -67,7 +67,8 @@ std::vector<TreeJoint> build_kinematic_tree(const Model& model) {
       frontier.pop_front();
       for (const std::size_t j : joints_at[static_cast<std::size_t>(body + 1)]) {
         const JointModel& joint = model.joints[j];
-        if (joint_used[j]) continue;
+        // A loop's closing joint is a constraint on the tree (loop_joints.hpp), not a branch.
+        if (joint_used[j] || joint.closes_loop) continue;
         const bool reversed = joint.body_b == body;
         const int other = reversed ? joint.body_a : joint.body_b;
         joint_used[j] = true;

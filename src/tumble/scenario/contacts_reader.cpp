@@ -134,6 +134,7 @@ std::unordered_map<std::string, std::size_t> inboard_joints(
   std::unordered_map<std::string, std::vector<std::size_t>> joints_at;
   for (std::size_t j = 0; j < scenario.joints.size(); ++j) {
     const JointSpec& joint = scenario.joints[j];
+    if (joint.closes_loop) continue;  // a constraint on the tree, moving no body of its own
     groups.join(joint.body_a, joint.body_b);
     joints_at[joint.body_a].push_back(j);
     joints_at[joint.body_b].push_back(j);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 
 #include "tumble/multibody/joints/joint_kind.hpp"
@@ -312,24 +313,63 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
                                    const std::vector<BodySpec>& bodies) {
   std::vector<JointSpec> joints;
   const MapReader map(reader, field, "a mapping of joints {name: {type: ..., bodies: ...}}");
-  // Which bodies are already connected (through ground too): a joint within one group would
-  // close a loop, which joint coordinates cannot describe.
+  // Which bodies are already connected (through ground too): a joint within one group closes a
+  // loop. The joints listed before it form the tree; it becomes a constraint on that tree, so
+  // the order the scenario lists them in chooses which joint of a loop is cut (docs/scenario.md).
   BodyGroups groups;
   ColumnHeads heads;
   for (const BodySpec& body : bodies) heads.note(body.name, "body", body.where);
   for (const Field& f : map.fields()) {
     JointSpec joint = read_joint(reader, f, bodies);
-    if (!groups.join(joint.body_a, joint.body_b)) {
-      const bool through_ground = groups.root(joint.body_a) == groups.root(kGroundName);
-      reader.fail_at_key(f, "this joint closes a loop: " + joint.body_a + " and " + joint.body_b +
-                                " are already connected through other joints" +
-                                (through_ground ? " and ground" : "") +
-                                "; tumble solves systems whose joints form a tree");
+    joint.closes_loop = !groups.join(joint.body_a, joint.body_b);
+    if (joint.closes_loop && joint.motor.kind != MotorSpec::Kind::None) {
+      throw ScenarioError(joint.motor.where, "motor",
+                          "this joint closes a loop (" + joint.body_a + " and " + joint.body_b +
+                              " are already joined through the joints listed before it), and "
+                              "a loop's closing joint takes no motor: list it before a joint "
+                              "of the loop that takes none, so that the tree holds it");
+    }
+    if (joint.closes_loop && joint.lock_at != std::numeric_limits<double>::infinity()) {
+      reader.fail_at_key(f,
+                         "this joint closes a loop and has a lock: a loop's closing joint "
+                         "cannot lock; list it before a joint of the loop with no lock");
     }
     heads.claim(reader, f, joint.name, "joint", joint.where);
     joints.push_back(std::move(joint));
   }
   return joints;
+}
+
+void check_loop_system(const Scenario& scenario) {
+  const auto loop = std::find_if(scenario.joints.begin(), scenario.joints.end(),
+                                 [](const JointSpec& joint) { return joint.closes_loop; });
+  if (loop == scenario.joints.end()) return;
+  // What a loop's constraints do not take part in yet: contact (whose forces and the loop's
+  // would be one solve) and jumps of the speeds (whose impulses the loop shares).
+  const std::string why = " in a system whose joints close a loop ('" + loop->name +
+                          "' closes one) is not supported yet: ";
+  if (!scenario.contacts.empty()) {
+    throw ScenarioError(scenario.contacts.front().where, "contacts[0]",
+                        "a contact" + why +
+                            "the contact's and the loop's forces are not yet "
+                            "solved together");
+  }
+  if (!scenario.impulses.empty()) {
+    throw ScenarioError(scenario.impulses.front().where, scenario.impulses.front().name,
+                        "an impulse" + why + "the loop would have to share its blow");
+  }
+  for (const JointSpec& joint : scenario.joints) {
+    if (std::isfinite(joint.lock_at)) {
+      throw ScenarioError(joint.where, "joints." + joint.name + ".lock",
+                          "a lock" + why + "the loop would have to share its blow");
+    }
+    const MotorSpec& motor = joint.motor;
+    if (motor.kind == MotorSpec::Kind::Speed && motor.from > 0.0) {
+      throw ScenarioError(motor.where, "joints." + joint.name + ".motor",
+                          "a speed motor that starts after t = 0" + why +
+                              "the loop would have to share its start's blow; start it at 0");
+    }
+  }
 }
 
 }  // namespace tumble::scenario_reading

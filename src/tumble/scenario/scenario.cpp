@@ -330,6 +330,7 @@ Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
                           !scenario.springs.empty() || !scenario.torsional_springs.empty() ||
                           !scenario.contacts.empty();
   if (needs_simulate) scenario_reading::check_slender_bodies(scenario);
+  scenario_reading::check_loop_system(scenario);
   if (needs_simulate || root.has("simulate")) {
     scenario.simulate = scenario_reading::read_simulate(
         reader, root.require("simulate", "the run's settings, at least duration"),

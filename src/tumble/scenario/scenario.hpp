@@ -115,6 +115,9 @@ struct JointSpec {
   MotorSpec motor;  // hinge, prismatic, cylindrical
   // hinge, prismatic, cylindrical, universal: `lock: {at: t}`
   double lock_at = std::numeric_limits<double>::infinity();
+  // Its bodies are already joined through the joints listed before it: it closes a loop, and the
+  // run holds it as a constraint on the tree the others form.
+  bool closes_loop = false;
   SourceLocation where;
 };
 

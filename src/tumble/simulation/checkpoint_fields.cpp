@@ -132,6 +132,9 @@ void archive_conservation(StateArchive& a, ConservationReport& c) {
   a.number("max_work_energy_residual", c.max_work_energy_residual);
   a.number("max_kinetic_energy", c.max_kinetic_energy);
   a.number("max_contact_work", c.max_contact_work);
+  a.number("max_loop_gap", c.max_loop_error.gap);
+  a.number("max_loop_turn", c.max_loop_error.turn);
+  a.number("max_loop_speed", c.max_loop_error.speed);
 }
 
 void archive_extras(StateArchive& a, RowExtras& x) {

@@ -143,6 +143,7 @@ JointModel joint_model(const Scenario& scenario, const BodyNumbers& body_number,
   joint.motor.from = spec.motor.from;
   joint.motor.to = spec.motor.to;
   joint.lock_at = spec.lock_at;
+  joint.closes_loop = spec.closes_loop;
   return joint;
 }
 
@@ -159,7 +160,8 @@ TorsionalSpring torsional_spring_model(const Scenario& scenario, const BodyNumbe
   spring.R_AB_rest = spec.rest_orientation.value_or(R_AB0);
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
     const JointModel& joint = model.joints[j];
-    if (joint.type != JointType::Hinge) continue;
+    // A loop's closing hinge has no angle in the state: the spring takes the bodies' turn.
+    if (joint.type != JointType::Hinge || joint.closes_loop) continue;
     const bool same = joint.body_a == spring.body_a && joint.body_b == spring.body_b;
     const bool swapped = joint.body_a == spring.body_b && joint.body_b == spring.body_a;
     if (!same && !swapped) continue;

@@ -179,6 +179,7 @@ VecX initial_state_vector(const Scenario& scenario, const Formulation& formulati
   check_initial_state_finite(scenario, formulation.model(), given);
   formulation.pack(given, y0);
   check_initial_velocities(scenario, formulation, given, y0);
+  formulation.assemble(y0);
   if (const auto problem = formulation.start_problem(y0)) {
     const ContactSpec& contact = scenario.contacts[problem->contact];
     throw ScenarioError(contact.where, fmt::format("contacts[{}]", problem->contact), problem->why);
@@ -278,6 +279,9 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
       c.max_relative_angular_momentum_drift =
           std::max(c.max_relative_angular_momentum_drift, std::abs(L - L0) / L0);
     }
+    c.max_loop_error.gap = std::max(c.max_loop_error.gap, extras.loops.gap);
+    c.max_loop_error.turn = std::max(c.max_loop_error.turn, extras.loops.turn);
+    c.max_loop_error.speed = std::max(c.max_loop_error.speed, extras.loops.speed);
     for (const BodyState& s : states) {
       c.max_orthonormality_error =
           std::max(c.max_orthonormality_error, orthonormality_error(s.R_WB));

@@ -98,6 +98,9 @@ struct ConservationReport {
   // The largest |work| any contact's forces and impulses had done at any row, J: rolling and
   // sticking contacts do none (it is then the integration's error), sliding and impacts do.
   double max_contact_work = 0.0;
+  // The largest errors of the joints that close loops over the rows (each row is taken after the
+  // step's projection, so these are what the rows report: round-off where the loops hold).
+  LoopErrors max_loop_error;
 
   // The scales the summary's drifts are measured against, never round-off: E0 may be zero or
   // tiny (a pendulum released level with its pivot, a chain lying flat), so E's is the larger of

@@ -1,0 +1,346 @@
+// Loops' closing joints as constraints on the kinematic tree: their rows, forces and projection
+// (loop_joints.hpp; docs/design.md, "Closed loops").
+#include "tumble/multibody/loop_joints.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "tumble/contact/contact_feature.hpp"
+#include "tumble/math/rotation.hpp"
+
+namespace tumble {
+
+namespace {
+
+// A row whose response to its own force is below this fraction of the largest row's is one no
+// force moves: the tree already holds that motion (a Hooke joint's centre on a bearing's axis).
+constexpr double kDeadResponse = 1e-12;
+// Newton's method on the positions stops once the largest error is this small against the
+// joints' size (or against a radian), or after this many moves, or when a move gains nothing.
+constexpr double kClosedLoop = 1e-15;
+constexpr int kMostMoves = 8;
+
+}  // namespace
+
+LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
+    : dynamics_(dynamics), gravity_W_(model.gravity_W) {
+  loop_of_joint_.assign(model.joints.size(), -1);
+  double largest_offset = 0.0;
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const JointModel& joint = model.joints[j];
+    if (!joint.closes_loop) continue;
+    Loop loop;
+    loop.joint = j;
+    loop.name = joint.name;
+    loop.type = joint.type;
+    loop.body_a = joint.body_a;
+    loop.body_b = joint.body_b;
+    loop.p_AJ_A = joint.p_AJ_A;
+    loop.p_BJ_B = joint.p_BJ_B;
+    loop.R_AB0 = joint.R_AB0;
+    loop.axis_B = joint.axis_B;
+    loop.axis_A =
+        joint.type == JointType::Universal ? joint.axis_A : Vec3(joint.R_AB0 * joint.axis_B);
+    plane_basis(loop.axis_A, loop.across1_A, loop.across2_A);
+    switch (joint.type) {
+      case JointType::Ball:
+        loop.turn_rows = 0;
+        break;
+      case JointType::Hinge:
+        loop.turn_rows = 2;
+        break;
+      case JointType::Universal:
+        loop.turn_rows = 1;
+        break;
+      case JointType::Cylindrical:
+        loop.all_point_rows = false;
+        loop.turn_rows = 2;
+        break;
+      case JointType::Prismatic:
+        loop.all_point_rows = false;
+        loop.turn_rows = 3;
+        break;
+      case JointType::Fixed:
+        loop.turn_rows = 3;
+        break;
+      case JointType::Free:
+        throw std::logic_error("a free joint closes no loop");
+    }
+    loop_of_joint_[j] = static_cast<int>(loops_.size());
+    loops_.push_back(loop);
+    largest_offset = std::max({largest_offset, loop.p_AJ_A.norm(), loop.p_BJ_B.norm()});
+  }
+  if (largest_offset > 0.0) length_scale_ = largest_offset;
+  const std::size_t most_rows = 6 * loops_.size();
+  rows_.resize(most_rows);
+  wrenches_.resize(2 * loops_.size());
+  matrix_ = MatX::Zero(static_cast<Eigen::Index>(most_rows), static_cast<Eigen::Index>(most_rows));
+  x_ = VecX::Zero(static_cast<Eigen::Index>(most_rows));
+  scratch_ = ConstraintSolveScratch(static_cast<Eigen::Index>(most_rows));
+  reactions_.resize(loops_.size());
+  resultants_.resize(loops_.size());
+}
+
+LoopJoints::Side LoopJoints::side(int body, bool with_velocities) const {
+  Side s;
+  if (body == kGround) return s;
+  const BodyMotion w = dynamics_.motion(static_cast<std::size_t>(body));
+  s.R_WB = w.R_WB;
+  s.r_G_W = w.r_G_W;
+  if (with_velocities) {
+    s.omega_W = w.R_WB * w.velocity.head<3>();
+    s.v_G_W = w.R_WB * w.velocity.tail<3>();
+  }
+  return s;
+}
+
+Eigen::Index LoopJoints::gather_rows(bool with_velocities) const {
+  Eigen::Index count = 0;
+  for (std::size_t l = 0; l < loops_.size(); ++l) {
+    const Loop& loop = loops_[l];
+    const Side a = side(loop.body_a, with_velocities);
+    const Side b = side(loop.body_b, with_velocities);
+    const Vec3 gap_W = b.r_G_W + b.R_WB * loop.p_BJ_B - (a.r_G_W + a.R_WB * loop.p_AJ_A);
+    const auto add = [&](bool turn, const Vec3& direction_W, const Vec3& rate_W, double error) {
+      rows_[static_cast<std::size_t>(count++)] = {l, turn, direction_W, rate_W, error};
+    };
+    // Directions fixed in A turn with it.
+    const auto fixed_in_a = [&](bool turn, const Vec3& direction_A, double error_along) {
+      const Vec3 direction_W = a.R_WB * direction_A;
+      add(turn, direction_W, a.omega_W.cross(direction_W), error_along);
+    };
+    const auto point_row = [&](const Vec3& direction_A) {
+      fixed_in_a(false, direction_A, (a.R_WB * direction_A).dot(gap_W));
+    };
+    if (loop.all_point_rows) {
+      for (int k = 0; k < 3; ++k) point_row(Vec3::Unit(k));
+    } else {
+      point_row(loop.across1_A);
+      point_row(loop.across2_A);
+    }
+    if (loop.turn_rows == 3) {
+      // B's turn from where the joint holds it, as a rotation vector.
+      const Vec3 turn_W = log_so3(Mat3(b.R_WB * (a.R_WB * loop.R_AB0).transpose()));
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 e = Vec3::Unit(k);
+        fixed_in_a(true, e, (a.R_WB * e).dot(turn_W));
+      }
+    } else if (loop.turn_rows == 2) {
+      // B's axis tilted from A's: a_A x a_B is the small turn that takes one to the other.
+      const Vec3 tilt_W = (a.R_WB * loop.axis_A).cross(b.R_WB * loop.axis_B);
+      fixed_in_a(true, loop.across1_A, (a.R_WB * loop.across1_A).dot(tilt_W));
+      fixed_in_a(true, loop.across2_A, (a.R_WB * loop.across2_A).dot(tilt_W));
+    } else if (loop.turn_rows == 1) {
+      // A Hooke joint keeps its axes at right angles: a1 . a2 = 0, whose rate is
+      // -(a1 x a2) . (omega_B - omega_A).
+      const Vec3 a1 = a.R_WB * loop.axis_A;
+      const Vec3 a2 = b.R_WB * loop.axis_B;
+      const Vec3 rate = a.omega_W.cross(a1).cross(a2) + a1.cross(b.omega_W.cross(a2));
+      add(true, a1.cross(a2), rate, -a1.dot(a2));
+    }
+  }
+  return count;
+}
+
+double LoopJoints::row_velocity(const Row& row) const {
+  const Loop& loop = loops_[row.loop];
+  const Side a = side(loop.body_a, true);
+  const Side b = side(loop.body_b, true);
+  if (row.turn) return row.direction_W.dot(b.omega_W - a.omega_W);
+  const Vec3 p_W = b.r_G_W + b.R_WB * loop.p_BJ_B;
+  const Vec3 v_b = b.v_G_W + b.omega_W.cross(p_W - b.r_G_W);
+  const Vec3 v_a = a.v_G_W + a.omega_W.cross(p_W - a.r_G_W);
+  return row.direction_W.dot(v_b - v_a);
+}
+
+double LoopJoints::row_acceleration(const Row& row, bool impulsive) const {
+  const Loop& loop = loops_[row.loop];
+  const Side a = side(loop.body_a, !impulsive);
+  const Side b = side(loop.body_b, !impulsive);
+  const Vec3 p_W = b.r_G_W + b.R_WB * loop.p_BJ_B;
+  // The angular acceleration (world) and the acceleration of the material point at p_W of a
+  // body, from the last solve: impulsive, only the linear response (no velocity terms); else
+  // with them and with gravity, which the passes leave out (ground accelerates at -g there).
+  const auto angular = [&](int body) -> Vec3 {
+    if (body == kGround) return Vec3::Zero();
+    const BodyMotion w = dynamics_.motion(static_cast<std::size_t>(body));
+    return w.R_WB * w.acceleration.head<3>();
+  };
+  const auto linear = [&](int body) -> Vec3 {
+    if (body == kGround) return Vec3::Zero();
+    const BodyMotion w = dynamics_.motion(static_cast<std::size_t>(body));
+    const Vec3 p_B = w.R_WB.transpose() * (p_W - w.r_G_W);
+    const Vec3 alpha_B = w.acceleration.head<3>();
+    Vec3 a_B = w.acceleration.tail<3>() + alpha_B.cross(p_B);
+    if (impulsive) return w.R_WB * a_B;
+    const Vec3 omega_B = w.velocity.head<3>();
+    a_B += omega_B.cross(w.velocity.tail<3>() + omega_B.cross(p_B));
+    return w.R_WB * a_B + gravity_W_;
+  };
+  if (row.turn) {
+    const double response = row.direction_W.dot(angular(loop.body_b) - angular(loop.body_a));
+    if (impulsive) return response;
+    return response + row.direction_rate_W.dot(b.omega_W - a.omega_W);
+  }
+  const double response = row.direction_W.dot(linear(loop.body_b) - linear(loop.body_a));
+  if (impulsive) return response;
+  // d/dt of u . (v_B(p) - v_A(p)) with p moving with B: A's velocity field read at a moving
+  // point gains omega_A x (v_B(p) - v_A(p)).
+  const Vec3 v_b = b.v_G_W + b.omega_W.cross(p_W - b.r_G_W);
+  const Vec3 v_a = a.v_G_W + a.omega_W.cross(p_W - a.r_G_W);
+  const Vec3 relative = v_b - v_a;
+  return response + row.direction_rate_W.dot(relative) -
+         row.direction_W.dot(a.omega_W.cross(relative));
+}
+
+std::size_t LoopJoints::add_loop_wrenches(std::size_t l, const Vec3& F_W, const Vec3& M_W,
+                                          std::size_t count) const {
+  const Loop& loop = loops_[l];
+  const Side b = side(loop.body_b, false);
+  const Vec3 p_W = b.r_G_W + b.R_WB * loop.p_BJ_B;
+  // On B: F at its joint point and M; on A the opposite, at the same point.
+  if (loop.body_b != kGround) {
+    const Vec3 F_B = b.R_WB.transpose() * F_W;
+    Vec6 wrench;
+    wrench << loop.p_BJ_B.cross(F_B) + b.R_WB.transpose() * M_W, F_B;
+    wrenches_[count++] = {static_cast<std::size_t>(loop.body_b), wrench};
+  }
+  if (loop.body_a != kGround) {
+    const Side a = side(loop.body_a, false);
+    const Vec3 F_A = -(a.R_WB.transpose() * F_W);
+    const Vec3 p_A = a.R_WB.transpose() * (p_W - a.r_G_W);
+    Vec6 wrench;
+    wrench << p_A.cross(F_A) - a.R_WB.transpose() * M_W, F_A;
+    wrenches_[count++] = {static_cast<std::size_t>(loop.body_a), wrench};
+  }
+  return count;
+}
+
+std::size_t LoopJoints::add_row_wrenches(Eigen::Index count, const VecX& x) const {
+  // Each loop's resultant: the forces along its point rows, the moments about its turn rows.
+  for (JointReaction& r : resultants_) r = {};
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const Row& row = rows_[static_cast<std::size_t>(i)];
+    JointReaction& r = resultants_[row.loop];
+    (row.turn ? r.M_J_W : r.F_W) += x(i) * row.direction_W;
+  }
+  std::size_t wrenches = 0;
+  for (std::size_t l = 0; l < loops_.size(); ++l) {
+    wrenches = add_loop_wrenches(l, resultants_[l].F_W, resultants_[l].M_J_W, wrenches);
+  }
+  return wrenches;
+}
+
+void LoopJoints::calc_matrix(Eigen::Index count) const {
+  for (Eigen::Index j = 0; j < count; ++j) {
+    const Row& unit = rows_[static_cast<std::size_t>(j)];
+    const Vec3 zero = Vec3::Zero();
+    const std::size_t wrenches = add_loop_wrenches(unit.loop, unit.turn ? zero : unit.direction_W,
+                                                   unit.turn ? unit.direction_W : zero, 0);
+    dynamics_.respond_to_impulses(std::span<const BodyWrench>(wrenches_.data(), wrenches));
+    for (Eigen::Index i = 0; i < count; ++i) {
+      matrix_(i, j) = row_acceleration(rows_[static_cast<std::size_t>(i)], true);
+    }
+  }
+}
+
+void LoopJoints::solve_rows(Eigen::Index count, VecX& x, double t) const {
+  double largest = 0.0;
+  for (Eigen::Index i = 0; i < count; ++i) largest = std::max(largest, std::abs(matrix_(i, i)));
+  // A row no force moves carries no force: the tree holds that motion already, and its entries
+  // are round-off that the solve could not tell from a real response.
+  for (Eigen::Index i = 0; i < count; ++i) {
+    if (matrix_.row(i).head(count).cwiseAbs().maxCoeff() > kDeadResponse * largest) continue;
+    matrix_.row(i).head(count).setZero();
+    matrix_.col(i).head(count).setZero();
+    matrix_(i, i) = 1.0;
+    x(i) = 0.0;
+  }
+  try {
+    solve_constraints_in_place(matrix_, x, count, scratch_);
+  } catch (const InconsistentConstraints&) {
+    std::string joints;
+    for (const Loop& loop : loops_) {
+      if (!joints.empty()) joints += ", ";
+      joints += "'" + loop.name + "'";
+    }
+    throw std::runtime_error(fmt::format(
+        "at t = {:.17g} s the loops that {} close cannot be held: their constraints contradict "
+        "each other (a dead centre or another position where a loop loses a freedom it had)",
+        t, joints));
+  }
+}
+
+void LoopJoints::solve_forces(double t) const {
+  dynamics_.solve_under_loads();
+  const Eigen::Index count = gather_rows(true);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    x_(i) = -row_acceleration(rows_[static_cast<std::size_t>(i)], false);
+  }
+  calc_matrix(count);
+  solve_rows(count, x_, t);
+  const std::size_t wrenches = add_row_wrenches(count, x_);
+  for (std::size_t l = 0; l < loops_.size(); ++l) reactions_[l] = resultants_[l];
+  dynamics_.solve_under_loads_and(std::span<const BodyWrench>(wrenches_.data(), wrenches));
+}
+
+JointReaction LoopJoints::reaction(std::size_t model_joint) const {
+  return reactions_[static_cast<std::size_t>(loop_of_joint_[model_joint])];
+}
+
+void LoopJoints::respond_to_row_impulses(Eigen::Index count, const VecX& x) const {
+  const std::size_t wrenches = add_row_wrenches(count, x);
+  dynamics_.respond_to_impulses(std::span<const BodyWrench>(wrenches_.data(), wrenches));
+}
+
+void LoopJoints::project(double t, VecX& y) const {
+  // Positions: Newton's method, each move the least in the mass metric that closes the rows to
+  // first order; it converges quadratically from a step's drift.
+  double previous = std::numeric_limits<double>::infinity();
+  for (int move = 0; move < kMostMoves; ++move) {
+    dynamics_.calc_motion(y, false);
+    const Eigen::Index count = gather_rows(false);
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < count; ++i) {
+      const Row& row = rows_[static_cast<std::size_t>(i)];
+      worst = std::max(worst, std::abs(row.error) / (row.turn ? 1.0 : length_scale_));
+      x_(i) = -row.error;
+    }
+    if (worst <= kClosedLoop || !(worst < previous)) break;
+    previous = worst;
+    calc_matrix(count);
+    solve_rows(count, x_, t);
+    respond_to_row_impulses(count, x_);
+    dynamics_.apply_displacement(y);
+    dynamics_.normalise(t, y);
+  }
+  // Velocities: the impulses that zero every row's velocity (linear: one solve).
+  dynamics_.calc_motion(y, true);
+  const Eigen::Index count = gather_rows(true);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    x_(i) = -row_velocity(rows_[static_cast<std::size_t>(i)]);
+  }
+  calc_matrix(count);
+  solve_rows(count, x_, t);
+  respond_to_row_impulses(count, x_);
+  dynamics_.apply_speed_jumps(y);
+}
+
+LoopErrors LoopJoints::errors_now() const {
+  LoopErrors errors;
+  const Eigen::Index count = gather_rows(true);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const Row& row = rows_[static_cast<std::size_t>(i)];
+    double& error = row.turn ? errors.turn : errors.gap;
+    error = std::max(error, std::abs(row.error));
+    errors.speed = std::max(errors.speed, std::abs(row_velocity(row)));
+  }
+  return errors;
+}
+
+}  // namespace tumble

@@ -1,0 +1,125 @@
+#pragma once
+// Joints that close loops (docs/design.md, "Closed loops"): a four-bar's coupler pin, a
+// slider-crank's wrist pin, the cross of a Hooke joint between two shafts on their own bearings.
+// The other joints form the kinematic tree, whose coordinates hold them by construction; a loop's
+// closing joint is a constraint on that tree, held the way contact holds a rolling wheel:
+//  - its force is the one that keeps the constraint's acceleration zero, J a + J' v = 0, from
+//    the tree's response to unit wrenches at the joint (the articulated-body algorithm's
+//    impulsive passes: J M^-1 J^T without forming M);
+//  - after every step the positions are put back on the constraint by Newton's method, each move
+//    the least in the mass metric (M^-1 J^T mu), and the velocities onto its tangent by the
+//    impulses that zero the rows' velocities (one linear solve), so that the loop holds to
+//    round-off at every row, whatever the tolerance, with no gains to tune.
+// Rows of a joint that the others already hold (a planar four-bar of 3D hinges: three of each
+// pin's five rows repeat the plane's) make J M^-1 J^T singular; the solve keeps the independent
+// rows and, of the reactions that hold the loop, reports the least-norm one.
+//
+// Each joint's rows: its joint point on the second body held on the first body's point (every
+// direction but a slider's axis; a ball, hinge, weld and Hooke joint: all three), and the turns
+// its kind forbids (a hinge: about the two directions across its axis; a weld and a slider: all
+// three; a Hooke joint: about the direction across both its axes). The directions are fixed in
+// the first body (the world's for ground), so a row's rate of change has the first body's turn.
+//
+// It talks to the tree only through ContactDynamics (contact/contact_dynamics.hpp): poses,
+// twists, accelerations, responses to wrenches and impulses.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tumble/contact/contact_dynamics.hpp"
+#include "tumble/dynamics/model.hpp"
+#include "tumble/dynamics/row_extras.hpp"
+#include "tumble/math/constraint_solve.hpp"
+
+namespace tumble {
+
+class LoopJoints {
+ public:
+  // The model's joints that close loops (JointModel::closes_loop), moved by `dynamics`. Both
+  // must outlive this object.
+  LoopJoints(const Model& model, const ContactDynamics& dynamics);
+
+  bool empty() const { return loops_.empty(); }
+
+  // After the dynamics' calc_motion (with velocities) and gather_loads: the loops' forces, and
+  // the dynamics' accelerations under the loads and those forces (solve_under_loads_and).
+  // Throws std::runtime_error where the rows contradict each other (a singular position).
+  void solve_forces(double t) const;
+  // After solve_forces: what the joint's first body exerts on its second, at the joint point.
+  JointReaction reaction(std::size_t model_joint) const;
+  // The positions back on the loops' constraints (Newton's method, each move the least in the
+  // mass metric), then the velocities onto their tangent. After the dynamics' own projection.
+  void project(double t, VecX& y) const;
+  // The loops' errors at the state last evaluated (after calc_motion with velocities).
+  LoopErrors errors_now() const;
+
+ private:
+  struct Loop {
+    std::size_t joint = 0;  // the model joint
+    std::string name;
+    JointType type = JointType::Ball;
+    int body_a = kGround, body_b = 0;
+    Vec3 p_AJ_A = Vec3::Zero(), p_BJ_B = Vec3::Zero();
+    Mat3 R_AB0 = Mat3::Identity();
+    Vec3 axis_A = Vec3::UnitZ();  // hinge, slider, cylindrical: the axis; universal: the first
+    Vec3 axis_B = Vec3::UnitZ();  // hinge, slider, cylindrical: the axis; universal: the second
+    // Directions across the axis, A's axes (a slider's and a cylindrical joint's point rows, a
+    // hinge's and a cylindrical joint's turn rows).
+    Vec3 across1_A = Vec3::UnitX(), across2_A = Vec3::UnitY();
+    bool all_point_rows = true;  // else the two across the axis
+    int turn_rows = 0;           // 0, 1 (universal), 2 (across the axis) or 3 (A's axes)
+  };
+  // One constraint row: direction . (velocity of B's joint point less A's velocity there), or
+  // direction . (omega_B - omega_A); its direction's rate of change, and its error.
+  struct Row {
+    std::size_t loop = 0;
+    bool turn = false;
+    Vec3 direction_W = Vec3::Zero();
+    Vec3 direction_rate_W = Vec3::Zero();
+    double error = 0.0;  // m or rad
+  };
+  // A body's pose and twist in world axes (ground: at rest at the origin).
+  struct Side {
+    Mat3 R_WB = Mat3::Identity();
+    Vec3 r_G_W = Vec3::Zero();
+    Vec3 omega_W = Vec3::Zero();
+    Vec3 v_G_W = Vec3::Zero();
+  };
+  Side side(int body, bool with_velocities) const;
+  // Every loop's rows at the state last evaluated (calc_motion), into rows_; returns their count.
+  Eigen::Index gather_rows(bool with_velocities) const;
+  // A row's velocity, and its value's rate under the accelerations of the last solve (with the
+  // velocity terms and gravity: psi_0 when no loop force acts).
+  double row_velocity(const Row& row) const;
+  double row_acceleration(const Row& row, bool impulsive) const;
+  // The wrenches on loop l's bodies of the force F_W at its joint point and the moment M_W
+  // (on its second body; their opposites on its first), into wrenches_ from `count` on; returns
+  // the new count.
+  std::size_t add_loop_wrenches(std::size_t l, const Vec3& F_W, const Vec3& M_W,
+                                std::size_t count) const;
+  // Every loop's resultant of the forces x_i along the leading count rows (into resultants_),
+  // and their wrenches (into wrenches_); returns their count.
+  std::size_t add_row_wrenches(Eigen::Index count, const VecX& x) const;
+  // The matrix J M^-1 J^T of the leading `count` rows, from the responses to unit row forces.
+  void calc_matrix(Eigen::Index count) const;
+  // Solves matrix x = x for the leading count rows (rows no force moves set aside), in place.
+  void solve_rows(Eigen::Index count, VecX& x, double t) const;
+  // The dynamics' response (speed jumps) to impulses x along the rows.
+  void respond_to_row_impulses(Eigen::Index count, const VecX& x) const;
+
+  const ContactDynamics& dynamics_;
+  std::vector<Loop> loops_;
+  std::vector<int> loop_of_joint_;  // per model joint: its loop, or -1
+  Vec3 gravity_W_;
+  double length_scale_ = 1.0;  // m: the joints' largest offset from a COM, at least 1
+  // Scratch, sized once (a run serves one thread at a time).
+  mutable std::vector<Row> rows_;
+  mutable std::vector<BodyWrench> wrenches_;
+  mutable MatX matrix_;
+  mutable VecX x_;
+  mutable ConstraintSolveScratch scratch_;
+  mutable std::vector<JointReaction> resultants_;  // per loop, of the last add_row_wrenches
+  mutable std::vector<JointReaction> reactions_;   // per loop, from the last solve_forces
+};
+
+}  // namespace tumble

@@ -119,6 +119,67 @@ TEST(LoopJoints, AFourBarFreeUnderGravityConservesEnergyWithItsLoopClosed) {
   EXPECT_GT(turned, kPi / 3.0);
 }
 
+TEST(LoopJoints, ALockOnAFourBarStopsItAndGroundsItsMomentThroughTheLoop) {
+  // The crank locks at t = 0.5 s: a four-bar with its crank held has no freedom left, so every
+  // body stops at once. The ground's reaction impulses at O2 (with the lock's moment) and O4,
+  // which carries the rocker's and through B the coupler's share, take all the angular momentum.
+  std::string text = test::read_file(test::example("four_bar.yaml"));
+  text = test::replaced(text, "axis: [0, 1, 0]}", "axis: [0, 1, 0], lock: {at: 0.5}}");
+  text = test::replaced(text, "duration: 10", "duration: 1");
+  const test::ScenarioRun run = test::run_inline_scenario(text, "four_bar_lock");
+  ASSERT_EQ(run.jumps.size(), 1U);
+  const JumpRecord& lock = run.jumps.front();
+  EXPECT_EQ(lock.t, 0.5);
+  ASSERT_GT(lock.kinetic_energy_before, 1.0);
+  EXPECT_LT(lock.kinetic_energy_after, 1e-24 * lock.kinetic_energy_before);
+  // O2 is joint 0 at the origin, O4 joint 2 at (0.6, 0, 0).
+  const JointReaction& O2 = lock.reaction_impulses.at(0);
+  const JointReaction& O4 = lock.reaction_impulses.at(2);
+  const Vec3 moment = O2.M_J_W + O4.M_J_W + Vec3(0.6, 0.0, 0.0).cross(O4.F_W);
+  const Vec3 change = lock.angular_momentum_after_W - lock.angular_momentum_before_W;
+  EXPECT_LT((moment - change).norm(), 1e-12 * lock.angular_momentum_before_W.norm());
+  for (const test::Row& row : run.rows) {
+    EXPECT_LT(row.extras.loops.gap, 1e-12) << "t " << row.t;
+    if (row.t >= 0.5) {
+      EXPECT_LT(row.quantities.kinetic_energy, 1e-20) << "t " << row.t;
+    }
+  }
+}
+
+TEST(LoopJoints, AnImpulseOnAFourBarsCouplerIsSharedByTheLoopWithoutWork) {
+  // Struck at rest: the impulse's work is J . v_P / 2, and it is the KE after only if the loop's
+  // share of the blow does none (its impulses zero its rows' velocities, which were zero).
+  std::string text = test::read_file(test::example("four_bar.yaml"));
+  text = test::replaced(text, "gravity: [0, 0, -9.81]", "gravity: [0, 0, 0]");
+  text = test::replaced(
+      text, "joints:",
+      "forces:\n  - {type: impulse, body: coupler, at: [0.35, 0, 0.34], value: [0, 0, -2], "
+      "time: 0.2}\njoints:");
+  text = test::replaced(text, "duration: 10", "duration: 1");
+  const test::ScenarioRun run = test::run_inline_scenario(text, "four_bar_impulse");
+  ASSERT_EQ(run.jumps.size(), 1U);
+  const JumpRecord& blow = run.jumps.front();
+  EXPECT_EQ(blow.kinetic_energy_before, 0.0);
+  ASSERT_GT(blow.kinetic_energy_after, 0.01);
+  // The row at the blow's instant shows the state after it: the coupler's point's velocity.
+  const auto after = std::find_if(run.rows.begin(), run.rows.end(),
+                                  [](const test::Row& row) { return row.t >= 0.2; });
+  ASSERT_NE(after, run.rows.end());
+  ASSERT_EQ(after->t, 0.2);
+  const BodyState& coupler = after->states.at(1);
+  const Vec3 v_P = coupler.v_G + coupler.omega_W.cross(Vec3(0.35, 0.0, 0.34) - coupler.r_G);
+  EXPECT_NEAR(blow.kinetic_energy_after, Vec3(0.0, 0.0, -2.0).dot(v_P) / 2.0,
+              1e-12 * blow.kinetic_energy_after);
+  // Then no force acts but the joints': KE stays.
+  for (const test::Row& row : run.rows) {
+    if (row.t < 0.2) continue;
+    EXPECT_NEAR(row.quantities.kinetic_energy, blow.kinetic_energy_after,
+                1e-9 * blow.kinetic_energy_after)
+        << "t " << row.t;
+    EXPECT_LT(row.extras.loops.speed, 1e-12) << "t " << row.t;
+  }
+}
+
 // Six links joined in a ring by six parallel hinges: a planar hexagon with three freedoms of its
 // own, whose six hinges state three constraints more than the ring needs (each link's plane).
 // Thrown spinning about two axes, with two of its hinges flexing at the start, it falls freely.

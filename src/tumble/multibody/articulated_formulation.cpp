@@ -489,37 +489,43 @@ std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
 
 bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   calc_kinematics(y, true);
-  for (Workspace& w : d_.work) w.external.setZero();
-
-  // Impulses now: on the body, about its COM, child axes.
-  std::string what;
-  const auto note = [&](const std::string& item) { what += (what.empty() ? "" : ", ") + item; };
-  for (const ImpulseLoad& impulse : model_.impulses) {
-    if (impulse.time != t) continue;
-    Workspace& w = d_.work[m_.slot_of_body[impulse.body]];
-    const Vec3 J_W = impulse.body_frame ? Vec3(w.R_WC * impulse.value) : impulse.value;
-    w.external.head<3>() += w.R_WC.transpose() * (w.R_WC * impulse.p_GP_B).cross(J_W);
-    w.external.tail<3>() += w.R_WC.transpose() * J_W;
-    note("impulse " + impulse.name);
-  }
-  // Joints that lock (every freedom) or whose speed motor starts now jump to their rates; the
-  // other prescribed joints keep theirs.
-  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
-    const TreeJoint& joint = m_.tree[k];
-    Workspace& w = d_.work[k];
-    if (joint.nv == 0 || !m_.prescribed(k, t)) continue;
-    w.qdd.setZero();
-    const JointModel& model_joint = model_.joints[static_cast<std::size_t>(joint.model_joint)];
-    const double rate = y(joint.v);
-    if (model_joint.lock_at == t) {
-      w.qdd = -y.segment(joint.v, joint.nv);
-      note("lock " + model_joint.name);
-    } else if (t < model_joint.lock_at && model_joint.motor.kind == JointMotor::Kind::Speed &&
-               model_joint.motor.from == t) {
-      w.qdd(0) = model_joint.motor.value - rate;
-      note("motor " + model_joint.name + " starts");
+  // Impulses now, on the body, about its COM, child axes (and the loops' share, if any); the
+  // joints that lock (every freedom) or whose speed motor starts now jump to their rates, and
+  // the other prescribed joints keep theirs. Returns what jumps.
+  const auto load_jumps = [&](std::span<const BodyWrench> loop_impulses) {
+    std::string what;
+    const auto note = [&](const std::string& item) { what += (what.empty() ? "" : ", ") + item; };
+    for (Workspace& w : d_.work) w.external.setZero();
+    for (const ImpulseLoad& impulse : model_.impulses) {
+      if (impulse.time != t) continue;
+      Workspace& w = d_.work[m_.slot_of_body[impulse.body]];
+      const Vec3 J_W = impulse.body_frame ? Vec3(w.R_WC * impulse.value) : impulse.value;
+      w.external.head<3>() += w.R_WC.transpose() * (w.R_WC * impulse.p_GP_B).cross(J_W);
+      w.external.tail<3>() += w.R_WC.transpose() * J_W;
+      note("impulse " + impulse.name);
     }
-  }
+    for (const BodyWrench& impulse : loop_impulses) {
+      d_.work[m_.slot_of_body[impulse.body]].external += impulse.wrench_B;
+    }
+    for (std::size_t k = 0; k < m_.tree.size(); ++k) {
+      const TreeJoint& joint = m_.tree[k];
+      Workspace& w = d_.work[k];
+      if (joint.nv == 0 || !m_.prescribed(k, t)) continue;
+      w.qdd.setZero();
+      const JointModel& model_joint = model_.joints[static_cast<std::size_t>(joint.model_joint)];
+      const double rate = y(joint.v);
+      if (model_joint.lock_at == t) {
+        w.qdd = -y.segment(joint.v, joint.nv);
+        note("lock " + model_joint.name);
+      } else if (t < model_joint.lock_at && model_joint.motor.kind == JointMotor::Kind::Speed &&
+                 model_joint.motor.from == t) {
+        w.qdd(0) = model_joint.motor.value - rate;
+        note("motor " + model_joint.name + " starts");
+      }
+    }
+    return what;
+  };
+  const std::string what = load_jumps({});
   if (what.empty()) return false;
 
   JumpRecord record;
@@ -529,6 +535,20 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
   record.angular_momentum_before_W = angular_momentum_about_origin();
   std::vector<BodyState> before(d_.states);
   solve(t, true);
+  if (!loops_.empty()) {
+    // The loops take their share of the blow: the impulses that put the tree's jumped velocities
+    // onto the loops' tangent (ideal joints: they do no work). With them, the same passes give
+    // the whole jump and every tree joint's reaction impulse.
+    VecX jumped = y;
+    for (std::size_t k = 0; k < m_.tree.size(); ++k) {
+      const TreeJoint& joint = m_.tree[k];
+      if (joint.nv > 0) jumped.segment(joint.v, joint.nv) += d_.work[k].qdd;
+    }
+    const std::span<const BodyWrench> loop_impulses = loops_.tangent_impulses(t, jumped);
+    calc_kinematics(y, true);
+    load_jumps(loop_impulses);
+    solve(t, true);
+  }
   for (std::size_t j = 0; j < model_.joints.size(); ++j) {
     record.reaction_impulses.push_back(reaction_of(j));
   }

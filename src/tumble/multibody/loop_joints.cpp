@@ -320,6 +320,11 @@ void LoopJoints::project(double t, VecX& y) const {
     dynamics_.normalise(t, y);
   }
   // Velocities: the impulses that zero every row's velocity (linear: one solve).
+  dynamics_.respond_to_impulses(tangent_impulses(t, y));
+  dynamics_.apply_speed_jumps(y);
+}
+
+std::span<const BodyWrench> LoopJoints::tangent_impulses(double t, const VecX& y) const {
   dynamics_.calc_motion(y, true);
   const Eigen::Index count = gather_rows(true);
   for (Eigen::Index i = 0; i < count; ++i) {
@@ -327,8 +332,9 @@ void LoopJoints::project(double t, VecX& y) const {
   }
   calc_matrix(count);
   solve_rows(count, x_, t);
-  respond_to_row_impulses(count, x_);
-  dynamics_.apply_speed_jumps(y);
+  const std::size_t wrenches = add_row_wrenches(count, x_);
+  for (std::size_t l = 0; l < loops_.size(); ++l) reactions_[l] = resultants_[l];
+  return {wrenches_.data(), wrenches};
 }
 
 LoopErrors LoopJoints::errors_now() const {

@@ -50,6 +50,10 @@ class LoopJoints {
   // The positions back on the loops' constraints (Newton's method, each move the least in the
   // mass metric), then the velocities onto their tangent. After the dynamics' own projection.
   void project(double t, VecX& y) const;
+  // At a jump: the impulses that take the velocities of y onto the loops' tangent (the least
+  // change of kinetic energy), as wrenches on the bodies (valid until the next call), with each
+  // loop's resultant as its reaction (an impulse: N s, N m s).
+  std::span<const BodyWrench> tangent_impulses(double t, const VecX& y) const;
   // The loops' errors at the state last evaluated (after calc_motion with velocities).
   LoopErrors errors_now() const;
 

@@ -343,33 +343,12 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
 void check_loop_system(const Scenario& scenario) {
   const auto loop = std::find_if(scenario.joints.begin(), scenario.joints.end(),
                                  [](const JointSpec& joint) { return joint.closes_loop; });
-  if (loop == scenario.joints.end()) return;
-  // What a loop's constraints do not take part in yet: contact (whose forces and the loop's
-  // would be one solve) and jumps of the speeds (whose impulses the loop shares).
-  const std::string why = " in a system whose joints close a loop ('" + loop->name +
-                          "' closes one) is not supported yet: ";
-  if (!scenario.contacts.empty()) {
-    throw ScenarioError(scenario.contacts.front().where, "contacts[0]",
-                        "a contact" + why +
-                            "the contact's and the loop's forces are not yet "
-                            "solved together");
-  }
-  if (!scenario.impulses.empty()) {
-    throw ScenarioError(scenario.impulses.front().where, scenario.impulses.front().name,
-                        "an impulse" + why + "the loop would have to share its blow");
-  }
-  for (const JointSpec& joint : scenario.joints) {
-    if (std::isfinite(joint.lock_at)) {
-      throw ScenarioError(joint.where, "joints." + joint.name + ".lock",
-                          "a lock" + why + "the loop would have to share its blow");
-    }
-    const MotorSpec& motor = joint.motor;
-    if (motor.kind == MotorSpec::Kind::Speed && motor.from > 0.0) {
-      throw ScenarioError(motor.where, "joints." + joint.name + ".motor",
-                          "a speed motor that starts after t = 0" + why +
-                              "the loop would have to share its start's blow; start it at 0");
-    }
-  }
+  if (loop == scenario.joints.end() || scenario.contacts.empty()) return;
+  // A contact's forces and a loop's would have to be one solve (and their impacts one blow).
+  throw ScenarioError(scenario.contacts.front().where, "contacts[0]",
+                      "a contact in a system whose joints close a loop ('" + loop->name +
+                          "' closes one) is not supported yet: the contact's and the loop's "
+                          "forces are not yet solved together");
 }
 
 }  // namespace tumble::scenario_reading

@@ -60,7 +60,7 @@ std::unordered_map<std::string, std::size_t> inboard_joints(
 // ScenarioError at its shape, saying why (body_reader.cpp).
 void check_slender_bodies(const Scenario& scenario);
 // A system whose joints close a loop: refuses, at the item, what loops do not take part in yet
-// (contacts, impulses, locks, speed motors that start after t = 0).
+// (contacts).
 void check_loop_system(const Scenario& scenario);
 // Which bodies joints connect to each other (ground included): a union-find over their names,
 // whose walks to a group's root are halved as they go, so that a chain of n bodies is grouped

@@ -180,6 +180,28 @@ TEST(LoopJoints, AnImpulseOnAFourBarsCouplerIsSharedByTheLoopWithoutWork) {
   }
 }
 
+TEST(LoopJoints, AFourBarDrivenPastItsDeadCentreStopsThereSayingSo) {
+  // The rocker driven at 1 rad/s swings B away from O2 until the crank and the coupler line up
+  // (|O2 B| = crank + coupler = 0.8 m): there the loop loses a direction and the rocker cannot
+  // go on. With B = O4 + 0.5 (sin(phi), 0, cos(phi)), |O2 B|^2 = 0.61 + 0.6 sin(phi), which
+  // reaches 0.64 at sin(phi) = 0.05.
+  std::string text = test::read_file(test::example("four_bar.yaml"));
+  text = test::replaced(text, "at: [0.6, 0, 0], axis: [0, 1, 0]}",
+                        "at: [0.6, 0, 0], axis: [0, 1, 0], motor: {speed: 1}}");
+  text = test::replaced(text, "angle: 0.3668708309124725 deg}",
+                        "angle: 0.3668708309124725 deg}\n    angular_velocity: [0, 1, 0]");
+  PreparedSimulation simulation = prepare_simulation(test::load_inline_scenario(text, "driven"));
+  const SimulationResult result = run_simulation(
+      simulation, [](double, std::span<const BodyState>, const SystemQuantities&) {});
+  ASSERT_FALSE(result.report.completed);
+  const double phi0 = std::atan2(0.6032015300873869 - 0.6, 0.4999897501000391);
+  const double t_dead = std::asin(0.05) - phi0;
+  // Located as the step that reaches it shrinks: within 1e-9 s before it.
+  EXPECT_NEAR(result.report.t_reached, t_dead, 1e-9);
+  EXPECT_NE(result.report.failure.find("'B'"), std::string::npos) << result.report.failure;
+  EXPECT_NE(result.report.failure.find("dead centre"), std::string::npos) << result.report.failure;
+}
+
 // Six links joined in a ring by six parallel hinges: a planar hexagon with three freedoms of its
 // own, whose six hinges state three constraints more than the ring needs (each link's plane).
 // Thrown spinning about two axes, with two of its hinges flexing at the start, it falls freely.

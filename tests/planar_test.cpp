@@ -84,6 +84,11 @@ TEST(PlanarScenario, TheCubliIsItsSpatialStatement) {
   expect_same_motion({"cubli", 1e-8});
 }
 
+// A closed loop: B, the last hinge, is a constraint on the tree in both statements.
+TEST(PlanarScenario, TheFourBarIsItsSpatialStatement) {
+  expect_same_motion({"four_bar", 1e-10});
+}
+
 // The angle column runs on past each turn: the backspin disk, thrown at v0 with w0 = 60 rad/s
 // counter-clockwise, turns by w0 t - mu g t^2 / R while it slides (friction mu M g at its rim
 // slows the spin by 2 mu g / R) and so nearly ten turns before its slip stops at

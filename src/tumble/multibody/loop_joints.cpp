@@ -249,8 +249,9 @@ void LoopJoints::calc_matrix(Eigen::Index count) const {
   }
 }
 
-void LoopJoints::solve_rows(Eigen::Index count, VecX& x, double t) const {
+Eigen::Index LoopJoints::solve_rows(Eigen::Index count, VecX& x, double t) const {
   double largest = 0.0;
+  Eigen::Index dead = 0;
   for (Eigen::Index i = 0; i < count; ++i) largest = std::max(largest, std::abs(matrix_(i, i)));
   // A row no force moves carries no force: the tree holds that motion already, and its entries
   // are round-off that the solve could not tell from a real response.
@@ -260,20 +261,34 @@ void LoopJoints::solve_rows(Eigen::Index count, VecX& x, double t) const {
     matrix_.col(i).head(count).setZero();
     matrix_(i, i) = 1.0;
     x(i) = 0.0;
+    ++dead;
   }
   try {
     solve_constraints_in_place(matrix_, x, count, scratch_);
+    return scratch_.rank - dead;
   } catch (const InconsistentConstraints&) {
-    std::string joints;
-    for (const Loop& loop : loops_) {
-      if (!joints.empty()) joints += ", ";
-      joints += "'" + loop.name + "'";
-    }
     throw std::runtime_error(fmt::format(
         "at t = {:.17g} s the loops that {} close cannot be held: their constraints contradict "
         "each other (a dead centre or another position where a loop loses a freedom it had)",
-        t, joints));
+        t, joint_names()));
   }
+}
+
+std::string LoopJoints::joint_names() const {
+  std::string joints;
+  for (const Loop& loop : loops_) {
+    if (!joints.empty()) joints += ", ";
+    joints += "'" + loop.name + "'";
+  }
+  return joints;
+}
+
+void LoopJoints::throw_singular(double t, Eigen::Index rank) const {
+  throw std::runtime_error(fmt::format(
+      "at t = {:.17g} s the loops that {} close reached a singular position: their rows hold "
+      "{} independent directions where they held {} (a dead centre or a change point, where the "
+      "joints' constraints lose rank and neither the motion nor the reactions are determined)",
+      t, joint_names(), rank, held_rank_));
 }
 
 void LoopJoints::solve_forces(double t) const {
@@ -283,7 +298,12 @@ void LoopJoints::solve_forces(double t) const {
     x_(i) = -row_acceleration(rows_[static_cast<std::size_t>(i)], false);
   }
   calc_matrix(count);
-  solve_rows(count, x_, t);
+  const Eigen::Index rank = solve_rows(count, x_, t);
+  // The rows' rank is the loops' structure (a planar linkage of 3D hinges repeats three rows a
+  // pin), constant along the motion; where it drops, the loops have lost a direction they held
+  // (a dead centre, a change point), where neither the motion nor the forces are determined.
+  if (held_rank_ < 0) held_rank_ = rank;
+  if (rank < held_rank_) throw_singular(t, rank);
   const std::size_t wrenches = add_row_wrenches(count, x_);
   for (std::size_t l = 0; l < loops_.size(); ++l) reactions_[l] = resultants_[l];
   dynamics_.solve_under_loads_and(std::span<const BodyWrench>(wrenches_.data(), wrenches));

@@ -106,8 +106,12 @@ class LoopJoints {
   std::size_t add_row_wrenches(Eigen::Index count, const VecX& x) const;
   // The matrix J M^-1 J^T of the leading `count` rows, from the responses to unit row forces.
   void calc_matrix(Eigen::Index count) const;
-  // Solves matrix x = x for the leading count rows (rows no force moves set aside), in place.
-  void solve_rows(Eigen::Index count, VecX& x, double t) const;
+  // Solves matrix x = x for the leading count rows (rows no force moves set aside), in place;
+  // returns how many of them are independent (not counting those set aside).
+  Eigen::Index solve_rows(Eigen::Index count, VecX& x, double t) const;
+  // The closing joints' names, quoted, for messages; and the singular position's error.
+  std::string joint_names() const;
+  [[noreturn]] void throw_singular(double t, Eigen::Index rank) const;
   // The dynamics' response (speed jumps) to impulses x along the rows.
   void respond_to_row_impulses(Eigen::Index count, const VecX& x) const;
 
@@ -124,6 +128,9 @@ class LoopJoints {
   mutable ConstraintSolveScratch scratch_;
   mutable std::vector<JointReaction> resultants_;  // per loop, of the last add_row_wrenches
   mutable std::vector<JointReaction> reactions_;   // per loop, from the last solve_forces
+  // The rows' rank at the run's first force solve: the loops' structure, which a singular
+  // position lowers (-1 until then).
+  mutable Eigen::Index held_rank_ = -1;
 };
 
 }  // namespace tumble

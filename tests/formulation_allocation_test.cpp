@@ -161,6 +161,21 @@ TEST(NoAllocation, StepsOfAJointedSystem) {
   }
 }
 
+// Closed loops: a slider-crank driven at a speed (a hinge closing a planar loop, three of its
+// rows repeating the plane's) and two shafts on a Hooke joint, whose steps solve for the loops'
+// forces and project onto them.
+TEST(NoAllocation, StepsOfClosedLoops) {
+  for (const char* example : {"slider_crank.yaml", "hooke_shafts.yaml"}) {
+    const Scenario scenario =
+        load_scenario(std::string(TUMBLE_SOURCE_DIR) + "/examples/" + example, {});
+    for (const std::string method : {"dopri5", "dop853", "rk4"}) {
+      PreparedSimulation run = prepare_simulation(scenario);
+      EXPECT_EQ(allocations_in_steps(*run.formulation, method, run.y0), 0)
+          << example << " " << method;
+    }
+  }
+}
+
 // A sphere rolling down a ramp, a disk sliding on the floor, a box sliding and spinning on its
 // face and a cone rolling on its side: both contact modes, whose steps solve for the contact
 // forces, project onto the constraints and evaluate the events.

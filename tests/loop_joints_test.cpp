@@ -10,6 +10,7 @@
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
 #include "test_files.hpp"
+#include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble {
 namespace {
@@ -202,6 +203,25 @@ TEST(LoopJoints, AFourBarDrivenPastItsDeadCentreStopsThereSayingSo) {
   EXPECT_NE(result.report.failure.find("dead centre"), std::string::npos) << result.report.failure;
 }
 
+TEST(LoopJoints, BricardsMechanismMovesWithTheFreedomTheCountMisses) {
+  const test::ScenarioRun run =
+      test::run_scenario(load_scenario(test::example("bricard.yaml"), {}));
+  ASSERT_EQ(run.rows.size(), 1001U);
+  EXPECT_EQ(run.rows.back().t, 10.0);
+  const double E0 = run.rows.front().quantities.total_energy;
+  double largest_ke = 0.0;
+  for (const test::Row& row : run.rows) {
+    largest_ke = std::max(largest_ke, row.quantities.kinetic_energy);
+  }
+  ASSERT_GT(largest_ke, 1.0);  // it moves: one freedom
+  const double scale = std::max(std::abs(E0), largest_ke);
+  for (const test::Row& row : run.rows) {
+    EXPECT_NEAR(row.quantities.total_energy, E0, 1e-8 * scale) << "t " << row.t;
+    EXPECT_LT(row.extras.loops.gap, 1e-13) << "t " << row.t;
+    EXPECT_LT(row.extras.loops.turn, 1e-13) << "t " << row.t;
+  }
+}
+
 // Six links joined in a ring by six parallel hinges: a planar hexagon with three freedoms of its
 // own, whose six hinges state three constraints more than the ring needs (each link's plane).
 // Thrown spinning about two axes, with two of its hinges flexing at the start, it falls freely.
@@ -281,6 +301,17 @@ TEST(LoopJoints, AHexagonOfHingedLinksThrownSpinningKeepsItsMomentaAndItsHinges)
         << "t " << row.t;
     EXPECT_LT(row.extras.loops.gap, 1e-12);
     EXPECT_LT(row.extras.loops.turn, 1e-12);
+  }
+}
+
+TEST(LoopJoints, ModesRefuseALoopAtItsClosingJoint) {
+  const Scenario scenario = load_scenario(test::example("four_bar.yaml"), {});
+  try {
+    modes_of_scenario(scenario);
+    ADD_FAILURE() << "tumble modes linearised a closed loop";
+  } catch (const ScenarioError& error) {
+    EXPECT_EQ(error.key(), "joints.B");
+    EXPECT_NE(error.why().find("does not linearise"), std::string::npos) << error.why();
   }
 }
 

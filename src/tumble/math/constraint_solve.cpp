@@ -122,7 +122,6 @@ void solve_with_redundant_rows(MatX& A, VecX& b, Eigen::Index n, double scale, d
     for (Eigen::Index c = r + 1; c < rank; ++c) sum -= A(r, c) * b(c);
     b(r) = sum / A(r, r);
   }
-  scratch.rank = rank;
   least_norm_solution(A, b, n, rank, scratch);
   // Back to the unknowns' own order: position k holds unknown column_of[k].
   VecX& x = scratch.b;
@@ -145,7 +144,6 @@ void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolv
   }
   scratch.A.topLeftCorner(n, n) = A.topLeftCorner(n, n);
   scratch.b.head(n) = b.head(n);
-  scratch.rank = n;
   for (Eigen::Index col = 0; col < n; ++col) {
     Eigen::Index pivot = col;
     for (Eigen::Index r = col + 1; r < n; ++r) {

@@ -34,7 +34,6 @@ struct ConstraintSolveScratch {
   MatX A;
   VecX b;
   std::vector<Eigen::Index> column_of;  // the unknown at each pivot position
-  Eigen::Index rank = 0;                // of the last solve's rows: how many are independent
 };
 
 // With `scales` (n entries, > 0), the solution taken where rows are redundant is the least in

@@ -544,7 +544,7 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
       const TreeJoint& joint = m_.tree[k];
       if (joint.nv > 0) jumped.segment(joint.v, joint.nv) += d_.work[k].qdd;
     }
-    const std::span<const BodyWrench> loop_impulses = loops_.tangent_impulses(t, jumped);
+    const std::span<const BodyWrench> loop_impulses = loops_.tangent_impulses(jumped);
     calc_kinematics(y, true);
     load_jumps(loop_impulses);
     solve(t, true);

@@ -20,10 +20,15 @@ namespace {
 // A row whose response to its own force is below this fraction of the largest row's is one no
 // force moves: the tree already holds that motion (a Hooke joint's centre on a bearing's axis).
 constexpr double kDeadResponse = 1e-12;
+// An eigenvalue of J M^-1 J^T this small against its largest is a direction the rows repeat.
+constexpr double kRedundantRow = 1e-12;
 // Newton's method on the positions stops once the largest error is this small against the
 // joints' size (or against a radian), or after this many moves, or when a move gains nothing.
 constexpr double kClosedLoop = 1e-15;
 constexpr int kMostMoves = 8;
+// A loop whose largest error stays above this (against the joints' size, or a radian) once
+// Newton's method has done what it can does not close: the run stops.
+constexpr double kLoopBound = 1e-9;
 
 }  // namespace
 
@@ -81,7 +86,13 @@ LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
   wrenches_.resize(2 * loops_.size());
   matrix_ = MatX::Zero(static_cast<Eigen::Index>(most_rows), static_cast<Eigen::Index>(most_rows));
   x_ = VecX::Zero(static_cast<Eigen::Index>(most_rows));
-  scratch_ = ConstraintSolveScratch(static_cast<Eigen::Index>(most_rows));
+  // Every row of every loop is always there: the solve's size is fixed, so its eigensolver's
+  // room is taken once.
+  Eigen::Index rows = 0;
+  for (const Loop& loop : loops_) rows += (loop.all_point_rows ? 3 : 2) + loop.turn_rows;
+  square_ = MatX::Zero(rows, rows);
+  eigen_ = Eigen::SelfAdjointEigenSolver<MatX>(rows);
+  projected_ = VecX::Zero(rows);
   reactions_.resize(loops_.size());
   resultants_.resize(loops_.size());
 }
@@ -249,29 +260,40 @@ void LoopJoints::calc_matrix(Eigen::Index count) const {
   }
 }
 
-Eigen::Index LoopJoints::solve_rows(Eigen::Index count, VecX& x, double t) const {
+Eigen::Index LoopJoints::solve_rows(Eigen::Index count, VecX& x) const {
   double largest = 0.0;
-  Eigen::Index dead = 0;
   for (Eigen::Index i = 0; i < count; ++i) largest = std::max(largest, std::abs(matrix_(i, i)));
   // A row no force moves carries no force: the tree holds that motion already, and its entries
-  // are round-off that the solve could not tell from a real response.
+  // are round-off.
   for (Eigen::Index i = 0; i < count; ++i) {
     if (matrix_.row(i).head(count).cwiseAbs().maxCoeff() > kDeadResponse * largest) continue;
     matrix_.row(i).head(count).setZero();
     matrix_.col(i).head(count).setZero();
-    matrix_(i, i) = 1.0;
     x(i) = 0.0;
-    ++dead;
   }
-  try {
-    solve_constraints_in_place(matrix_, x, count, scratch_);
-    return scratch_.rank - dead;
-  } catch (const InconsistentConstraints&) {
-    throw std::runtime_error(fmt::format(
-        "at t = {:.17g} s the loops that {} close cannot be held: their constraints contradict "
-        "each other (a dead centre or another position where a loop loses a freedom it had)",
-        t, joint_names()));
+  // J M^-1 J^T is symmetric and positive semi-definite: its pseudo-inverse gives, of the forces
+  // that best meet the rows, the least-norm one. Where rows repeat, off the constraints'
+  // manifold (a stage of a step, before its projection) they agree only to the state's drift:
+  // the pseudo-inverse meets them in the least-squares sense, continuously in the state, so that
+  // the error control sees a smooth right-hand side. What would make them contradict, a singular
+  // position or drives that ask for motions the loops do not allow, shows as a drop of the rank
+  // (solve_forces) or as a loop the projection cannot close (project).
+  square_ = matrix_.topLeftCorner(count, count);
+  eigen_.compute(square_);
+  const VecX& values = eigen_.eigenvalues();
+  const double floor = kRedundantRow * values.cwiseAbs().maxCoeff();
+  Eigen::Index rank = 0;
+  projected_.noalias() = eigen_.eigenvectors().transpose() * x.head(count);
+  for (Eigen::Index k = 0; k < count; ++k) {
+    if (values(k) > floor) {
+      projected_(k) /= values(k);
+      ++rank;
+    } else {
+      projected_(k) = 0.0;
+    }
   }
+  x.head(count).noalias() = eigen_.eigenvectors() * projected_;
+  return rank;
 }
 
 std::string LoopJoints::joint_names() const {
@@ -291,6 +313,14 @@ void LoopJoints::throw_singular(double t, Eigen::Index rank) const {
       t, joint_names(), rank, held_rank_));
 }
 
+void LoopJoints::throw_open(double t, double error) const {
+  throw std::runtime_error(fmt::format(
+      "at t = {:.17g} s the loops that {} close cannot be closed: their joints stay {:.3g} of "
+      "their size apart (drives that ask for motions the loops do not allow, or a singular "
+      "position)",
+      t, joint_names(), error));
+}
+
 void LoopJoints::solve_forces(double t) const {
   dynamics_.solve_under_loads();
   const Eigen::Index count = gather_rows(true);
@@ -298,7 +328,7 @@ void LoopJoints::solve_forces(double t) const {
     x_(i) = -row_acceleration(rows_[static_cast<std::size_t>(i)], false);
   }
   calc_matrix(count);
-  const Eigen::Index rank = solve_rows(count, x_, t);
+  const Eigen::Index rank = solve_rows(count, x_);
   // The rows' rank is the loops' structure (a planar linkage of 3D hinges repeats three rows a
   // pin), constant along the motion; where it drops, the loops have lost a direction they held
   // (a dead centre, a change point), where neither the motion nor the forces are determined.
@@ -322,7 +352,7 @@ void LoopJoints::project(double t, VecX& y) const {
   // Positions: Newton's method, each move the least in the mass metric that closes the rows to
   // first order; it converges quadratically from a step's drift.
   double previous = std::numeric_limits<double>::infinity();
-  for (int move = 0; move < kMostMoves; ++move) {
+  for (int move = 0;; ++move) {
     dynamics_.calc_motion(y, false);
     const Eigen::Index count = gather_rows(false);
     double worst = 0.0;
@@ -331,27 +361,34 @@ void LoopJoints::project(double t, VecX& y) const {
       worst = std::max(worst, std::abs(row.error) / (row.turn ? 1.0 : length_scale_));
       x_(i) = -row.error;
     }
-    if (worst <= kClosedLoop || !(worst < previous)) break;
+    if (worst <= kClosedLoop) break;
+    // Where Newton's method has stopped gaining (or run out of moves), the loops are closed to
+    // the round-off of the positions' own size, or cannot close at all (drives that ask for
+    // motions the loops do not allow, a singular position).
+    if (!(worst < previous) || move == kMostMoves) {
+      if (worst > kLoopBound) throw_open(t, worst);
+      break;
+    }
     previous = worst;
     calc_matrix(count);
-    solve_rows(count, x_, t);
+    solve_rows(count, x_);
     respond_to_row_impulses(count, x_);
     dynamics_.apply_displacement(y);
     dynamics_.normalise(t, y);
   }
   // Velocities: the impulses that zero every row's velocity (linear: one solve).
-  dynamics_.respond_to_impulses(tangent_impulses(t, y));
+  dynamics_.respond_to_impulses(tangent_impulses(y));
   dynamics_.apply_speed_jumps(y);
 }
 
-std::span<const BodyWrench> LoopJoints::tangent_impulses(double t, const VecX& y) const {
+std::span<const BodyWrench> LoopJoints::tangent_impulses(const VecX& y) const {
   dynamics_.calc_motion(y, true);
   const Eigen::Index count = gather_rows(true);
   for (Eigen::Index i = 0; i < count; ++i) {
     x_(i) = -row_velocity(rows_[static_cast<std::size_t>(i)]);
   }
   calc_matrix(count);
-  solve_rows(count, x_, t);
+  solve_rows(count, x_);
   const std::size_t wrenches = add_row_wrenches(count, x_);
   for (std::size_t l = 0; l < loops_.size(); ++l) reactions_[l] = resultants_[l];
   return {wrenches_.data(), wrenches};

@@ -26,10 +26,12 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include "tumble/contact/contact_dynamics.hpp"
 #include "tumble/dynamics/model.hpp"
 #include "tumble/dynamics/row_extras.hpp"
-#include "tumble/math/constraint_solve.hpp"
+
+#include "tumble/math/types.hpp"
 
 namespace tumble {
 
@@ -53,7 +55,7 @@ class LoopJoints {
   // At a jump: the impulses that take the velocities of y onto the loops' tangent (the least
   // change of kinetic energy), as wrenches on the bodies (valid until the next call), with each
   // loop's resultant as its reaction (an impulse: N s, N m s).
-  std::span<const BodyWrench> tangent_impulses(double t, const VecX& y) const;
+  std::span<const BodyWrench> tangent_impulses(const VecX& y) const;
   // The loops' errors at the state last evaluated (after calc_motion with velocities).
   LoopErrors errors_now() const;
 
@@ -108,10 +110,12 @@ class LoopJoints {
   void calc_matrix(Eigen::Index count) const;
   // Solves matrix x = x for the leading count rows (rows no force moves set aside), in place;
   // returns how many of them are independent (not counting those set aside).
-  Eigen::Index solve_rows(Eigen::Index count, VecX& x, double t) const;
+  Eigen::Index solve_rows(Eigen::Index count, VecX& x) const;
   // The closing joints' names, quoted, for messages; and the singular position's error.
   std::string joint_names() const;
   [[noreturn]] void throw_singular(double t, Eigen::Index rank) const;
+  // A loop that Newton's method cannot close: its largest error (against the joints' size).
+  [[noreturn]] void throw_open(double t, double error) const;
   // The dynamics' response (speed jumps) to impulses x along the rows.
   void respond_to_row_impulses(Eigen::Index count, const VecX& x) const;
 
@@ -125,7 +129,9 @@ class LoopJoints {
   mutable std::vector<BodyWrench> wrenches_;
   mutable MatX matrix_;
   mutable VecX x_;
-  mutable ConstraintSolveScratch scratch_;
+  mutable MatX square_;  // the leading rows' matrix, for the eigensolver
+  mutable Eigen::SelfAdjointEigenSolver<MatX> eigen_;
+  mutable VecX projected_;
   mutable std::vector<JointReaction> resultants_;  // per loop, of the last add_row_wrenches
   mutable std::vector<JointReaction> reactions_;   // per loop, from the last solve_forces
   // The rows' rank at the run's first force solve: the loops' structure, which a singular

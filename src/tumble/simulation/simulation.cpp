@@ -387,6 +387,8 @@ ColumnLayout layout_with_elements(const Scenario& scenario,
   for (const JointSpec& j : scenario.joints) {
     layout.joints.push_back(j.name);
     std::vector<std::string>& names = layout.joint_coordinates.emplace_back();
+    // A loop's closing joint is a constraint, not a coordinate of the state: no columns.
+    if (j.closes_loop) continue;
     for (const CoordinateName& name : joint_kind(j.type).coordinate_columns()) {
       names.emplace_back(name.suffix);
     }

@@ -337,6 +337,20 @@ joints:
                          "lock: {at: 0.5}}\n" +
                          run,
                      8, 3, "joints.r", "cannot lock");
+  // Three hinges in a triangle with ground make a structure: nothing can move.
+  test::expect_error(
+      links + "  r: {type: hinge, bodies: [ground, b], at: [0, 0, -1], axis: [0, 1, 0]}\n" + run, 8,
+      3, "joints.r", "leave nothing free to move");
+  // So do two welds.
+  test::expect_error(R"(tumble: 1
+bodies:
+  a: {shape: sphere, radius: 0.1, mass: 1, position: [1, 0, 0]}
+joints:
+  p: {type: fixed, bodies: [ground, a], at: [0, 0, 0]}
+  q: {type: fixed, bodies: [a, ground], at: [2, 0, 0]}
+simulate: {duration: 1}
+)",
+                     6, 3, "joints.q", "leave nothing free to move");
   // Contacts are not yet solved with a loop's forces.
   test::expect_error(links +
                          "  r: {type: ball, bodies: [ground, b], at: [0, 0, -1]}\n"

@@ -59,10 +59,12 @@ class Formulation : public OdeSystem {
   virtual void calc_row_extras(double t, const VecX& y, RowExtras& extras) const;
 
   // Why the run cannot start from y0 (a contact inside its plane, or touching it and moving
-  // into it): the contact's index and the reason; nullopt if it can.
+  // into it; joints that close loops and leave nothing free to move): the contact's index, or
+  // the model joint's where `joint` >= 0, and the reason; nullopt if it can.
   struct StartProblem {
     std::size_t contact = 0;
     std::string why;
+    int joint = -1;
   };
   virtual std::optional<StartProblem> start_problem(const VecX& /*y0*/) const {
     return std::nullopt;

@@ -1,5 +1,6 @@
 #include "tumble/multibody/articulated_formulation.hpp"
 
+#include <fmt/format.h>
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -482,9 +483,34 @@ double ArticulatedFormulation::step_limit(double t, const VecX& y) const {
 
 std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
     const VecX& y0) const {
-  std::optional<ContactSystem::StartProblem> problem = contacts_.start_problem(y0);
-  if (!problem) return std::nullopt;
-  return StartProblem{problem->contact, std::move(problem->why)};
+  if (std::optional<ContactSystem::StartProblem> problem = contacts_.start_problem(y0)) {
+    return StartProblem{problem->contact, std::move(problem->why)};
+  }
+  if (loops_.empty()) return std::nullopt;
+  // The freedoms the tree's joints give the bodies relative to each other and to ground (a free
+  // body's six are its own whatever the loops do), less the loops' independent constraints: with
+  // none left and nothing driven, the loops make a structure, whose reactions no motion decides.
+  Eigen::Index freedoms = 0;
+  bool driven = false;
+  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
+    const TreeJoint& joint = m_.tree[k];
+    if (joint.type == JointType::Free || joint.nv == 0) continue;
+    if (m_.prescribed(k, s_.schedule_time)) {
+      driven = true;
+    } else {
+      freedoms += joint.nv;
+    }
+  }
+  const Eigen::Index constraints = loops_.rank_at(y0);
+  if (driven || freedoms > constraints) return std::nullopt;
+  return StartProblem{0,
+                      fmt::format("the joints that close loops ({}) leave nothing free to move: "
+                                  "the other joints' {} freedoms are all taken by the loops' {} "
+                                  "independent constraints, and no motor drives one (a "
+                                  "structure, whose reactions are statically indeterminate); "
+                                  "take a joint out, or drive one at a speed",
+                                  loops_.joint_names(), freedoms, constraints),
+                      static_cast<int>(loops_.first_joint())};
 }
 
 bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {

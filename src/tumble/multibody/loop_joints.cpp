@@ -394,6 +394,14 @@ std::span<const BodyWrench> LoopJoints::tangent_impulses(const VecX& y) const {
   return {wrenches_.data(), wrenches};
 }
 
+Eigen::Index LoopJoints::rank_at(const VecX& y) const {
+  dynamics_.calc_motion(y, true);
+  const Eigen::Index count = gather_rows(true);
+  x_.head(count).setZero();
+  calc_matrix(count);
+  return solve_rows(count, x_);
+}
+
 LoopErrors LoopJoints::errors_now() const {
   LoopErrors errors;
   const Eigen::Index count = gather_rows(true);

@@ -56,6 +56,11 @@ class LoopJoints {
   // change of kinetic energy), as wrenches on the bodies (valid until the next call), with each
   // loop's resultant as its reaction (an impulse: N s, N m s).
   std::span<const BodyWrench> tangent_impulses(const VecX& y) const;
+  // How many of the loops' rows are independent at y (their rank, rows no force moves aside).
+  Eigen::Index rank_at(const VecX& y) const;
+  // The closing joints' names, quoted, for messages; the first one's model joint.
+  std::string joint_names() const;
+  std::size_t first_joint() const { return loops_.front().joint; }
   // The loops' errors at the state last evaluated (after calc_motion with velocities).
   LoopErrors errors_now() const;
 
@@ -111,8 +116,7 @@ class LoopJoints {
   // Solves matrix x = x for the leading count rows (rows no force moves set aside), in place;
   // returns how many of them are independent (not counting those set aside).
   Eigen::Index solve_rows(Eigen::Index count, VecX& x) const;
-  // The closing joints' names, quoted, for messages; and the singular position's error.
-  std::string joint_names() const;
+  // The singular position's error.
   [[noreturn]] void throw_singular(double t, Eigen::Index rank) const;
   // A loop that Newton's method cannot close: its largest error (against the joints' size).
   [[noreturn]] void throw_open(double t, double error) const;

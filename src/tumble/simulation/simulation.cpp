@@ -181,6 +181,10 @@ VecX initial_state_vector(const Scenario& scenario, const Formulation& formulati
   check_initial_velocities(scenario, formulation, given, y0);
   formulation.assemble(y0);
   if (const auto problem = formulation.start_problem(y0)) {
+    if (problem->joint >= 0) {
+      const JointSpec& joint = scenario.joints[static_cast<std::size_t>(problem->joint)];
+      throw ScenarioError(joint.where, "joints." + joint.name, problem->why);
+    }
     const ContactSpec& contact = scenario.contacts[problem->contact];
     throw ScenarioError(contact.where, fmt::format("contacts[{}]", problem->contact), problem->why);
   }

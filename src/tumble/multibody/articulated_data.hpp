@@ -4,6 +4,7 @@
 // sized once for an ArticulatedModel and reused at every evaluation, so nothing is allocated in a
 // step. It holds nothing a run needs to go on (that is y and the HybridState): any evaluation
 // overwrites it. One per thread.
+#include <string>
 #include <vector>
 
 #include "tumble/body/rigid_body.hpp"
@@ -54,6 +55,9 @@ struct ArticulatedData {
   std::vector<MovingSubspace> moving;
   std::vector<BodyState> states;  // per body, from the last calc_kinematics
   VecX rates;                     // the ledger's rates (calc_row_extras)
+  // Why the loops could not be closed at the start (assemble), for start_problem; empty if
+  // they were.
+  std::string assembly_problem;
 };
 
 }  // namespace tumble

@@ -354,7 +354,14 @@ void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) co
 }
 
 void ArticulatedFormulation::assemble(VecX& y) const {
-  if (!loops_.empty()) loops_.project(s_.schedule_time, y);
+  if (loops_.empty()) return;
+  try {
+    loops_.project(s_.schedule_time, y);
+  } catch (const std::runtime_error& error) {
+    // A loop that cannot close at the start is the scenario's problem: start_problem says so at
+    // the closing joint.
+    d_.assembly_problem = error.what();
+  }
 }
 
 void ArticulatedFormulation::unpack_all(const VecX& y, std::span<BodyState> states) const {
@@ -487,6 +494,9 @@ std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
     return StartProblem{problem->contact, std::move(problem->why)};
   }
   if (loops_.empty()) return std::nullopt;
+  if (!d_.assembly_problem.empty()) {
+    return StartProblem{0, d_.assembly_problem, static_cast<int>(loops_.first_joint())};
+  }
   // The freedoms the tree's joints give the bodies relative to each other and to ground (a free
   // body's six are its own whatever the loops do), less the loops' independent constraints: with
   // none left and nothing driven, the loops make a structure, whose reactions no motion decides.

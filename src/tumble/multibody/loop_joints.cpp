@@ -97,6 +97,11 @@ LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
   resultants_.resize(loops_.size());
 }
 
+Vec3 LoopJoints::joint_point_W(const Loop& loop) const {
+  const Side b = side(loop.body_b, false);
+  return b.r_G_W + b.R_WB * loop.p_BJ_B;
+}
+
 LoopJoints::Side LoopJoints::side(int body, bool with_velocities) const {
   Side s;
   if (body == kGround) return s;
@@ -355,10 +360,16 @@ void LoopJoints::project(double t, VecX& y) const {
   for (int move = 0;; ++move) {
     dynamics_.calc_motion(y, false);
     const Eigen::Index count = gather_rows(false);
+    // A gap is measured against the joints' size, or against where they are if that is
+    // larger: far from the origin, the positions' own round-off is larger than the joints'.
+    double where = length_scale_;
+    for (const Loop& loop : loops_) {
+      where = std::max(where, joint_point_W(loop).cwiseAbs().maxCoeff());
+    }
     double worst = 0.0;
     for (Eigen::Index i = 0; i < count; ++i) {
       const Row& row = rows_[static_cast<std::size_t>(i)];
-      worst = std::max(worst, std::abs(row.error) / (row.turn ? 1.0 : length_scale_));
+      worst = std::max(worst, std::abs(row.error) / (row.turn ? 1.0 : where));
       x_(i) = -row.error;
     }
     if (worst <= kClosedLoop) break;

@@ -97,6 +97,8 @@ class LoopJoints {
     Vec3 v_G_W = Vec3::Zero();
   };
   Side side(int body, bool with_velocities) const;
+  // The loop's joint point on its second body, world (after calc_motion).
+  Vec3 joint_point_W(const Loop& loop) const;
   // Every loop's rows at the state last evaluated (calc_motion), into rows_; returns their count.
   Eigen::Index gather_rows(bool with_velocities) const;
   // A row's velocity, and its value's rate under the accelerations of the last solve (with the
@@ -127,7 +129,7 @@ class LoopJoints {
   std::vector<Loop> loops_;
   std::vector<int> loop_of_joint_;  // per model joint: its loop, or -1
   Vec3 gravity_W_;
-  double length_scale_ = 1.0;  // m: the joints' largest offset from a COM, at least 1
+  double length_scale_ = 1.0;  // m: the joints' largest offset from a COM (1 if all are 0)
   // Scratch, sized once (a run serves one thread at a time).
   mutable std::vector<Row> rows_;
   mutable std::vector<BodyWrench> wrenches_;

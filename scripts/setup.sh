@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config clang-format clang libclang-rt-14-dev
   libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev libmuparser-dev libboost-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
   libopenmpi-dev openmpi-bin
   python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib python3-pandas
   chromium gnuplot-nox ffmpeg

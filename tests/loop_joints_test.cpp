@@ -74,6 +74,34 @@ TEST(LoopJoints, ASliderCrankDrivenAtASpeedFollowsItsClosedFormAndTakesItsTorque
   }
 }
 
+// The same slider-crank with its guide listed last: the guide closes the loop, as a slider (two
+// point rows across its axis, three turn rows) or as a cylindrical joint (two and two), and the
+// wrist pin is a joint of the tree.
+TEST(LoopJoints, ASliderCranksGuideMayCloseTheLoop) {
+  const std::string text = test::read_file(test::example("slider_crank.yaml"));
+  const std::size_t from = text.find("  guide:");
+  const std::size_t to = text.find('\n', from) + 1;
+  const std::string guide = text.substr(from, to - from);
+  std::string reordered = text;
+  reordered.erase(from, to - from);
+  reordered = test::replaced(reordered, "simulate:", guide + "simulate:");
+  for (const bool cylindrical : {false, true}) {
+    const std::string yaml =
+        cylindrical ? test::replaced(reordered, "{type: prismatic", "{type: cylindrical")
+                    : reordered;
+    const test::ScenarioRun run = test::run_inline_scenario(yaml, "slider_crank_guide_last");
+    ASSERT_TRUE(run.scenario.joints.back().closes_loop);
+    ASSERT_EQ(run.scenario.joints.back().name, "guide");
+    const double r = 0.1, l = 0.35, w = 20.0, theta0 = 30.0 * kPi / 180.0;
+    for (const test::Row& row : run.rows) {
+      const double x = slider_crank_pose(r, l, theta0 + w * row.t).x;
+      EXPECT_NEAR(row.states.at(2).r_G.x(), x, 1e-10 * l) << "t " << row.t;
+      EXPECT_LE(row.extras.loops.gap, 1e-12 * l);
+      EXPECT_LE(row.extras.loops.turn, 1e-12);
+    }
+  }
+}
+
 TEST(LoopJoints, TwoShaftsOnAHookeJointTurnAtTheJointsRatio) {
   const test::ScenarioRun run =
       test::run_scenario(load_scenario(test::example("hooke_shafts.yaml"), {}));
@@ -300,6 +328,53 @@ TEST(LoopJoints, AHexagonOfHingedLinksThrownSpinningKeepsItsMomentaAndItsHinges)
         << "t " << row.t;
     EXPECT_LT(row.extras.loops.gap, 1e-12);
     EXPECT_LT(row.extras.loops.turn, 1e-12);
+  }
+}
+
+// A weld closing a loop holds everything a joint can: two bodies hinged to each other and welded
+// at the same point swing as one, their hinge never turning, and E stays.
+TEST(LoopJoints, AWeldAcrossAHingeHoldsItStill) {
+  const test::ScenarioRun run = test::run_inline_scenario(R"(tumble: 1
+bodies:
+  a: {shape: sphere, radius: 0.1, mass: 1, position: [1, 0, 0]}
+  b: {shape: sphere, radius: 0.1, mass: 2, position: [2, 0, 0]}
+joints:
+  p: {type: hinge, bodies: [ground, a], at: [0, 0, 0], axis: [0, 1, 0]}
+  q: {type: hinge, bodies: [a, b], at: [1.5, 0, 0], axis: [0, 1, 0]}
+  weld: {type: fixed, bodies: [a, b], at: [1.5, 0, 0]}
+simulate: {duration: 3, integrator: dop853, rtol: 1e-10, atol: 1e-12, output_every: 0.01}
+)",
+                                                          "weld");
+  const double E0 = run.rows.front().quantities.total_energy;
+  double largest_ke = 0.0;
+  for (const test::Row& row : run.rows) {
+    largest_ke = std::max(largest_ke, row.quantities.kinetic_energy);
+  }
+  ASSERT_GT(largest_ke, 1.0);
+  for (const test::Row& row : run.rows) {
+    EXPECT_LT(std::abs(row.extras.coordinates.at(1).values[0]), 1e-12) << "t " << row.t;  // q.angle
+    EXPECT_NEAR(row.quantities.total_energy, E0, 1e-9 * largest_ke) << "t " << row.t;
+    EXPECT_LT(row.extras.loops.turn, 1e-13);
+  }
+}
+
+// The four-bar closed by a ball joint at B instead of a hinge: the same motion (the plane's
+// hinges hold B in it, so the ball's row out of the plane is one no force moves).
+TEST(LoopJoints, AFourBarClosedByABallMovesAsByAHinge) {
+  const std::string text = test::read_file(test::example("four_bar.yaml"));
+  const test::ScenarioRun hinge = test::run_inline_scenario(text, "four_bar_hinge");
+  const std::string ball_text =
+      test::replaced(test::replaced(text, "B: {type: hinge, bodies: [coupler, rocker]",
+                                    "B: {type: ball, bodies: [coupler, rocker]"),
+                     "0.4999897501000391], axis: [0, 1, 0]}", "0.4999897501000391]}");
+  const test::ScenarioRun ball = test::run_inline_scenario(ball_text, "four_bar_ball");
+  ASSERT_EQ(hinge.rows.size(), ball.rows.size());
+  for (std::size_t i = 0; i < hinge.rows.size(); ++i) {
+    // Both runs are within their tolerance (rtol 1e-10) of the one motion.
+    EXPECT_NEAR(ball.rows[i].extras.coordinates.at(0).values[0],
+                hinge.rows[i].extras.coordinates.at(0).values[0], 1e-7)
+        << "t " << hinge.rows[i].t;
+    EXPECT_LT(ball.rows[i].extras.loops.gap, 1e-12);
   }
 }
 

@@ -26,6 +26,13 @@ struct SliderCrankPose {
   double rod_turn1 = 0.0, rod_turn2 = 0.0;
 };
 
+// The largest kinetic energy over a run's rows, J: the scale of its energy's drift.
+double largest_kinetic_energy(const test::ScenarioRun& run) {
+  double largest = 0.0;
+  for (const test::Row& row : run.rows) largest = std::max(largest, row.quantities.kinetic_energy);
+  return largest;
+}
+
 SliderCrankPose slider_crank_pose(double r, double l, double theta) {
   const double u = r * std::sin(theta), u1 = r * std::cos(theta), u2 = -u;
   const double s = std::sqrt(l * l - u * u);
@@ -129,10 +136,7 @@ TEST(LoopJoints, AFourBarFreeUnderGravityConservesEnergyWithItsLoopClosed) {
   const test::ScenarioRun run = test::run_inline_scenario(text, "four_bar_100s");
   ASSERT_EQ(run.rows.size(), 2001U);
   const double E0 = run.rows.front().quantities.total_energy;
-  double largest_ke = 0.0;
-  for (const test::Row& row : run.rows) {
-    largest_ke = std::max(largest_ke, row.quantities.kinetic_energy);
-  }
+  const double largest_ke = largest_kinetic_energy(run);
   ASSERT_GT(largest_ke, 1.0);  // it moves
   const double scale = std::max(std::abs(E0), largest_ke);
   for (const test::Row& row : run.rows) {
@@ -236,10 +240,7 @@ TEST(LoopJoints, BricardsMechanismMovesWithTheFreedomTheCountMisses) {
   ASSERT_EQ(run.rows.size(), 1001U);
   EXPECT_EQ(run.rows.back().t, 10.0);
   const double E0 = run.rows.front().quantities.total_energy;
-  double largest_ke = 0.0;
-  for (const test::Row& row : run.rows) {
-    largest_ke = std::max(largest_ke, row.quantities.kinetic_energy);
-  }
+  const double largest_ke = largest_kinetic_energy(run);
   ASSERT_GT(largest_ke, 1.0);  // it moves: one freedom
   const double scale = std::max(std::abs(E0), largest_ke);
   for (const test::Row& row : run.rows) {
@@ -308,10 +309,7 @@ TEST(LoopJoints, AHexagonOfHingedLinksThrownSpinningKeepsItsMomentaAndItsHinges)
   Vec3 P0, L0;
   momenta(run.rows.front(), P0, L0);
   const double E0 = run.rows.front().quantities.total_energy;
-  double largest_ke = 0.0;
-  for (const test::Row& row : run.rows) {
-    largest_ke = std::max(largest_ke, row.quantities.kinetic_energy);
-  }
+  const double largest_ke = largest_kinetic_energy(run);
   // The hinges flex: the links' rates about z differ from one another at some row.
   double flex = 0.0;
   for (const test::Row& row : run.rows) {
@@ -346,10 +344,7 @@ simulate: {duration: 3, integrator: dop853, rtol: 1e-10, atol: 1e-12, output_eve
 )",
                                                           "weld");
   const double E0 = run.rows.front().quantities.total_energy;
-  double largest_ke = 0.0;
-  for (const test::Row& row : run.rows) {
-    largest_ke = std::max(largest_ke, row.quantities.kinetic_energy);
-  }
+  const double largest_ke = largest_kinetic_energy(run);
   ASSERT_GT(largest_ke, 1.0);
   for (const test::Row& row : run.rows) {
     EXPECT_LT(std::abs(row.extras.coordinates.at(1).values[0]), 1e-12) << "t " << row.t;  // q.angle

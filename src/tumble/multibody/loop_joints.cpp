@@ -32,6 +32,10 @@ constexpr double kLoopBound = 1e-9;
 
 }  // namespace
 
+Vec3 LoopJoints::relative_velocity_W(const Side& a, const Side& b, const Vec3& p_W) {
+  return b.v_G_W + b.omega_W.cross(p_W - b.r_G_W) - (a.v_G_W + a.omega_W.cross(p_W - a.r_G_W));
+}
+
 LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
     : dynamics_(dynamics), gravity_W_(model.gravity_W) {
   loop_of_joint_.assign(model.joints.size(), -1);
@@ -168,10 +172,7 @@ double LoopJoints::row_velocity(const Row& row) const {
   const Side a = side(loop.body_a, true);
   const Side b = side(loop.body_b, true);
   if (row.turn) return row.direction_W.dot(b.omega_W - a.omega_W);
-  const Vec3 p_W = b.r_G_W + b.R_WB * loop.p_BJ_B;
-  const Vec3 v_b = b.v_G_W + b.omega_W.cross(p_W - b.r_G_W);
-  const Vec3 v_a = a.v_G_W + a.omega_W.cross(p_W - a.r_G_W);
-  return row.direction_W.dot(v_b - v_a);
+  return row.direction_W.dot(relative_velocity_W(a, b, b.r_G_W + b.R_WB * loop.p_BJ_B));
 }
 
 double LoopJoints::row_acceleration(const Row& row, bool impulsive) const {
@@ -207,9 +208,7 @@ double LoopJoints::row_acceleration(const Row& row, bool impulsive) const {
   if (impulsive) return response;
   // d/dt of u . (v_B(p) - v_A(p)) with p moving with B: A's velocity field read at a moving
   // point gains omega_A x (v_B(p) - v_A(p)).
-  const Vec3 v_b = b.v_G_W + b.omega_W.cross(p_W - b.r_G_W);
-  const Vec3 v_a = a.v_G_W + a.omega_W.cross(p_W - a.r_G_W);
-  const Vec3 relative = v_b - v_a;
+  const Vec3 relative = relative_velocity_W(a, b, p_W);
   return response + row.direction_rate_W.dot(relative) -
          row.direction_W.dot(a.omega_W.cross(relative));
 }

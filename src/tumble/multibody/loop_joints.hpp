@@ -97,6 +97,8 @@ class LoopJoints {
     Vec3 v_G_W = Vec3::Zero();
   };
   Side side(int body, bool with_velocities) const;
+  // The velocity of B's material point at p_W less A's there, world.
+  static Vec3 relative_velocity_W(const Side& a, const Side& b, const Vec3& p_W);
   // The loop's joint point on its second body, world (after calc_motion).
   Vec3 joint_point_W(const Loop& loop) const;
   // Every loop's rows at the state last evaluated (calc_motion), into rows_; returns their count.

@@ -28,13 +28,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
-#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
 
 #include "example_timing.hpp"
+#include "mujoco_xml.hpp"
 #include "tumble/simulation/simulation.hpp"
 
 namespace tumble::four_bar_bench {
@@ -192,18 +191,7 @@ std::string four_bar_mjcf(double dt, bool stiff) {
 class MuJoCoFourBar {
  public:
   MuJoCoFourBar(double dt, bool stiff) {
-    const std::string xml = four_bar_mjcf(dt, stiff);
-    const auto vfs = std::make_unique<mjVFS>();  // about 2 MB: not on the stack
-    mj_defaultVFS(vfs.get());
-    const char* name = "four_bar.xml";
-    if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0) {
-      throw std::runtime_error("MuJoCo: cannot make the virtual file");
-    }
-    std::memcpy(vfs->filedata[vfs->nfile - 1], xml.data(), xml.size());
-    std::array<char, 1000> error{};
-    model_ = mj_loadXML(name, vfs.get(), error.data(), static_cast<int>(error.size()));
-    mj_deleteVFS(vfs.get());
-    if (model_ == nullptr) throw std::runtime_error(fmt::format("MuJoCo: {}", error.data()));
+    model_ = load_mujoco_xml(four_bar_mjcf(dt, stiff), "four_bar.xml");
     data_ = mj_makeData(model_);
     crank_qpos_ = model_->jnt_qposadr[mj_name2id(model_, mjOBJ_JOINT, "O2")];
     coupler_ = mj_name2id(model_, mjOBJ_BODY, "coupler");

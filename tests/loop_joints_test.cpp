@@ -10,7 +10,6 @@
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
 #include "test_files.hpp"
-#include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble {
 namespace {
@@ -370,17 +369,6 @@ TEST(LoopJoints, AFourBarClosedByABallMovesAsByAHinge) {
                 hinge.rows[i].extras.coordinates.at(0).values[0], 1e-7)
         << "t " << hinge.rows[i].t;
     EXPECT_LT(ball.rows[i].extras.loops.gap, 1e-12);
-  }
-}
-
-TEST(LoopJoints, ModesRefuseALoopAtItsClosingJoint) {
-  const Scenario scenario = load_scenario(test::example("four_bar.yaml"), {});
-  try {
-    modes_of_scenario(scenario);
-    ADD_FAILURE() << "tumble modes linearised a closed loop";
-  } catch (const ScenarioError& error) {
-    EXPECT_EQ(error.key(), "joints.B");
-    EXPECT_NE(error.why().find("does not linearise"), std::string::npos) << error.why();
   }
 }
 

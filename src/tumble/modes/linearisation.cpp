@@ -142,10 +142,10 @@ void check_contacts(const ModalEquations& equations, double speed_scale) {
   }
 }
 
-// An orthonormal basis T (columns, over the kept coordinates) of the contacts' tangent space:
-// the changes the linearised constraints allow (C dz = 0), with the positions set aside free to
-// take up what they can (a rolling disk's height follows its lean).
-MatX contact_tangent(const ModalEquations& equations, const std::vector<Eigen::Index>& kept) {
+// An orthonormal basis T (columns, over the kept coordinates) of the contacts' and the loops'
+// tangent space: the changes the linearised constraints allow (C dz = 0), with the positions set
+// aside free to take up what they can (a rolling disk's height follows its lean).
+MatX constraint_tangent(const ModalEquations& equations, const std::vector<Eigen::Index>& kept) {
   const Eigen::Index n = equations.layout().size();
   const MatX C =
       jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.constraints<Dual>(z); }, n);
@@ -242,8 +242,8 @@ Linearisation linearise(const ModalEquations& equations) {
   const VecX f_s = rows(f0, result.kept);
   MatX A = rows_and_columns(J, result.kept);
   const auto ns = static_cast<Eigen::Index>(result.kept.size());
-  result.tangent = equations.contacts().empty() ? MatX(MatX::Identity(ns, ns))
-                                                : contact_tangent(equations, result.kept);
+  result.tangent = equations.holds_constraints() ? constraint_tangent(equations, result.kept)
+                                                 : MatX(MatX::Identity(ns, ns));
 
   // Step 3: steady? First as an equilibrium, then with the spins, then with the turn about the
   // vertical as well.
@@ -348,7 +348,7 @@ Linearisation linearise(const ModalEquations& equations) {
   }
   result.A = A;
 
-  // Step 4: the quotient, within the contacts' tangent space T, by the directions along the
+  // Step 4: the quotient, within the constraints' tangent space T, by the directions along the
   // orbit (with neither, Q is the identity): with O = T^T orbit = [P' Q'] R, P = T P', Q = T Q'.
   const Eigen::Index dimension = result.tangent.cols();
   const MatX along = result.tangent.transpose() * result.orbit;

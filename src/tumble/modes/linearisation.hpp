@@ -18,8 +18,8 @@
 //    turned (X_i) are a neutral family of the same steady motion; they are taken out (the
 //    quotient), so a change of spin is not mistaken for a growing drift. So are the turns the
 //    state does not move along that carry its motion over unchanged (a rolling wheel's heading).
-// With contacts touching (modal_contacts.hpp), the modes are those on the constraints' tangent
-// space T, which the flow keeps (A T in T): the quotient is taken within it.
+// With contacts touching (modal_contacts.hpp) or loops closed, the modes are those on the
+// constraints' tangent space T, which the flow keeps (A T in T): the quotient is taken within it.
 #include <functional>
 #include <string>
 #include <vector>
@@ -47,7 +47,7 @@ struct Linearisation {
   // Turns the state does not move along that leave its motion as it is (a rolling wheel's
   // heading): taken out with the orbit, at no rate.
   std::vector<Symmetry> neutral_symmetries;
-  MatX tangent;      // T: an orthonormal basis of the changes of s the contacts allow (all: I)
+  MatX tangent;      // T: an orthonormal basis of the changes of s the constraints allow (all: I)
   MatX orbit;        // columns: the directions, in s, along which the motion only turns (or could)
   MatX orbit_basis;  // P: an orthonormal basis of their span
   MatX quotient;     // Q: one of the rest of T; A's modes are those of Q^T A Q

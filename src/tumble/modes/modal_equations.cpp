@@ -102,6 +102,33 @@ ModalEquations::ModalEquations(std::shared_ptr<const ArticulatedModel> model, Mo
     }
     contacts_ = touching_contacts(model_->model, r_G_W, R_WB);
   }
+  for (const JointModel& joint : model_->model.joints) {
+    if (joint.closes_loop) loops_.push_back(loop_shape_of(joint));
+  }
+  for (const LoopShape& loop : loops_) loop_rows_ += loop.rows();
+  if (loop_rows_ > 0) select_loop_rows();
+}
+
+void ModalEquations::select_loop_rows() {
+  const std::vector<ModalKinematics<double>> kin = kinematics<double>(VecX::Zero(layout_.size()));
+  std::vector<M3X<double>> J_v, J_w;
+  calc_body_jacobians<double>(kin, J_v, J_w);
+  MatX G(loop_rows_, unknowns_);
+  VecX kappa(loop_rows_);
+  calc_loop_rows<double>(kin, J_v, J_w, G, kappa);
+  // A row is kept where it moves the speeds along a direction the rows before it do not: what is
+  // left of it off their span (an orthonormal basis, grown as rows are kept) is more than
+  // round-off against the row itself. A row the tree already holds (none of it moves) is left.
+  const double largest = G.rowwise().norm().maxCoeff();
+  MatX basis(unknowns_, 0);
+  for (Eigen::Index i = 0; i < loop_rows_; ++i) {
+    const VecX g = G.row(i).transpose();
+    const VecX off = g - basis * (basis.transpose() * g);
+    if (g.norm() <= 1e-12 * largest || off.norm() <= 1e-9 * g.norm()) continue;
+    basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
+    basis.col(basis.cols() - 1) = off / off.norm();
+    loop_rows_held_.push_back(i);
+  }
 }
 
 template <typename S>
@@ -171,6 +198,85 @@ void ModalEquations::calc_body_velocities(const VecX& z, std::span<BodyState> st
     BodyState& s = states[static_cast<std::size_t>(model_->tree[k].child)];
     s.v_G = kin[k].v_G;
     s.omega_W = kin[k].omega;
+  }
+}
+
+template <typename S>
+void ModalEquations::calc_body_jacobians(const std::vector<ModalKinematics<S>>& kin,
+                                         std::vector<M3X<S>>& J_v, std::vector<M3X<S>>& J_w) const {
+  const ArticulatedModel& m = *model_;
+  const std::size_t n = m.tree.size();
+  J_v.assign(n, M3X<S>::Zero(3, unknowns_));
+  J_w.assign(n, M3X<S>::Zero(3, unknowns_));
+  for (std::size_t kb = 0; kb < n; ++kb) {
+    const ModalKinematics<S>& c = kin[kb];
+    for (std::size_t k = kb;;) {
+      const TreeJoint& joint = m.tree[k];
+      if (unknown_[k] >= 0) {
+        for (Eigen::Index i = 0; i < joint.nv; ++i) {
+          J_w[kb].col(unknown_[k] + i) = kin[k].G_w.col(i);
+          J_v[kb].col(unknown_[k] + i) =
+              kin[k].G_w.col(i).cross(c.r_G - kin[k].r_G) + kin[k].G_v.col(i);
+        }
+      }
+      if (joint.parent == kGround) break;
+      k = m.slot_of_body[static_cast<std::size_t>(joint.parent)];
+    }
+  }
+}
+
+template <typename S>
+BodyStateOf<S> ModalEquations::loop_side(const std::vector<ModalKinematics<S>>& kin,
+                                         int body) const {
+  BodyStateOf<S> side;
+  if (body == kGround) return side;
+  const ModalKinematics<S>& c = kin[model_->slot_of_body[static_cast<std::size_t>(body)]];
+  side.R_WB = c.R_WC;
+  side.r_G = c.r_G;
+  side.omega_W = c.omega;
+  side.v_G = c.v_G;
+  return side;
+}
+
+template <typename S>
+void ModalEquations::calc_loop_rows(const std::vector<ModalKinematics<S>>& kin,
+                                    const std::vector<M3X<S>>& J_v, const std::vector<M3X<S>>& J_w,
+                                    MX<S>& G, VecXOf<S>& kappa) const {
+  const ArticulatedModel& m = *model_;
+  Eigen::Index row = 0;
+  for (const LoopShape& loop : loops_) {
+    const BodyStateOf<S> a = loop_side<S>(kin, loop.body_a);
+    const BodyStateOf<S> b = loop_side<S>(kin, loop.body_b);
+    const V3<S> p_W = loop_point_W(loop, b);
+    // A body's point at p_W: its velocity per unit of the unknown speeds, its angular velocity's,
+    // and its point's and its angular acceleration with their rates zero (ground: none).
+    struct Point {
+      M3X<S> J_p, J_w;
+      V3<S> a0, alpha0;
+    };
+    const auto point_of_body = [&](int body) {
+      Point point{M3X<S>::Zero(3, unknowns_), M3X<S>::Zero(3, unknowns_), V3<S>::Zero(),
+                  V3<S>::Zero()};
+      if (body == kGround) return point;
+      const std::size_t k = m.slot_of_body[static_cast<std::size_t>(body)];
+      const ModalKinematics<S>& c = kin[k];
+      const V3<S> p = p_W - c.r_G;
+      point.J_p = J_v[k] - hat<S>(p) * J_w[k];
+      point.J_w = J_w[k];
+      point.a0 = c.a0 + c.alpha0.cross(p) + c.omega.cross(V3<S>(c.omega.cross(p)));
+      point.alpha0 = c.alpha0;
+      return point;
+    };
+    const Point on_a = point_of_body(loop.body_a);
+    const Point on_b = point_of_body(loop.body_b);
+    for_each_loop_row<S>(loop, a, b, [&](const LoopRowOf<S>& held) {
+      const V3<S>& d = held.direction_W;
+      const S response = held.turn ? d.dot(on_b.alpha0 - on_a.alpha0) : d.dot(on_b.a0 - on_a.a0);
+      G.row(row) =
+          held.turn ? d.transpose() * (on_b.J_w - on_a.J_w) : d.transpose() * (on_b.J_p - on_a.J_p);
+      kappa(row) = loop_row_acceleration(loop, held, a, b, response);
+      ++row;
+    });
   }
 }
 
@@ -250,24 +356,11 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
       force(unknown[k] + motor.freedom) += S(motor.value);
     }
   }
-  std::vector<M3X<S>> J_v(n), J_w(n);
+  std::vector<M3X<S>> J_v, J_w;
+  calc_body_jacobians<S>(kin, J_v, J_w);
   for (std::size_t kb = 0; kb < n; ++kb) {
     const ModalKinematics<S>& c = kin[kb];
     const RigidBody& body = model.bodies[m.tree[kb].child];
-    J_v[kb] = M3X<S>::Zero(3, unknowns);
-    J_w[kb] = M3X<S>::Zero(3, unknowns);
-    for (std::size_t k = kb;;) {
-      const TreeJoint& joint = m.tree[k];
-      if (unknown[k] >= 0) {
-        for (Eigen::Index i = 0; i < joint.nv; ++i) {
-          J_w[kb].col(unknown[k] + i) = kin[k].G_w.col(i);
-          J_v[kb].col(unknown[k] + i) =
-              kin[k].G_w.col(i).cross(c.r_G - kin[k].r_G) + kin[k].G_v.col(i);
-        }
-      }
-      if (joint.parent == kGround) break;
-      k = m.slot_of_body[static_cast<std::size_t>(joint.parent)];
-    }
     const M3<S> I_W = c.R_WC * body.I_G_B.cast<S>() * c.R_WC.transpose();
     const std::size_t b = m.tree[kb].child;
     mass += body.mass * J_v[kb].transpose() * J_v[kb] + J_w[kb].transpose() * I_W * J_w[kb];
@@ -280,7 +373,8 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
   // of the unknown speeds (the body's point: J_v - [p]x J_w) and kappa their acceleration with
   // u' = 0 (a_G + alpha x p + omega x p'). With u' = M^-1 (Q + G^T lambda):
   // G M^-1 G^T lambda = -kappa - G M^-1 Q.
-  Eigen::Index rows = 0;
+  // The loops' rows are held the same way, those independent at t0 (the others follow).
+  Eigen::Index rows = static_cast<Eigen::Index>(loop_rows_held_.size());
   for (const ModalContact& contact : contacts_) rows += contact.rows();
   if (rows > 0) {
     MX<S> G = MX<S>::Zero(rows, unknowns);
@@ -306,6 +400,15 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
       }
       row += held.rows();
     }
+    if (!loop_rows_held_.empty()) {
+      MX<S> G_loops(loop_rows_, unknowns);
+      VecXOf<S> kappa_loops(loop_rows_);
+      calc_loop_rows<S>(kin, J_v, J_w, G_loops, kappa_loops);
+      for (const Eigen::Index held : loop_rows_held_) {
+        G.row(row) = G_loops.row(held);
+        kappa(row++) = kappa_loops(held);
+      }
+    }
     MX<S> response(unknowns, rows);  // M^-1 G^T
     for (Eigen::Index j = 0; j < rows; ++j) {
       response.col(j) = solve_mass(mass, VecXOf<S>(G.row(j).transpose()));
@@ -314,6 +417,11 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
     // Rows the joints already hold (a point on a hinge's axis) leave it singular.
     const Eigen::SelfAdjointEigenSolver<MatX> definite(values_of(schur));
     if (definite.eigenvalues()(0) <= 1e-12 * definite.eigenvalues()(rows - 1)) {
+      if (!loops_.empty()) {
+        throw NotSteady(
+            "joints: the loops' rows lose their independence here (a dead centre or a change "
+            "point): the motion is not determined, and a linearisation needs it");
+      }
       throw NotSteady(
           "contacts: a touching point's motion is already held by the joints (or by another "
           "contact): its force is not determined, and a linearisation needs it");
@@ -367,7 +475,7 @@ template <typename S>
 VecXOf<S> ModalEquations::constraints(const VecXOf<S>& z) const {
   const ArticulatedModel& m = *model_;
   const std::vector<ModalKinematics<S>> kin = kinematics<S>(z);
-  Eigen::Index rows = 0;
+  Eigen::Index rows = 2 * loop_rows_;
   for (const ModalContact& contact : contacts_) rows += 1 + contact.rows();
   VecXOf<S> values(rows);
   Eigen::Index row = 0;
@@ -385,6 +493,15 @@ VecXOf<S> ModalEquations::constraints(const VecXOf<S>& z) const {
       values(row) = n_W.dot(v_P);
     }
     row += held.rows();
+  }
+  for (const LoopShape& loop : loops_) {
+    const BodyStateOf<S> a = loop_side<S>(kin, loop.body_a);
+    const BodyStateOf<S> b = loop_side<S>(kin, loop.body_b);
+    for_each_loop_row<S>(loop, a, b, [&](const LoopRowOf<S>& held) {
+      values(row) = held.error;
+      values(row + loop_rows_) = loop_row_velocity(loop, held, a, b);
+      ++row;
+    });
   }
   return values;
 }

@@ -27,7 +27,10 @@
 // the forces lambda that keep the constraints' accelerations zero (G u' + kappa = 0), found from
 // the Schur complement of the mass matrix, G M^-1 G^T lambda = -kappa - G M^-1 Q. The flow keeps
 // the constraints, so the state stays on them; linearise() takes the modes on their tangent
-// space. Impulses and later schedule changes are not part of a linearisation about t0.
+// space. Impulses and later schedule changes are not part of a linearisation about t0. Joints
+// that close loops are held the same way, by their rows (multibody/loop_rows.hpp, the run's):
+// of those, the forces' solve takes the ones independent at t0 (a planar linkage of 3D hinges
+// repeats three rows a pin), and the tangent space all of them.
 //
 // A rotation's coordinates are a small turn r about the body's axes, R = R0 exp([r]x), taken to
 // first order (joint_kind_of.hpp, `turned`): evaluate only at z = 0 for that reason.
@@ -40,6 +43,7 @@
 #include "tumble/modes/modal_contacts.hpp"
 #include "tumble/modes/modal_coordinates.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
+#include "tumble/multibody/loop_rows.hpp"
 
 namespace tumble {
 
@@ -71,8 +75,12 @@ class ModalEquations {
   VecXOf<Scalar> rates(const VecXOf<Scalar>& z) const;
   // The contacts touching at t0, which the equations hold.
   const std::vector<ModalContact>& contacts() const { return contacts_; }
+  // Whether the equations hold constraints (contacts, loops): the modes are then on their
+  // tangent space.
+  bool holds_constraints() const { return !contacts_.empty() || !loops_.empty(); }
   // Per held contact: its point's height over the plane (m), then the point's velocity (world,
-  // m/s; a frictionless contact: its normal component). Zero on the constraints.
+  // m/s; a frictionless contact: its normal component); then every loop row's error (m or rad),
+  // then their velocities. Zero on the constraints.
   template <typename Scalar>
   VecXOf<Scalar> constraints(const VecXOf<Scalar>& z) const;
   // Per held contact at z = 0: the plane's force on the body (world, N).
@@ -91,6 +99,24 @@ class ModalEquations {
   ModalJointPoint<Scalar> point_of(std::size_t k, const VecXOf<Scalar>& z) const;
   template <typename Scalar>
   std::vector<ModalKinematics<Scalar>> kinematics(const VecXOf<Scalar>& z) const;
+  // Per tree joint's child: its COM velocity and angular velocity per unit of the unknown speeds
+  // (world), J_v and J_w.
+  template <typename Scalar>
+  void calc_body_jacobians(const std::vector<ModalKinematics<Scalar>>& kin,
+                           std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
+                           std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_w) const;
+  // Of the loops' rows, the independent ones at z = 0, into loop_rows_held_.
+  void select_loop_rows();
+  // A body's pose and twist for the loops' rows (ground: at rest).
+  template <typename Scalar>
+  BodyStateOf<Scalar> loop_side(const std::vector<ModalKinematics<Scalar>>& kin, int body) const;
+  // Every loop row's velocity per unit of the unknown speeds (into G from `row` on) and its
+  // acceleration with their rates zero (into kappa).
+  template <typename Scalar>
+  void calc_loop_rows(const std::vector<ModalKinematics<Scalar>>& kin,
+                      const std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
+                      const std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_w,
+                      MatXOf<Scalar>& G, VecXOf<Scalar>& kappa) const;
   // dz/dt, and the contacts' forces into `contact_forces_W` where given.
   template <typename Scalar>
   VecXOf<Scalar> evaluate(const VecXOf<Scalar>& z, std::vector<Vec3>* contact_forces_W) const;
@@ -103,6 +129,9 @@ class ModalEquations {
   std::vector<Eigen::Index> unknown_;
   Eigen::Index unknowns_ = 0;
   std::vector<ModalContact> contacts_;
+  std::vector<LoopShape> loops_;
+  Eigen::Index loop_rows_ = 0;                // all of the loops' rows
+  std::vector<Eigen::Index> loop_rows_held_;  // the independent ones at z = 0, in order
 };
 
 }  // namespace tumble

@@ -14,14 +14,6 @@
 namespace tumble {
 
 std::shared_ptr<const ModalEquations> modal_equations_of(const Scenario& scenario) {
-  for (const JointSpec& joint : scenario.joints) {
-    if (!joint.closes_loop) continue;
-    // The linearisation is of the tree's coordinates; on a loop it would have to be taken on the
-    // loop's constraint manifold, which it is not yet.
-    throw ScenarioError(joint.where, "joints." + joint.name,
-                        "this joint closes a loop, and `tumble modes` does not linearise a "
-                        "system with closed loops yet (tumble run integrates it)");
-  }
   // The checks a run makes of the scenario (the velocities against the joints, ...), then the
   // model in joint coordinates, whatever formulation a run would take.
   const std::shared_ptr<const SimulationModel> simulation = build_simulation_model(scenario);

@@ -10,9 +10,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "tumble/contact/contact_feature.hpp"
-#include "tumble/math/rotation.hpp"
-
 namespace tumble {
 
 namespace {
@@ -32,10 +29,6 @@ constexpr double kLoopBound = 1e-9;
 
 }  // namespace
 
-Vec3 LoopJoints::relative_velocity_W(const Side& a, const Side& b, const Vec3& p_W) {
-  return b.v_G_W + b.omega_W.cross(p_W - b.r_G_W) - (a.v_G_W + a.omega_W.cross(p_W - a.r_G_W));
-}
-
 LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
     : dynamics_(dynamics), gravity_W_(model.gravity_W) {
   loop_of_joint_.assign(model.joints.size(), -1);
@@ -46,43 +39,10 @@ LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
     Loop loop;
     loop.joint = j;
     loop.name = joint.name;
-    loop.type = joint.type;
-    loop.body_a = joint.body_a;
-    loop.body_b = joint.body_b;
-    loop.p_AJ_A = joint.p_AJ_A;
-    loop.p_BJ_B = joint.p_BJ_B;
-    loop.R_AB0 = joint.R_AB0;
-    loop.axis_B = joint.axis_B;
-    loop.axis_A =
-        joint.type == JointType::Universal ? joint.axis_A : Vec3(joint.R_AB0 * joint.axis_B);
-    plane_basis(loop.axis_A, loop.across1_A, loop.across2_A);
-    switch (joint.type) {
-      case JointType::Ball:
-        loop.turn_rows = 0;
-        break;
-      case JointType::Hinge:
-        loop.turn_rows = 2;
-        break;
-      case JointType::Universal:
-        loop.turn_rows = 1;
-        break;
-      case JointType::Cylindrical:
-        loop.all_point_rows = false;
-        loop.turn_rows = 2;
-        break;
-      case JointType::Prismatic:
-        loop.all_point_rows = false;
-        loop.turn_rows = 3;
-        break;
-      case JointType::Fixed:
-        loop.turn_rows = 3;
-        break;
-      case JointType::Free:
-        throw std::logic_error("a free joint closes no loop");
-    }
+    loop.shape = loop_shape_of(joint);
     loop_of_joint_[j] = static_cast<int>(loops_.size());
     loops_.push_back(loop);
-    largest_offset = std::max({largest_offset, loop.p_AJ_A.norm(), loop.p_BJ_B.norm()});
+    largest_offset = std::max({largest_offset, loop.shape.p_AJ_A.norm(), loop.shape.p_BJ_B.norm()});
   }
   if (largest_offset > 0.0) length_scale_ = largest_offset;
   const std::size_t most_rows = 6 * loops_.size();
@@ -93,7 +53,7 @@ LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
   // Every row of every loop is always there: the solve's size is fixed, so its eigensolver's
   // room is taken once.
   Eigen::Index rows = 0;
-  for (const Loop& loop : loops_) rows += (loop.all_point_rows ? 3 : 2) + loop.turn_rows;
+  for (const Loop& loop : loops_) rows += loop.shape.rows();
   square_ = MatX::Zero(rows, rows);
   eigen_ = Eigen::SelfAdjointEigenSolver<MatX>(rows);
   projected_ = VecX::Zero(rows);
@@ -102,8 +62,7 @@ LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
 }
 
 Vec3 LoopJoints::joint_point_W(const Loop& loop) const {
-  const Side b = side(loop.body_b, false);
-  return b.r_G_W + b.R_WB * loop.p_BJ_B;
+  return loop_point_W(loop.shape, side(loop.shape.body_b, false));
 }
 
 LoopJoints::Side LoopJoints::side(int body, bool with_velocities) const {
@@ -111,10 +70,10 @@ LoopJoints::Side LoopJoints::side(int body, bool with_velocities) const {
   if (body == kGround) return s;
   const BodyMotion w = dynamics_.motion(static_cast<std::size_t>(body));
   s.R_WB = w.R_WB;
-  s.r_G_W = w.r_G_W;
+  s.r_G = w.r_G_W;
   if (with_velocities) {
     s.omega_W = w.R_WB * w.velocity.head<3>();
-    s.v_G_W = w.R_WB * w.velocity.tail<3>();
+    s.v_G = w.R_WB * w.velocity.tail<3>();
   }
   return s;
 }
@@ -122,64 +81,27 @@ LoopJoints::Side LoopJoints::side(int body, bool with_velocities) const {
 Eigen::Index LoopJoints::gather_rows(bool with_velocities) const {
   Eigen::Index count = 0;
   for (std::size_t l = 0; l < loops_.size(); ++l) {
-    const Loop& loop = loops_[l];
-    const Side a = side(loop.body_a, with_velocities);
-    const Side b = side(loop.body_b, with_velocities);
-    const Vec3 gap_W = b.r_G_W + b.R_WB * loop.p_BJ_B - (a.r_G_W + a.R_WB * loop.p_AJ_A);
-    const auto add = [&](bool turn, const Vec3& direction_W, const Vec3& rate_W, double error) {
-      rows_[static_cast<std::size_t>(count++)] = {l, turn, direction_W, rate_W, error};
-    };
-    // Directions fixed in A turn with it.
-    const auto fixed_in_a = [&](bool turn, const Vec3& direction_A, double error_along) {
-      const Vec3 direction_W = a.R_WB * direction_A;
-      add(turn, direction_W, a.omega_W.cross(direction_W), error_along);
-    };
-    const auto point_row = [&](const Vec3& direction_A) {
-      fixed_in_a(false, direction_A, (a.R_WB * direction_A).dot(gap_W));
-    };
-    if (loop.all_point_rows) {
-      for (int k = 0; k < 3; ++k) point_row(Vec3::Unit(k));
-    } else {
-      point_row(loop.across1_A);
-      point_row(loop.across2_A);
-    }
-    if (loop.turn_rows == 3) {
-      // B's turn from where the joint holds it, as a rotation vector.
-      const Vec3 turn_W = log_so3(Mat3(b.R_WB * (a.R_WB * loop.R_AB0).transpose()));
-      for (int k = 0; k < 3; ++k) {
-        const Vec3 e = Vec3::Unit(k);
-        fixed_in_a(true, e, (a.R_WB * e).dot(turn_W));
-      }
-    } else if (loop.turn_rows == 2) {
-      // B's axis tilted from A's: a_A x a_B is the small turn that takes one to the other.
-      const Vec3 tilt_W = (a.R_WB * loop.axis_A).cross(b.R_WB * loop.axis_B);
-      fixed_in_a(true, loop.across1_A, (a.R_WB * loop.across1_A).dot(tilt_W));
-      fixed_in_a(true, loop.across2_A, (a.R_WB * loop.across2_A).dot(tilt_W));
-    } else if (loop.turn_rows == 1) {
-      // A Hooke joint keeps its axes at right angles: a1 . a2 = 0, whose rate is
-      // -(a1 x a2) . (omega_B - omega_A).
-      const Vec3 a1 = a.R_WB * loop.axis_A;
-      const Vec3 a2 = b.R_WB * loop.axis_B;
-      const Vec3 rate = a.omega_W.cross(a1).cross(a2) + a1.cross(b.omega_W.cross(a2));
-      add(true, a1.cross(a2), rate, -a1.dot(a2));
-    }
+    const LoopShape& shape = loops_[l].shape;
+    for_each_loop_row(shape, side(shape.body_a, with_velocities),
+                      side(shape.body_b, with_velocities), [&](const LoopRowOf<double>& of) {
+                        Row& row = rows_[static_cast<std::size_t>(count++)];
+                        static_cast<LoopRowOf<double>&>(row) = of;
+                        row.loop = l;
+                      });
   }
   return count;
 }
 
 double LoopJoints::row_velocity(const Row& row) const {
-  const Loop& loop = loops_[row.loop];
-  const Side a = side(loop.body_a, true);
-  const Side b = side(loop.body_b, true);
-  if (row.turn) return row.direction_W.dot(b.omega_W - a.omega_W);
-  return row.direction_W.dot(relative_velocity_W(a, b, b.r_G_W + b.R_WB * loop.p_BJ_B));
+  const LoopShape& shape = loops_[row.loop].shape;
+  return loop_row_velocity(shape, row, side(shape.body_a, true), side(shape.body_b, true));
 }
 
 double LoopJoints::row_acceleration(const Row& row, bool impulsive) const {
-  const Loop& loop = loops_[row.loop];
+  const LoopShape& loop = loops_[row.loop].shape;
   const Side a = side(loop.body_a, !impulsive);
   const Side b = side(loop.body_b, !impulsive);
-  const Vec3 p_W = b.r_G_W + b.R_WB * loop.p_BJ_B;
+  const Vec3 p_W = loop_point_W(loop, b);
   // The angular acceleration (world) and the acceleration of the material point at p_W of a
   // body, from the last solve: impulsive, only the linear response (no velocity terms); else
   // with them and with gravity, which the passes leave out (ground accelerates at -g there).
@@ -199,25 +121,18 @@ double LoopJoints::row_acceleration(const Row& row, bool impulsive) const {
     a_B += omega_B.cross(w.velocity.tail<3>() + omega_B.cross(p_B));
     return w.R_WB * a_B + gravity_W_;
   };
-  if (row.turn) {
-    const double response = row.direction_W.dot(angular(loop.body_b) - angular(loop.body_a));
-    if (impulsive) return response;
-    return response + row.direction_rate_W.dot(b.omega_W - a.omega_W);
-  }
-  const double response = row.direction_W.dot(linear(loop.body_b) - linear(loop.body_a));
+  const double response = row.turn
+                              ? row.direction_W.dot(angular(loop.body_b) - angular(loop.body_a))
+                              : row.direction_W.dot(linear(loop.body_b) - linear(loop.body_a));
   if (impulsive) return response;
-  // d/dt of u . (v_B(p) - v_A(p)) with p moving with B: A's velocity field read at a moving
-  // point gains omega_A x (v_B(p) - v_A(p)).
-  const Vec3 relative = relative_velocity_W(a, b, p_W);
-  return response + row.direction_rate_W.dot(relative) -
-         row.direction_W.dot(a.omega_W.cross(relative));
+  return loop_row_acceleration(loop, row, a, b, response);
 }
 
 std::size_t LoopJoints::add_loop_wrenches(std::size_t l, const Vec3& F_W, const Vec3& M_W,
                                           std::size_t count) const {
-  const Loop& loop = loops_[l];
+  const LoopShape& loop = loops_[l].shape;
   const Side b = side(loop.body_b, false);
-  const Vec3 p_W = b.r_G_W + b.R_WB * loop.p_BJ_B;
+  const Vec3 p_W = loop_point_W(loop, b);
   // On B: F at its joint point and M; on A the opposite, at the same point.
   if (loop.body_b != kGround) {
     const Vec3 F_B = b.R_WB.transpose() * F_W;
@@ -228,7 +143,7 @@ std::size_t LoopJoints::add_loop_wrenches(std::size_t l, const Vec3& F_W, const 
   if (loop.body_a != kGround) {
     const Side a = side(loop.body_a, false);
     const Vec3 F_A = -(a.R_WB.transpose() * F_W);
-    const Vec3 p_A = a.R_WB.transpose() * (p_W - a.r_G_W);
+    const Vec3 p_A = a.R_WB.transpose() * (p_W - a.r_G);
     Vec6 wrench;
     wrench << p_A.cross(F_A) - a.R_WB.transpose() * M_W, F_A;
     wrenches_[count++] = {static_cast<std::size_t>(loop.body_a), wrench};

@@ -14,11 +14,7 @@
 // pin's five rows repeat the plane's) make J M^-1 J^T singular; the solve keeps the independent
 // rows and, of the reactions that hold the loop, reports the least-norm one.
 //
-// Each joint's rows: its joint point on the second body held on the first body's point (every
-// direction but a slider's axis; a ball, hinge, weld and Hooke joint: all three), and the turns
-// its kind forbids (a hinge: about the two directions across its axis; a weld and a slider: all
-// three; a Hooke joint: about the direction across both its axes). The directions are fixed in
-// the first body (the world's for ground), so a row's rate of change has the first body's turn.
+// Each joint's rows are loop_rows.hpp's, which `tumble modes` linearises on too.
 //
 // It talks to the tree only through ContactDynamics (contact/contact_dynamics.hpp): poses,
 // twists, accelerations, responses to wrenches and impulses.
@@ -30,6 +26,7 @@
 #include "tumble/contact/contact_dynamics.hpp"
 #include "tumble/dynamics/model.hpp"
 #include "tumble/dynamics/row_extras.hpp"
+#include "tumble/multibody/loop_rows.hpp"
 
 #include "tumble/math/types.hpp"
 
@@ -68,37 +65,14 @@ class LoopJoints {
   struct Loop {
     std::size_t joint = 0;  // the model joint
     std::string name;
-    JointType type = JointType::Ball;
-    int body_a = kGround, body_b = 0;
-    Vec3 p_AJ_A = Vec3::Zero(), p_BJ_B = Vec3::Zero();
-    Mat3 R_AB0 = Mat3::Identity();
-    Vec3 axis_A = Vec3::UnitZ();  // hinge, slider, cylindrical: the axis; universal: the first
-    Vec3 axis_B = Vec3::UnitZ();  // hinge, slider, cylindrical: the axis; universal: the second
-    // Directions across the axis, A's axes (a slider's and a cylindrical joint's point rows, a
-    // hinge's and a cylindrical joint's turn rows).
-    Vec3 across1_A = Vec3::UnitX(), across2_A = Vec3::UnitY();
-    bool all_point_rows = true;  // else the two across the axis
-    int turn_rows = 0;           // 0, 1 (universal), 2 (across the axis) or 3 (A's axes)
+    LoopShape shape;
   };
-  // One constraint row: direction . (velocity of B's joint point less A's velocity there), or
-  // direction . (omega_B - omega_A); its direction's rate of change, and its error.
-  struct Row {
+  // One constraint row (loop_rows.hpp), and its loop.
+  struct Row : LoopRowOf<double> {
     std::size_t loop = 0;
-    bool turn = false;
-    Vec3 direction_W = Vec3::Zero();
-    Vec3 direction_rate_W = Vec3::Zero();
-    double error = 0.0;  // m or rad
   };
-  // A body's pose and twist in world axes (ground: at rest at the origin).
-  struct Side {
-    Mat3 R_WB = Mat3::Identity();
-    Vec3 r_G_W = Vec3::Zero();
-    Vec3 omega_W = Vec3::Zero();
-    Vec3 v_G_W = Vec3::Zero();
-  };
+  using Side = BodyState;  // ground: at rest at the origin
   Side side(int body, bool with_velocities) const;
-  // The velocity of B's material point at p_W less A's there, world.
-  static Vec3 relative_velocity_W(const Side& a, const Side& b, const Vec3& p_W);
   // The loop's joint point on its second body, world (after calc_motion).
   Vec3 joint_point_W(const Loop& loop) const;
   // Every loop's rows at the state last evaluated (calc_motion), into rows_; returns their count.

@@ -11,6 +11,7 @@
 
 #include "scenario_run.hpp"
 #include "test_files.hpp"
+#include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble {
 namespace {
@@ -57,6 +58,26 @@ TEST(AndrewsSqueezer, ItsSevenAnglesAtThirtyMillisecondsAreTheReferences) {
     const double crank_turn = row.extras.coordinates.at(0).values[0];
     EXPECT_NEAR(row.quantities.total_energy - E0, mom * crank_turn, 1e-8 * largest_energy)
         << "t " << row.t;
+  }
+}
+
+TEST(AndrewsSqueezer, ModesEquationsStartWithTheReferencesAccelerations) {
+  // The test set's consistent initial values give the accelerations at t = 0 from rest: beta''
+  // and Theta'' (the others are 0). `tumble modes`' equations (the loops' rows by automatic
+  // differentiation's scalar) must give them; the reference's digits are good to about 1e-10.
+  const std::shared_ptr<const ModalEquations> equations =
+      modal_equations_of(load_scenario(test::example("andrews_squeezer.yaml"), {}));
+  const VecX rates = equations->rates<double>(VecX::Zero(equations->layout().size()));
+  const auto rate_of = [&](std::size_t joint) {
+    const auto slot = static_cast<std::size_t>(equations->model().slot_of_joint[joint]);
+    return rates(equations->layout().speed_offset[slot]);
+  };
+  const double beta2 = 14222.4439199541138705911625887;
+  const double Theta2 = -10666.8329399655854029433719415;
+  EXPECT_NEAR(rate_of(0), beta2, 1e-9 * beta2);
+  EXPECT_NEAR(rate_of(1), Theta2, 1e-9 * std::abs(Theta2));
+  for (std::size_t joint = 2; joint < kAngles.size(); ++joint) {
+    EXPECT_NEAR(rate_of(joint), 0.0, 1e-9 * beta2) << "joint " << joint;
   }
 }
 

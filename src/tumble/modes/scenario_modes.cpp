@@ -22,6 +22,9 @@ std::shared_ptr<const ModalEquations> modal_equations_of(const Scenario& scenari
   const ArticulatedFormulation formulation(articulated);
   VecX y0(formulation.dimension());
   formulation.pack(initial_states(scenario), y0);
+  // Loops given open by the round-off of the scenario's numbers are closed as a run closes them
+  // (one that cannot close was refused above, by the run's checks).
+  formulation.assemble(y0);
   return std::make_shared<const ModalEquations>(
       articulated, make_modal_layout(*articulated, simulation->t0), y0, simulation->t0);
 }

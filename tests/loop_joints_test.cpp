@@ -178,6 +178,27 @@ TEST(LoopJoints, ALockOnAFourBarStopsItAndGroundsItsMomentThroughTheLoop) {
   }
 }
 
+TEST(LoopJoints, AFourBarLockedJointByJointStaysStillThoughItsLoopHoldsFewerDirections) {
+  // The crank locks at t = 0.5 s (the linkage stops), then the rocker at 0.75 s: with both held,
+  // only the coupler's turn about A is left to B's rows, which hold one direction where they held
+  // two. That is the tree's freedoms changing at a breakpoint, not a singular position: the run
+  // goes on, at rest, with the loop closed.
+  std::string text = test::read_file(test::example("planar/four_bar.yaml"));
+  text = test::replaced(text, "at: [0, 0]}", "at: [0, 0], lock: {at: 0.5}}");
+  text = test::replaced(text, "at: [0.6, 0]}", "at: [0.6, 0], lock: {at: 0.75}}");
+  text = test::replaced(text, "duration: 10", "duration: 1");
+  const test::ScenarioRun run = test::run_inline_scenario(text, "four_bar_locked_twice");
+  ASSERT_EQ(run.jumps.size(), 2U);
+  ASSERT_GT(run.jumps[0].kinetic_energy_before, 1.0);
+  EXPECT_NEAR(run.rows.back().t, 1.0, 1e-12);
+  for (const test::Row& row : run.rows) {
+    EXPECT_LT(row.extras.loops.gap, 1e-12) << "t " << row.t;
+    if (row.t >= 0.5) {
+      EXPECT_LT(row.quantities.kinetic_energy, 1e-20) << "t " << row.t;
+    }
+  }
+}
+
 TEST(LoopJoints, AnImpulseOnAFourBarsCouplerIsSharedByTheLoopWithoutWork) {
   // Struck at rest: the impulse's work is J . v_P / 2, and it is the KE after only if the loop's
   // share of the blow does none (its impulses zero its rows' velocities, which were zero).

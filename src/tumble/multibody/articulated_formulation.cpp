@@ -454,6 +454,7 @@ void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras&
 
 void ArticulatedFormulation::begin(double t0, const VecX& y) {
   Formulation::begin(t0, y);
+  loops_.retake_rank();
   contacts_.set_time(t0);
   s_.jumps.clear();
   contacts_.begin(t0, y);
@@ -461,6 +462,7 @@ void ArticulatedFormulation::begin(double t0, const VecX& y) {
 
 void ArticulatedFormulation::at_breakpoint(double t, VecX& y) {
   s_.schedule_time = t;
+  loops_.retake_rank();
   contacts_.set_time(t);
   const bool speeds_jumped = apply_jumps_at(t, y);
   contacts_.reclassify(t, y, speeds_jumped);

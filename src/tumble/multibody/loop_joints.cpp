@@ -227,9 +227,9 @@ std::string LoopJoints::joint_names() const {
 void LoopJoints::throw_singular(double t, Eigen::Index rank) const {
   throw std::runtime_error(fmt::format(
       "at t = {:.17g} s the loops that {} close reached a singular position: their rows hold "
-      "{} independent directions where they held {} (a dead centre or a change point, where the "
+      "{} independent direction{} where they held {} (a dead centre or a change point, where the "
       "joints' constraints lose rank and neither the motion nor the reactions are determined)",
-      t, joint_names(), rank, held_rank_));
+      t, joint_names(), rank, rank == 1 ? "" : "s", held_rank_));
 }
 
 void LoopJoints::throw_open(double t, double error) const {

@@ -53,6 +53,11 @@ class LoopJoints {
   // change of kinetic energy), as wrenches on the bodies (valid until the next call), with each
   // loop's resultant as its reaction (an impulse: N s, N m s).
   std::span<const BodyWrench> tangent_impulses(const VecX& y) const;
+  // At a run's start and at each breakpoint: locks and motors that start or stop change the
+  // tree's freedoms, and with them how many directions the rows hold (a four-bar whose crank and
+  // rocker are both locked holds one where it held two). The next force solve takes the rank
+  // anew, against which a singular position is then found.
+  void retake_rank() const { held_rank_ = -1; }
   // How many of the loops' rows are independent at y (their rank, rows no force moves aside).
   Eigen::Index rank_at(const VecX& y) const;
   // The closing joints' names, quoted, for messages; the first one's model joint.
@@ -116,8 +121,8 @@ class LoopJoints {
   mutable VecX projected_;
   mutable std::vector<JointReaction> resultants_;  // per loop, of the last add_row_wrenches
   mutable std::vector<JointReaction> reactions_;   // per loop, from the last solve_forces
-  // The rows' rank at the run's first force solve: the loops' structure, which a singular
-  // position lowers (-1 until then).
+  // The rows' rank at the first force solve since the run's start or its last breakpoint: the
+  // loops' structure, which a singular position lowers (-1 until then).
   mutable Eigen::Index held_rank_ = -1;
 };
 

@@ -19,6 +19,8 @@
 #include "modes_checks.hpp"
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "test_files.hpp"
+#include "tumble/modes/not_steady.hpp"
 
 namespace tumble {
 namespace {
@@ -157,6 +159,18 @@ TEST(LoopModes, AFourBarBalancedAtItsTopFallsAtItsOneFreedomsRate) {
     EXPECT_EQ(mode.eigenvalue.imag(), 0.0);
   }
   EXPECT_EQ(modes.analysis.verdict, ModalAnalysis::Verdict::Unstable);
+}
+
+TEST(LoopModes, AMechanismItsDriveAndItsLoopHoldHasNoModes) {
+  // The Hooke shafts: the input driven at a speed, the output's turn fixed by the loop. Nothing
+  // is left to move: no linearisation, and `tumble modes` says so (exit 6).
+  try {
+    modes_of_scenario(load_scenario(test::example("hooke_shafts.yaml"), {}));
+    ADD_FAILURE() << "modes of a mechanism with no freedom";
+  } catch (const NotSteady& error) {
+    EXPECT_NE(std::string(error.what()).find("nothing can move"), std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace

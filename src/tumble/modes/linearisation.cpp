@@ -154,6 +154,8 @@ MatX constraint_tangent(const ModalEquations& equations, const std::vector<Eigen
   Eigen::Index rank = 0;
   while (rank < sigma.size() && sigma(rank) > 1e-10 * std::max(sigma(0), 1.0)) ++rank;
   const MatX allowed = svd.matrixV().rightCols(n - rank);
+  // The constraints take every freedom (a mechanism driven at a speed): no change is allowed.
+  if (allowed.cols() == 0) return MatX(static_cast<Eigen::Index>(kept.size()), 0);
   MatX allowed_kept(static_cast<Eigen::Index>(kept.size()), allowed.cols());
   for (std::size_t i = 0; i < kept.size(); ++i) {
     allowed_kept.row(static_cast<Eigen::Index>(i)) = allowed.row(kept[i]);
@@ -244,6 +246,11 @@ Linearisation linearise(const ModalEquations& equations) {
   const auto ns = static_cast<Eigen::Index>(result.kept.size());
   result.tangent = equations.holds_constraints() ? constraint_tangent(equations, result.kept)
                                                  : MatX(MatX::Identity(ns, ns));
+  if (result.tangent.cols() == 0) {
+    throw NotSteady(
+        "joints: nothing can move: the loops' and the contacts' constraints take every freedom "
+        "the other joints leave (a mechanism driven at a speed moves as the drive says)");
+  }
 
   // Step 3: steady? First as an equilibrium, then with the spins, then with the turn about the
   // vertical as well.

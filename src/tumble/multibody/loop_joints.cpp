@@ -27,6 +27,36 @@ constexpr int kMostMoves = 8;
 // Newton's method has done what it can does not close: the run stops.
 constexpr double kLoopBound = 1e-9;
 
+// A loop's second body's acceleration less its first's at the joint point p_W, and the same of
+// their angular accelerations (world), from the dynamics' last solve: impulsive, the response
+// alone; else with the velocity terms and with gravity, which the passes leave out (ground
+// accelerates at -g there).
+struct RelativeAcceleration {
+  Vec3 alpha_W = Vec3::Zero();
+  Vec3 a_W = Vec3::Zero();
+};
+
+RelativeAcceleration relative_acceleration(const ContactDynamics& dynamics, const LoopShape& loop,
+                                           const Vec3& p_W, const Vec3& gravity_W, bool impulsive) {
+  const auto angular = [&](int body) -> Vec3 {
+    if (body == kGround) return Vec3::Zero();
+    const BodyMotion w = dynamics.motion(static_cast<std::size_t>(body));
+    return w.R_WB * w.acceleration.head<3>();
+  };
+  const auto linear = [&](int body) -> Vec3 {
+    if (body == kGround) return Vec3::Zero();
+    const BodyMotion w = dynamics.motion(static_cast<std::size_t>(body));
+    const Vec3 p_B = w.R_WB.transpose() * (p_W - w.r_G_W);
+    const Vec3 alpha_B = w.acceleration.head<3>();
+    Vec3 a_B = w.acceleration.tail<3>() + alpha_B.cross(p_B);
+    if (impulsive) return w.R_WB * a_B;
+    const Vec3 omega_B = w.velocity.head<3>();
+    a_B += omega_B.cross(w.velocity.tail<3>() + omega_B.cross(p_B));
+    return w.R_WB * a_B + gravity_W;
+  };
+  return {angular(loop.body_b) - angular(loop.body_a), linear(loop.body_b) - linear(loop.body_a)};
+}
+
 }  // namespace
 
 LoopJoints::LoopJoints(const Model& model, const ContactDynamics& dynamics)
@@ -97,34 +127,13 @@ double LoopJoints::row_velocity(const Row& row) const {
   return loop_row_velocity(shape, row, side(shape.body_a, true), side(shape.body_b, true));
 }
 
-double LoopJoints::row_acceleration(const Row& row, bool impulsive) const {
+double LoopJoints::row_acceleration(const Row& row) const {
   const LoopShape& loop = loops_[row.loop].shape;
-  const Side a = side(loop.body_a, !impulsive);
-  const Side b = side(loop.body_b, !impulsive);
-  const Vec3 p_W = loop_point_W(loop, b);
-  // The angular acceleration (world) and the acceleration of the material point at p_W of a
-  // body, from the last solve: impulsive, only the linear response (no velocity terms); else
-  // with them and with gravity, which the passes leave out (ground accelerates at -g there).
-  const auto angular = [&](int body) -> Vec3 {
-    if (body == kGround) return Vec3::Zero();
-    const BodyMotion w = dynamics_.motion(static_cast<std::size_t>(body));
-    return w.R_WB * w.acceleration.head<3>();
-  };
-  const auto linear = [&](int body) -> Vec3 {
-    if (body == kGround) return Vec3::Zero();
-    const BodyMotion w = dynamics_.motion(static_cast<std::size_t>(body));
-    const Vec3 p_B = w.R_WB.transpose() * (p_W - w.r_G_W);
-    const Vec3 alpha_B = w.acceleration.head<3>();
-    Vec3 a_B = w.acceleration.tail<3>() + alpha_B.cross(p_B);
-    if (impulsive) return w.R_WB * a_B;
-    const Vec3 omega_B = w.velocity.head<3>();
-    a_B += omega_B.cross(w.velocity.tail<3>() + omega_B.cross(p_B));
-    return w.R_WB * a_B + gravity_W_;
-  };
-  const double response = row.turn
-                              ? row.direction_W.dot(angular(loop.body_b) - angular(loop.body_a))
-                              : row.direction_W.dot(linear(loop.body_b) - linear(loop.body_a));
-  if (impulsive) return response;
+  const Side a = side(loop.body_a, true);
+  const Side b = side(loop.body_b, true);
+  const RelativeAcceleration relative =
+      relative_acceleration(dynamics_, loop, loop_point_W(loop, b), gravity_W_, false);
+  const double response = row.direction_W.dot(row.turn ? relative.alpha_W : relative.a_W);
   return loop_row_acceleration(loop, row, a, b, response);
 }
 
@@ -173,8 +182,16 @@ void LoopJoints::calc_matrix(Eigen::Index count) const {
     const std::size_t wrenches = add_loop_wrenches(unit.loop, unit.turn ? zero : unit.direction_W,
                                                    unit.turn ? unit.direction_W : zero, 0);
     dynamics_.respond_to_impulses(std::span<const BodyWrench>(wrenches_.data(), wrenches));
-    for (Eigen::Index i = 0; i < count; ++i) {
-      matrix_(i, j) = row_acceleration(rows_[static_cast<std::size_t>(i)], true);
+    // Each loop's relative response once for all its rows (they are together in rows_): the
+    // rows' own, without a pass over the bodies per row.
+    for (Eigen::Index i = 0; i < count;) {
+      const std::size_t l = rows_[static_cast<std::size_t>(i)].loop;
+      const RelativeAcceleration relative = relative_acceleration(
+          dynamics_, loops_[l].shape, joint_point_W(loops_[l]), gravity_W_, true);
+      for (; i < count && rows_[static_cast<std::size_t>(i)].loop == l; ++i) {
+        const Row& row = rows_[static_cast<std::size_t>(i)];
+        matrix_(i, j) = row.direction_W.dot(row.turn ? relative.alpha_W : relative.a_W);
+      }
     }
   }
 }
@@ -244,7 +261,7 @@ void LoopJoints::solve_forces(double t) const {
   dynamics_.solve_under_loads();
   const Eigen::Index count = gather_rows(true);
   for (Eigen::Index i = 0; i < count; ++i) {
-    x_(i) = -row_acceleration(rows_[static_cast<std::size_t>(i)], false);
+    x_(i) = -row_acceleration(rows_[static_cast<std::size_t>(i)]);
   }
   calc_matrix(count);
   const Eigen::Index rank = solve_rows(count, x_);

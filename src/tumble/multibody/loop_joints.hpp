@@ -85,7 +85,7 @@ class LoopJoints {
   // A row's velocity, and its value's rate under the accelerations of the last solve (with the
   // velocity terms and gravity: psi_0 when no loop force acts).
   double row_velocity(const Row& row) const;
-  double row_acceleration(const Row& row, bool impulsive) const;
+  double row_acceleration(const Row& row) const;
   // The wrenches on loop l's bodies of the force F_W at its joint point and the moment M_W
   // (on its second body; their opposites on its first), into wrenches_ from `count` on; returns
   // the new count.

@@ -80,19 +80,21 @@ struct FourBar {
     return m2 * r2 * r2 / 3 + m3 * v_G3_squared + m3 * r3 * r3 / 12 * p.k3 * p.k3 +
            m4 * r4 * r4 / 3 * p.k4 * p.k4;
   }
-  // The stable equilibrium: the root of V' where V'' > 0, by bisection from a scan.
-  double stable_equilibrium() const {
+  // An equilibrium, a root of V' by bisection from a scan: the stable one (V' rising through
+  // zero, V'' > 0) or the unstable one (falling).
+  double equilibrium(bool stable) const {
     const int n = 720;
+    const double sign = stable ? 1.0 : -1.0;
     for (int j = 0; j < n; ++j) {
       double lo = 2 * kPi * j / n, hi = 2 * kPi * (j + 1) / n;
-      if (!(dV(lo) < 0 && dV(hi) > 0)) continue;
+      if (!(sign * dV(lo) < 0 && sign * dV(hi) > 0)) continue;
       for (int k = 0; k < 200 && hi - lo > 1e-16; ++k) {
         const double mid = (lo + hi) / 2;
-        (dV(mid) < 0 ? lo : hi) = mid;
+        (sign * dV(mid) < 0 ? lo : hi) = mid;
       }
       return (lo + hi) / 2;
     }
-    ADD_FAILURE() << "no stable equilibrium";
+    ADD_FAILURE() << "no " << (stable ? "stable" : "unstable") << " equilibrium";
     return 0.0;
   }
 };
@@ -122,7 +124,7 @@ simulate: {{duration: 1}}
 
 TEST(LoopModes, AFourBarSwingsAboutItsStableEquilibriumAtItsOneFreedomsFrequency) {
   const FourBar bar;
-  const double q = bar.stable_equilibrium();
+  const double q = bar.equilibrium(true);
   ASSERT_GT(bar.d2V(q), 0.0);
   const double omega = std::sqrt(bar.d2V(q) / bar.mass(q));
   const ScenarioModes modes =
@@ -136,18 +138,7 @@ TEST(LoopModes, AFourBarSwingsAboutItsStableEquilibriumAtItsOneFreedomsFrequency
 TEST(LoopModes, AFourBarBalancedAtItsTopFallsAtItsOneFreedomsRate) {
   // The other root of V' (V'' < 0): one real pair +-sqrt(-V''/M), the linkage falls.
   const FourBar bar;
-  const int n = 720;
-  double q = 0.0;
-  for (int j = 0; j < n; ++j) {
-    double lo = 2 * kPi * j / n, hi = 2 * kPi * (j + 1) / n;
-    if (!(bar.dV(lo) > 0 && bar.dV(hi) < 0)) continue;
-    for (int k = 0; k < 200 && hi - lo > 1e-16; ++k) {
-      const double mid = (lo + hi) / 2;
-      (bar.dV(mid) > 0 ? lo : hi) = mid;
-    }
-    q = (lo + hi) / 2;
-    break;
-  }
+  const double q = bar.equilibrium(false);
   ASSERT_LT(bar.d2V(q), 0.0);
   const double rate = std::sqrt(-bar.d2V(q) / bar.mass(q));
   const ScenarioModes modes =

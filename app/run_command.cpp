@@ -238,7 +238,9 @@ std::optional<bool> continues_trajectory(const std::filesystem::path& path,
   std::uint64_t bytes = 0;
   std::uint64_t digest = 0;
   try {
-    digest = file_digest(path, &bytes);
+    // A file of another size is another file: not read (it may be very large).
+    if (std::filesystem::is_regular_file(path, error)) bytes = std::filesystem::file_size(path);
+    if (bytes == origin.trajectory_bytes) digest = file_digest(path, &bytes);
   } catch (const std::exception& e) {
     fmt::print(stderr, "tumble run: {}\n", e.what());
     return std::nullopt;

@@ -10,7 +10,6 @@
 #include <fstream>
 #include <optional>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -18,6 +17,7 @@
 #include "exit_status.hpp"
 #include "process_group.hpp"
 #include "sweep_setup.hpp"
+#include "tumble/input/bounded_read.hpp"
 #include "tumble/output/atomic_file.hpp"
 
 namespace tumble::cli {
@@ -59,9 +59,12 @@ std::size_t resumed_rows(const std::filesystem::path& path, const SweepSpec& spe
                          std::size_t& not_ok) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return 0;
-  std::ostringstream whole;
-  whole << in.rdbuf();
-  const std::string text = whole.str();
+  std::string text;
+  try {
+    text = read_bounded(path.string(), in, kSweepCsvReadLimit);
+  } catch (const std::runtime_error& e) {  // over its limit, or a read error
+    throw std::invalid_argument(fmt::format("--resume: {}: {}", path.string(), e.what()));
+  }
   const std::string header = sweep_csv_header(spec);
   if (text.compare(0, header.size(), header) != 0) {
     const std::string first = text.substr(0, text.find('\n'));

@@ -2,27 +2,35 @@
 // One input of the fuzz target (fuzz/scenario_fuzz.cpp), as the target reads it and as
 // tests/fuzz_regression_test.cpp replays the inputs found so far: the bytes are read as a scenario
 // and, if valid, built into the model a run would use (its `events:` conditions compiled against
-// the columns), and linearised as `tumble modes` and Python's tumble.modes do. Comment lines at
-// the top carry what the command line and Python add to a scenario: the first, if it is not a
-// `set` line, is read as a sweep's `--record NAME=REDUCTION` (Python's `record=`) and compiled
-// against the same columns, as `tumble sweep` does before its first run; each `# set NAME=VALUE`
-// line is an override (`--set`, Python's `set=`) applied as the scenario is read. A refusal is a
-// ScenarioError (thrown), an override or a record refused with std::invalid_argument (caught
-// here, as the command line turns it into exit 2), or a state with no linearisation (NotSteady,
-// caught here: `tumble modes` exits 6); anything else escaping is a finding.
+// the columns), linearised as `tumble modes` and Python's tumble.modes do, and run for a few
+// steps as a sweep's run (the record's reductions reading its rows, pieces and events). Comment
+// lines at the top carry what the command line and Python add to a scenario: the first, if it is
+// not a `set` line, is read as a sweep's `--record NAME=REDUCTION` (Python's `record=`) and
+// compiled against the same columns, as `tumble sweep` does before its first run; each `# set
+// NAME=VALUE` line is an override (`--set`, Python's `set=`) applied as the scenario is read. A
+// refusal is a ScenarioError (thrown), an override or a record refused with std::invalid_argument
+// (caught here, as the command line turns it into exit 2), or a state with no linearisation
+// (NotSteady, caught here: `tumble modes` exits 6); anything else escaping is a finding.
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "bounded_run.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 #include "tumble/scenario/scenario.hpp"
 #include "tumble/simulation/simulation.hpp"
 #include "tumble/sweep/outcome.hpp"
 #include "tumble/sweep/run_recorder.hpp"
+#include "tumble/sweep/sweep.hpp"
 
 namespace tumble::fuzzing {
+
+// The bounded run of a valid scenario (bounded_run.hpp): its steps, and the most rows it may
+// have at its output_every.
+inline constexpr long kRunSteps = 10;
+inline constexpr double kRunRows = 20'000;
 
 // The comment lines at the top, without their "#" and leading blanks.
 inline std::vector<std::string> top_comments(const std::string& text) {
@@ -68,13 +76,37 @@ inline void read_input(const std::string& text, const std::string& name) {
   } catch (const NotSteady&) {
     // No linearisation: `tumble modes` says why and exits 6.
   }
-  if (record.empty()) return;
-  try {
-    const std::vector<Outcome> outcomes = {parse_record(record)};
-    const RunRecorder compiled(outcomes, column_layout(scenario, *model), scenario);
-  } catch (const std::invalid_argument&) {
-    // A record refused, as `tumble sweep --record` refuses it.
+  // The record, or where there is none or it is refused (as `tumble sweep --record` refuses
+  // it), one that reads the run between its rows.
+  std::vector<Outcome> outcomes = {parse_record("fuzz=max(KE)")};
+  if (!record.empty()) {
+    try {
+      const std::vector<Outcome> given = {parse_record(record)};
+      const RunRecorder compiled(given, column_layout(scenario, *model), scenario);
+      outcomes = given;
+    } catch (const std::invalid_argument&) {
+    }
   }
+  // A bounded run, as a sweep's run records it: stopped after kRunSteps steps or kRunWork of
+  // work, and only where its rows are few enough to be
+  // read within libFuzzer's second (a tiny output_every is many rows a step). Not for closed
+  // loops: under the fuzzer's instrumentation each of their steps costs a tenth of a second or
+  // more (Andrews' squeezer: half a second), and the test suites run them under the sanitizers.
+  // A run never throws: what it meets is its record's status.
+  const SimulateSpec& simulate = scenario.simulate;
+  if (simulate.output_every > 0 && simulate.duration > kRunRows * simulate.output_every) return;
+  if (std::any_of(scenario.joints.begin(), scenario.joints.end(),
+                  [](const JointSpec& joint) { return joint.closes_loop; })) {
+    return;
+  }
+  SweepSpec spec;
+  spec.text = text;
+  spec.path = name;
+  spec.fixed = sets;
+  spec.outcomes = outcomes;
+  spec.stop_requested = bounded_run(kRunSteps);
+  SweepRunner runner(spec);
+  (void)runner.run({});
 }
 
 }  // namespace tumble::fuzzing

@@ -2,9 +2,10 @@
 # Sets up, builds and runs every test: formatting, the Release suite (with the Python module's
 # pytest suite), the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (but for a few
 # long integrations), the runs that share a model on threads under ThreadSanitizer (both built by
-# clang), a minute of fuzzing the scenario reader (on the sanitizer build's library), the main
-# example end to end, the Python package as installed, and the animation page and its videos
-# (`tumble run --video`, checked with ffprobe) in headless Chromium.
+# clang), a minute of fuzzing the scenario and saved-state readers (on the sanitizer build's
+# library), the main example end to end, the Python package as installed with half a minute of
+# fuzzing its entry points, and the animation page and its videos (`tumble run --video`, checked
+# with ffprobe) in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -33,7 +34,7 @@ echo "== ThreadSanitizer: runs of one shared model on two threads"
 bash scripts/build.sh tsan tumble_thread_tests
 TSAN_OPTIONS=halt_on_error=1 build/tsan/tests/tumble_thread_tests
 
-echo "== Fuzzing the scenario reader and model builder for a minute (libFuzzer)"
+echo "== Fuzzing the scenario and saved-state readers for a minute (libFuzzer)"
 bash scripts/fuzz.sh 60
 
 echo "== The main example"
@@ -51,6 +52,8 @@ PYTHONPATH="$(dirname "$site")" /usr/bin/python3 -m tumble run examples/tumbling
 PYTHONPATH="$(dirname "$site")" /usr/bin/python3 -c \
   "import tumble; r = tumble.load('examples/tumbling_prism.yaml').run(); assert len(r) == 401"
 cmp "$stage/out/tumbling_prism.csv" "$out/tumbling_prism.csv"
+echo "== Fuzzing the installed package's entry points for half a minute"
+PYTHONPATH="$(dirname "$site")" /usr/bin/python3 fuzz/python_entry_points.py 30
 
 echo "== The animation page and its videos in headless Chromium"
 TUMBLE_EXE=build/release/tumble TUMBLE_ARTIFACTS=build/release/artifacts node --test tests/browser/

@@ -155,6 +155,49 @@ TEST(CliCheckpoint, AFileThatIsNotThisRunsCheckpointIsRefusedWithExitTwo) {
   EXPECT_EQ(run(scenario + " --stop-at soon --save-state x.state").status, 2);
 }
 
+// A state file without end, and a trajectory or a sweep's file to go on with that is a link to
+// one, are refused at once, not read until memory runs out (or for ever, for the trajectory's
+// digest): each read has its limit (docs/scenario.md, "Limits on input"), lowered here to 1 MiB
+// so that the test reads little.
+TEST(CliCheckpoint, FilesWithoutEndAreRefusedAtTheirLimit) {
+  const fs::path dir = test::fresh_test_dir("CliCheckpoint", "without_end");
+  const std::string scenario = example("box_slides_to_rest.yaml");
+  const auto zero =
+      test::run_tumble("run " + scenario + " --out " + (dir / "a").string() + " --resume /dev/zero",
+                       "TUMBLE_MAX_CHECKPOINT_MIB=1 ");
+  EXPECT_EQ(zero.status, 2) << zero.out;
+  EXPECT_EQ(zero.out,
+            "tumble run: --resume /dev/zero:0: goes on past the limit of 1 MiB (1048576 bytes) "
+            "for a checkpoint file (set TUMBLE_MAX_CHECKPOINT_MIB to a larger number of MiB to "
+            "raise it)\n");
+  EXPECT_FALSE(fs::exists(dir / "a"));
+
+  const fs::path part = dir / "part", state = dir / "stopped.state";
+  ASSERT_EQ(
+      run(scenario + " --out " + part.string() + " --stop-at 0.5 --save-state " + state.string())
+          .status,
+      0);
+  const fs::path trajectory = part / "box_slides_to_rest.csv";
+  fs::remove(trajectory);
+  fs::create_symlink("/dev/zero", trajectory);
+  const auto linked = run(scenario + " --out " + part.string() + " --resume " + state.string());
+  EXPECT_EQ(linked.status, 2) << linked.out;
+  EXPECT_NE(linked.out.find("is not the trajectory the stopped run wrote"), std::string::npos)
+      << linked.out;
+
+  const fs::path sweep = dir / "sweep";
+  fs::create_directories(sweep);
+  fs::create_symlink("/dev/zero", sweep / "sweep.csv");
+  const auto resumed = test::run_tumble(
+      "sweep " + scenario + " --vary mu=0.2:0.4:3 --out " + sweep.string() + " --resume",
+      "TUMBLE_MAX_SWEEP_CSV_MIB=1 ");
+  EXPECT_EQ(resumed.status, 2) << resumed.out;
+  EXPECT_NE(resumed.out.find("sweep.csv: goes on past the limit of 1 MiB (1048576 bytes) for a "
+                             "sweep file to resume (set TUMBLE_MAX_SWEEP_CSV_MIB"),
+            std::string::npos)
+      << resumed.out;
+}
+
 // A run that ends before --stop-at saves nothing, and says so.
 TEST(CliCheckpoint, ARunThatEndsBeforeTheStopSavesNoState) {
   const fs::path dir = test::fresh_test_dir("CliCheckpoint", "no_stop");

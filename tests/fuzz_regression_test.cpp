@@ -1,7 +1,9 @@
 // Inputs that fuzzing or hostile-input testing found, kept as regression tests: every file of
 // tests/data/fuzz/ is read, built and its record compiled as the fuzz target does
 // (fuzz/fuzz_input.hpp); one named refused-* must be refused with a located ScenarioError, never
-// a crash or another exception.
+// a crash or another exception. Every file of tests/data/fuzz-checkpoint/ is read as the
+// checkpoint fuzz target reads it (fuzz/fuzz_checkpoint.hpp) and resumed where read: the seeds,
+// states saved by `tumble run`, must be read, and one named refused-* refused with its line.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "../fuzz/fuzz_checkpoint.hpp"
 #include "../fuzz/fuzz_input.hpp"
 
 namespace tumble {
@@ -31,6 +34,19 @@ TEST(FuzzRegressions, EveryFoundInputIsReadOrRefusedWithItsLocation) {
     }
   }
   EXPECT_GE(files, 7);
+}
+
+TEST(FuzzRegressions, EverySavedStateIsResumedAndEveryFoundOneRefused) {
+  const std::filesystem::path dir = std::filesystem::path(TUMBLE_TEST_DATA_DIR) / "fuzz-checkpoint";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    ++files;
+    std::ostringstream text;
+    text << std::ifstream(entry.path(), std::ios::binary).rdbuf();
+    EXPECT_EQ(fuzzing::resume_input(text.str()), name.rfind("refused-", 0) != 0) << name;
+  }
+  EXPECT_GE(files, 5);
 }
 
 }  // namespace

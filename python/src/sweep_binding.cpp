@@ -5,7 +5,9 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -32,37 +34,59 @@ std::vector<Outcome> parse_records(const std::vector<std::string>& records) {
   return outcomes;
 }
 
+// A Python int within [lo, hi], or std::invalid_argument "NAME: VALUE is out of range:
+// expected RANGE" (an int past 64 bits too, which the binding's own conversion would refuse as
+// a TypeError naming neither).
+template <typename T>
+T whole_number(const py::int_& value, const char* name, T lo, T hi, const std::string& range) {
+  // Compared as Python ints, which have no overflow.
+  if (PyObject_RichCompareBool(value.ptr(), py::int_(lo).ptr(), Py_GE) != 1 ||
+      PyObject_RichCompareBool(value.ptr(), py::int_(hi).ptr(), Py_LE) != 1) {
+    throw std::invalid_argument(fmt::format("{}: {} is out of range: expected {}", name,
+                                            py::str(value.ptr()).cast<std::string>(), range));
+  }
+  return value.cast<T>();
+}
+
 py::dict sweep(const ScenarioSource& source, const Overrides& overrides,
                const std::vector<std::string>& vary, const std::vector<std::string>& records,
-               long random, std::uint64_t seed, int threads) {
-  if (random < 0) throw std::invalid_argument("random: give a count of points, or 0 for the grid");
+               const py::int_& random_arg, const py::int_& seed_arg, const py::int_& threads_arg) {
+  const long random = whole_number<long>(
+      random_arg, "random", 0L, static_cast<long>(kMaxRuns),
+      fmt::format("0 (the grid) or 1 to {} points (the most a sweep holds)", kMaxRuns));
+  const std::uint64_t seed = whole_number<std::uint64_t>(
+      seed_arg, "seed", 0, std::numeric_limits<std::uint64_t>::max(),
+      fmt::format("a whole number from 0 to {}", std::numeric_limits<std::uint64_t>::max()));
+  const int threads = whole_number<int>(
+      threads_arg, "threads", 0, kMaxSweepThreads,
+      fmt::format("0 (every core) or 1 to {} (the limit on a sweep's threads)", kMaxSweepThreads));
   std::vector<VaryRange> ranges;
   for (const std::string& argument : vary) ranges.push_back(parse_vary(argument, random == 0));
   std::vector<Outcome> outcomes = parse_records(records);
-  const SweepSpec spec = make_sweep_spec(source.text(), source.path(), to_overrides(overrides),
-                                         ranges, std::move(outcomes), {"vary", "record"});
+  SweepSpec spec = make_sweep_spec(source.text(), source.path(), to_overrides(overrides), ranges,
+                                   std::move(outcomes), {"vary", "record"});
   const std::vector<std::vector<double>> points =
       random > 0 ? random_points(ranges, static_cast<std::size_t>(random), seed)
                  : grid_points(ranges, kMaxRuns);
-  if (threads > kMaxSweepThreads) {
-    throw std::invalid_argument(fmt::format(
-        "threads: {} is out of range: expected 0 (every core) or 1 to {} (the limit on a "
-        "sweep's threads)",
-        threads, kMaxSweepThreads));
-  }
   const int thread_count =
       threads > 0
           ? threads
           : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxSweepThreads);
   std::vector<RunRecord> records_done;
   std::string csv = sweep_csv_header(spec);
-  // Ctrl-C stops the sweep after the runs going on (SignalWatch); its exception is raised here.
+  // Ctrl-C (SignalWatch, asked on this thread) stops the runs going on at their next step and
+  // starts no other; its exception is raised here.
   SignalWatch signals;
+  std::atomic<bool> stopping{false};
+  spec.stop_requested = [&stopping] { return stopping.load(std::memory_order_relaxed); };
   struct Interrupted {};
   try {
     const py::gil_scoped_release unlocked;
     records_done = run_points(spec, points, thread_count, [&](std::size_t, std::size_t) {
-      if (signals()) throw Interrupted{};
+      if (signals()) {
+        stopping = true;
+        throw Interrupted{};
+      }
     });
     for (std::size_t i = 0; i < points.size(); ++i) {
       csv += sweep_csv_line(i, points[i], records_done[i], spec.outcomes.size());
@@ -129,9 +153,13 @@ py::dict find(const ScenarioSource& source, const Overrides& overrides, const st
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
     throw std::invalid_argument("tol: give a positive width");
   }
-  const SweepSpec spec =
-      make_sweep_spec(source.text(), source.path(), to_overrides(overrides), std::span(&range, 1),
-                      std::move(outcomes), {"vary", "when"});
+  SweepSpec spec = make_sweep_spec(source.text(), source.path(), to_overrides(overrides),
+                                   std::span(&range, 1), std::move(outcomes), {"vary", "when"});
+  // The runs are on this thread, one after another: each asks Ctrl-C itself (SignalWatch), and
+  // a run it stops ends the search with its exception.
+  SignalWatch signals;
+  spec.stop_requested = std::ref(signals);
+  struct Interrupted {};
   std::vector<std::tuple<double, bool, long>> history;
   std::optional<FindResult> found;
   std::optional<FindError> failed;
@@ -140,12 +168,15 @@ py::dict find(const ScenarioSource& source, const Overrides& overrides, const st
     try {
       found = find_change(spec, range.start, range.stop, tolerance,
                           [&](double value, bool outcome, const RunRecord& record) {
+                            if (signals.raised()) throw Interrupted{};
                             history.emplace_back(value, outcome, record.steps);
                           });
     } catch (const FindError& e) {
       failed = e;
+    } catch (const Interrupted&) {
     }
   }
+  if (signals.raised()) throw *signals.raised();
   if (failed) {
     const py::object error_class = py::module_::import("tumble._errors").attr("FindError");
     const RunRecord& record = failed->record();
@@ -173,7 +204,8 @@ void bind_sweep(py::module_& m) {
       "sweep",
       [](const std::string& source, bool is_text, const std::string& name,
          const Overrides& overrides, const std::vector<std::string>& vary,
-         const std::vector<std::string>& records, long random, std::uint64_t seed, int threads) {
+         const std::vector<std::string>& records, const py::int_& random, const py::int_& seed,
+         const py::int_& threads) {
         return sweep(ScenarioSource{source, is_text, name}, overrides, vary, records, random, seed,
                      threads);
       },

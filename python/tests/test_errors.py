@@ -117,3 +117,26 @@ def test_a_sweep_of_more_threads_than_the_limit_is_a_value_error():
         assert str(raised.value) == (
             f"threads: {threads} is out of range: expected 0 (every core) or 1 to 256 (the limit "
             "on a sweep's threads)")
+
+
+def test_counts_and_seeds_out_of_range_are_value_errors_naming_the_range():
+    # seed=-1 or 2**64, and any count past 64 bits, was the binding's "incompatible function
+    # arguments" TypeError, naming neither the argument nor its range; random=10**9 went on to
+    # draw a billion points (the command line's --random stops at ten million); threads=-1 was
+    # taken as every core.
+    prism = EXAMPLES / "tumbling_prism.yaml"
+    for seed in (-1, 2**64):
+        with pytest.raises(ValueError) as raised:
+            tumble.sweep(prism, "a=3:5", ["w=final(E)"], seed=seed, random=2)
+        assert str(raised.value) == (
+            f"seed: {seed} is out of range: expected a whole number from 0 to "
+            "18446744073709551615")
+    for random in (-1, 10**9, 2**70):
+        with pytest.raises(ValueError) as raised:
+            tumble.sweep(prism, "a=3:5", ["w=final(E)"], random=random)
+        assert str(raised.value) == (
+            f"random: {random} is out of range: expected 0 (the grid) or 1 to 10000000 points "
+            "(the most a sweep holds)")
+    for threads in (-1, 2**70):
+        with pytest.raises(ValueError, match=f"threads: {threads} is out of range"):
+            tumble.sweep(prism, "a=3:5:2", ["w=final(E)"], threads=threads)

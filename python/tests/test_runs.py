@@ -94,6 +94,15 @@ def test_a_state_saved_to_a_file_goes_on_in_a_model_loaded_again(tmp_path):
         model.load_state(tmp_path / "edited.state")
 
 
+def test_a_state_file_without_end_is_refused_at_its_limit(monkeypatch):
+    # A state named /dev/zero was read until memory ran out; its limit is lowered to 1 MiB here
+    # so that the test reads little.
+    monkeypatch.setenv("TUMBLE_MAX_CHECKPOINT_MIB", "1")
+    model = tumble.load(EXAMPLES / "tumbling_prism.yaml")
+    with pytest.raises(ValueError, match="goes on past the limit of 1 MiB .* for a checkpoint file"):
+        model.load_state("/dev/zero")
+
+
 def test_runs_in_several_threads_give_each_run_its_own_bits():
     # The backspin disk over its v0: each thread runs the same model at other parameter values
     # and the same model twice; the GIL is released while each integrates.

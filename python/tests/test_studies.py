@@ -144,6 +144,34 @@ def test_ctrl_c_stops_a_sweep():
         timer.cancel()
 
 
+def _endless_prism() -> str:
+    # The chapter's prism for a billion seconds at rtol 1e-12: days of work, which only Ctrl-C
+    # ends, one row a second (max_rows raised to match).
+    text = (EXAMPLES / "tumbling_prism.yaml").read_text()
+    text = text.replace("duration: 20", "duration: 1e9\n  max_rows: 2000000000")
+    text = text.replace("output_every: 0.05", "output_every: 1")
+    return text.replace("rtol: 1e-8 ", "rtol: 1e-12").replace("atol: 1e-11", "atol: 1e-14")
+
+
+@pytest.mark.parametrize("study", ["sweep", "find"])
+def test_ctrl_c_stops_a_study_in_the_middle_of_a_run(study):
+    # Before, a sweep looked at Ctrl-C only between runs, and find not at all: a KeyboardInterrupt
+    # 0.3 s into either waited for the run going on, here for days (the test's timeout).
+    text = _endless_prism()
+    assert "max_rows: 2000000000" in text
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            if study == "sweep":
+                tumble.sweep(text, {"a": (4, 4.5, 2)}, {"w3": "final(prism.w3)"},
+                             threads=1)
+            else:
+                tumble.find(text, {"a": (4, 4.5)}, "min(prism.w3) < 0")
+    finally:
+        timer.cancel()
+
+
 def test_sweeps_in_two_python_threads_give_each_its_own_rows():
     expected = tumble.sweep(FLIP, {"decades": (2, 7, 6)}, {"flip": "first(prism.w3 < 0)"},
                             threads=1).csv

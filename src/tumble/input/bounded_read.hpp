@@ -20,6 +20,13 @@ struct ReadLimit {
 
 inline constexpr ReadLimit kScenarioReadLimit{"a scenario file", "TUMBLE_MAX_SCENARIO_MIB", 64};
 inline constexpr ReadLimit kMeshReadLimit{"a mesh file", "TUMBLE_MAX_MESH_MIB", 1024};
+// A run's saved state (`tumble run --resume`, Python's Model.load_state): its size grows with the
+// state and the method's stages, about 25 bytes a number.
+inline constexpr ReadLimit kCheckpointReadLimit{"a checkpoint file", "TUMBLE_MAX_CHECKPOINT_MIB",
+                                                1024};
+// The sweep.csv that `tumble sweep --resume` goes on from.
+inline constexpr ReadLimit kSweepCsvReadLimit{"a sweep file to resume", "TUMBLE_MAX_SWEEP_CSV_MIB",
+                                              1024};
 // The header row that tumble plot reads from a CSV.
 inline constexpr ReadLimit kCsvHeaderReadLimit{"a CSV header row", "TUMBLE_MAX_CSV_HEADER_MIB", 1};
 

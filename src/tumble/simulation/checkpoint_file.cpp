@@ -5,9 +5,9 @@
 #include <charconv>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <system_error>
 
+#include "tumble/input/bounded_read.hpp"
 #include "tumble/output/atomic_file.hpp"
 #include "tumble/simulation/checkpoint_fields.hpp"
 #include "tumble/simulation/text_archive.hpp"
@@ -55,13 +55,18 @@ void archive_origin(StateArchive& archive, CheckpointOrigin& origin, std::string
   archive.text("integrator", integrator);
 }
 
+// The file's text, read no further than its limit (a checkpoint named /dev/zero would otherwise
+// be read until memory runs out).
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CheckpointFileError(fmt::format("{}:0: cannot be read", path.string()));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw CheckpointFileError(fmt::format("{}:0: cannot be read", path.string()));
-  return std::move(text).str();
+  try {
+    return read_bounded(path.string(), in, kCheckpointReadLimit);
+  } catch (const ReadLimitError& e) {
+    throw CheckpointFileError(fmt::format("{}:0: {}", path.string(), e.what()));
+  } catch (const std::runtime_error&) {
+    throw CheckpointFileError(fmt::format("{}:0: cannot be read", path.string()));
+  }
 }
 
 // The text before the last line, "digest HEX" of that text; throws if it is not there or does
@@ -96,6 +101,11 @@ std::uint64_t content_digest(std::string_view bytes, std::uint64_t digest) {
 }
 
 std::uint64_t file_digest(const std::filesystem::path& path, std::uint64_t* bytes) {
+  // A device or a FIFO may have no end (a trajectory linked to /dev/zero): only files are read.
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw std::runtime_error(fmt::format("{}: is not a regular file", path.string()));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(fmt::format("{}: cannot be read", path.string()));
   std::uint64_t digest = content_digest({});
@@ -153,8 +163,11 @@ void write_checkpoint_file(const std::filesystem::path& path,
 
 LoadedCheckpoint read_checkpoint_file(const std::filesystem::path& path,
                                       PreparedSimulation& simulation) {
-  const std::string text = read_text(path);
-  const std::string file = path.string();
+  return read_checkpoint_text(read_text(path), path.string(), simulation);
+}
+
+LoadedCheckpoint read_checkpoint_text(const std::string& text, const std::string& file,
+                                      PreparedSimulation& simulation) {
   TextArchiveReader in(verified_body(text, file), file);
   LoadedCheckpoint loaded;
   std::string integrator_name;

@@ -41,7 +41,7 @@ class CheckpointFileError : public std::runtime_error {
 // FNV-1a, 64 bits: a digest to tell two files (or texts) apart, not a cryptographic hash.
 std::uint64_t content_digest(std::string_view bytes, std::uint64_t digest = 14695981039346656037u);
 // The digest of a file's bytes (and their count in *bytes). Throws std::runtime_error naming the
-// file if it cannot be read.
+// file if it cannot be read or is not a regular file (a device may have no end).
 std::uint64_t file_digest(const std::filesystem::path& path, std::uint64_t* bytes = nullptr);
 // A scenario's identity for a checkpoint: its file's bytes and the --set values, in order.
 std::uint64_t scenario_fingerprint(std::string_view scenario_text,
@@ -63,6 +63,9 @@ struct LoadedCheckpoint {
 // checkpoint, was changed or cut short, or does not fit this run's model (its state's size, its
 // contacts, joints and events); the caller checks the origin against its scenario.
 LoadedCheckpoint read_checkpoint_file(const std::filesystem::path& path,
+                                      PreparedSimulation& simulation);
+// The same for a checkpoint's bytes, called `file` in messages (the fuzz target's input).
+LoadedCheckpoint read_checkpoint_text(const std::string& text, const std::string& file,
                                       PreparedSimulation& simulation);
 
 }  // namespace tumble

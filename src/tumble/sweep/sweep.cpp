@@ -143,6 +143,7 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     simulation.options.max_steps = spec_->max_steps;
     simulation.options.max_steps_name = "--max-steps";
   }
+  simulation.options.stop_requested = spec_->stop_requested;
   if (scenarios_initial_state) {
     // On the run's own formulation: an evaluation writes its scratch.
     simulation.y0 = initial_state_vector(scenario, *simulation.formulation);

@@ -54,6 +54,9 @@ struct SweepSpec {
   // > 0: each run's budget of accepted steps, in place of its simulate.max_steps (--max-steps): a
   // run that needs more is a failed row, not minutes of a search gone quiet.
   long max_steps = 0;
+  // Asked by each run after each of its steps whether to stop (Python's Ctrl-C), from every
+  // thread the runs are on; empty: never. A run stopped so is a failed record.
+  std::function<bool()> stop_requested;
 };
 
 // What the runners of one sweep, on every thread, learn together: whether the varied parameters

@@ -1,5 +1,6 @@
 #include "tumble/integrators/fixed_step_method.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -47,9 +48,11 @@ void FixedStepMethod::restart(double t, const VecX& y) {
 
 void FixedStepMethod::archive_memory(StateArchive& archive) {
   archive_common(archive);
-  archive.number("direction", direction_);
+  archive_direction(archive, direction_);
   archive.number("t_grid", t_grid_);
+  archive.require("t_grid", std::isfinite(t_grid_), "a finite time");
   archive.integer("grid_steps", grid_steps_);
+  archive.require("grid_steps", grid_steps_ >= 0, "a count, not negative");
   archive_sized(archive, "f_previous", f_previous_);
   archive_sized(archive, "f_current", f_current_);
 }

@@ -78,6 +78,8 @@ class Integrator {
  protected:
   // The memory every method has (t, y and the step before, h, the step bound, the statistics).
   void archive_common(StateArchive& archive);
+  // The direction of integration in time: 1 or -1.
+  static void archive_direction(StateArchive& archive, double& direction);
   // A workspace vector's values; a load keeps its length, which start() gave it.
   static void archive_sized(StateArchive& archive, std::string_view key, VecX& values);
   // An embedded Runge-Kutta pair's memory: its direction in time, its largest step, and both sets
@@ -86,8 +88,9 @@ class Integrator {
   template <std::size_t N>
   static void archive_stage_sets(StateArchive& archive, double& direction, double& h_max,
                                  int& accepted, std::array<std::array<VecX, N>, 2>& sets) {
-    archive.number("direction", direction);
+    archive_direction(archive, direction);
     archive.number("h_max", h_max);
+    archive.require("h_max", h_max > 0.0, "the largest step, > 0");
     archive.integer("accepted", accepted);
     if (accepted != 0 && accepted != 1) archive.fail("accepted", "0 or 1");
     for (std::size_t set = 0; set < sets.size(); ++set) {

@@ -1,5 +1,7 @@
 #include "tumble/simulation/checkpoint_fields.hpp"
 
+#include <cmath>
+
 namespace tumble {
 
 namespace {
@@ -14,15 +16,20 @@ void part(StateArchive& archive, std::string_view name, T& value, const Visit& v
 
 void archive_position(StateArchive& a, DriverPosition& p) {
   a.number("t0", p.t0);
+  a.require("t0", std::isfinite(p.t0), "a finite time");
   a.integer("next_row", p.next_row);
+  a.require("next_row", p.next_row >= 0, "a count, not negative");
   a.integer("steps", p.steps);
+  a.require("steps", p.steps >= 0, "a count, not negative");
   a.integer("rows", p.rows);
+  a.require("rows", p.rows >= 0, "a count, not negative");
   a.integer("short_steps", p.short_steps);
+  a.require("short_steps", p.short_steps >= 0, "a count, not negative");
   a.numbers("g_before", p.g_before);
   a.list("events", p.events, [](StateArchive& item, EventRecord& e) {
     item.number("t", e.t);
     item.count("index", e.index);
-    item.choice("action", e.action);
+    item.choice("action", e.action, 3);
   });
 }
 
@@ -49,14 +56,16 @@ void archive_feature(StateArchive& a, ContactFeature& f) {
     a.integer("normal_point" + std::to_string(i), f.normal_points[i]);
   }
   a.integer("normal_point_count", f.normal_point_count);
+  a.require("normal_point_count", f.normal_point_count >= 0 && f.normal_point_count <= 3,
+            "0 to 3 points");
   a.vec3("reference_B", f.reference_B);
   a.number("spin_radius", f.spin_radius);
 }
 
 void archive_status(StateArchive& a, ContactStatus& s) {
-  a.choice("mode", s.mode);
+  a.choice("mode", s.mode, 3);
   part(a, "feature", s.feature, archive_feature);
-  a.choice("round_part", s.round_part);
+  a.choice("round_part", s.round_part, 6);
   a.vec3("rim_direction_B", s.rim_direction_B);
   a.vec3("slide_direction_W", s.slide_direction_W);
   a.vec3("slide_turn_W", s.slide_turn_W);

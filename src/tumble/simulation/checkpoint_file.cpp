@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <iterator>
@@ -203,6 +204,18 @@ LoadedCheckpoint read_checkpoint_text(const std::string& text, const std::string
   for (const EventRecord& e : position.events) fits = fits && e.index < event_count;
   for (const ContactEventRecord& e : checkpoint.hybrid.contact.events) {
     fits = fits && e.contact < contact_count;
+  }
+  // A contact's feature names vertices of its surface: the model's, no other and no more (the
+  // feature's room was made for them before the run, so that a step allocates nothing).
+  const std::vector<PlaneContact>& contacts = simulation.formulation->model().contacts;
+  for (std::size_t c = 0; fits && c < contact_count && c < contacts.size(); ++c) {
+    const auto vertices = static_cast<int>(contacts[c].surface.vertices.size());
+    const ContactFeature& feature = checkpoint.hybrid.contact.contacts[c].feature;
+    const auto names_a_vertex = [vertices](int v) { return v >= 0 && v < vertices; };
+    fits = feature.size() <= vertices && static_cast<int>(feature.inward_B.size()) <= vertices &&
+           std::all_of(feature.polygon.begin(), feature.polygon.end(), names_a_vertex) &&
+           std::all_of(feature.normal_points.begin(),
+                       feature.normal_points.begin() + feature.normal_point_count, names_a_vertex);
   }
   if (!fits) {
     throw CheckpointFileError(fmt::format(

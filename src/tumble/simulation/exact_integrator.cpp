@@ -56,6 +56,7 @@ void ExactIntegrator::restart(double t, const VecX& y) {
 void ExactIntegrator::archive_memory(StateArchive& archive) {
   archive_common(archive);
   archive.number("t_start", t_start_);
+  archive.require("t_start", std::isfinite(t_start_), "a finite time");
   archive_sized(archive, "y_start", y_start_);
   if (archive.loading()) begin_closed_form(t_start_, VecX(y_start_));
 }

@@ -2,6 +2,7 @@
 // resumed from its file writes, in the stopped run's --out, the trajectory and events files of
 // the run that never stopped, byte for byte; a file that is not that run's checkpoint (another
 // scenario or --set value, an edited or cut file, another trajectory) is refused with exit 2.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include "run_tumble.hpp"
 #include "test_files.hpp"
+#include "tumble/simulation/checkpoint_file.hpp"
 
 namespace tumble {
 namespace {
@@ -196,6 +198,25 @@ TEST(CliCheckpoint, FilesWithoutEndAreRefusedAtTheirLimit) {
                              "sweep file to resume (set TUMBLE_MAX_SWEEP_CSV_MIB"),
             std::string::npos)
       << resumed.out;
+}
+
+// The digest is no secret: a crafted state can carry a matching one. The fuzzer's first finding,
+// a state whose direction of integration is 0, made the resumed run's first step throw, and
+// `tumble run --resume` abort; the reader now refuses it at its line and key.
+TEST(CliCheckpoint, ACraftedStateWithAMatchingDigestIsRefusedAtItsField) {
+  const fs::path dir = test::fresh_test_dir("CliCheckpoint", "crafted");
+  const std::string body = read_file(fs::path(TUMBLE_TEST_DATA_DIR) / "fuzz-checkpoint" /
+                                     "refused-direction-zero.state");
+  const fs::path state = dir / "crafted.state";
+  std::ofstream(state, std::ios::binary)
+      << body << fmt::format("digest {:016x}\n", content_digest(body));
+  const auto crafted = run(example("planar/backspin_disk.yaml") + " --out " +
+                           (dir / "out").string() + " --resume " + state.string());
+  EXPECT_EQ(crafted.status, 2) << crafted.out;
+  EXPECT_NE(crafted.out.find("integrator.direction: 1 (forward in time) or -1 (backward)"),
+            std::string::npos)
+      << crafted.out;
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 // A run that ends before --stop-at saves nothing, and says so.

@@ -25,8 +25,9 @@ echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 bash scripts/build.sh sanitize
 # Every test but a few long integrations, which the Release suite runs: each takes 15 to 35 s
 # under the sanitizers (a bisection of runs, a thousand periods, a wobbling coin's thousands of
-# events) on code that the shorter tests take through the same paths.
-long_runs='^(FindOnTheSolution\.ThePendulumsPullAtTheBottomWhateverTheRows|FindCommand\.PrintsTheBracketAndTheRuns|FindCritical\..*|Landing\.DroppedBodiesNeverGoThroughTheRamp|SlenderBody\.APointOnAMasslessLinkFollowsThePendulumsExactSolutionOver1000Periods|SlipOnset\.AWobblingCoinAlternatesRollingAndSlidingUnderCoulombsLaw|Gyroscope\.StartedWithoutPrecessionItNodsAboutTheSteadyRate)$'
+# events; a four-bar's hundred seconds of motion, two minutes) on code that the shorter tests take
+# through the same paths.
+long_runs='^(FindOnTheSolution\.ThePendulumsPullAtTheBottomWhateverTheRows|FindCommand\.PrintsTheBracketAndTheRuns|FindCritical\..*|Landing\.DroppedBodiesNeverGoThroughTheRamp|SlenderBody\.APointOnAMasslessLinkFollowsThePendulumsExactSolutionOver1000Periods|SlipOnset\.AWobblingCoinAlternatesRollingAndSlidingUnderCoulombsLaw|Gyroscope\.StartedWithoutPrecessionItNodsAboutTheSteadyRate|LoopJoints\.AFourBarFreeUnderGravityConservesEnergyWithItsLoopClosed)$'
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build/sanitize --output-on-failure -j "$(nproc)" -E "$long_runs"
 

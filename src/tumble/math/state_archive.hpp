@@ -44,13 +44,15 @@ class StateArchive {
   void vec3(std::string_view key, Vec3& value);
   void mat3(std::string_view key, Mat3& value);
   void columns(std::string_view key, Eigen::Matrix3Xd& value);  // 3 x n, column after column
-  // An enumerator of the `count` from 0 (a load refuses any other number).
+  // An enumerator from the first (0) to `last` (a load refuses any other number).
   template <typename Enum>
-  void choice(std::string_view key, Enum& value, int count) {
+  void choice(std::string_view key, Enum& value, Enum last) {
+    const int count = static_cast<int>(last) + 1;
     int as_int = static_cast<int>(value);
     integer(key, as_int);
-    if (as_int < 0 || as_int >= count)
+    if (as_int < 0 || as_int >= count) {
       fail(key, "not one of the " + std::to_string(count) + " choices");
+    }
     value = static_cast<Enum>(as_int);
   }
   // On a load, fails at `key` (the field just read) unless `holds`; `what` says what it must be.

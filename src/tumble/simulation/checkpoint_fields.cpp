@@ -29,7 +29,7 @@ void archive_position(StateArchive& a, DriverPosition& p) {
   a.list("events", p.events, [](StateArchive& item, EventRecord& e) {
     item.number("t", e.t);
     item.count("index", e.index);
-    item.choice("action", e.action, 3);
+    item.choice("action", e.action, EventAction::Stop);
   });
 }
 
@@ -63,9 +63,9 @@ void archive_feature(StateArchive& a, ContactFeature& f) {
 }
 
 void archive_status(StateArchive& a, ContactStatus& s) {
-  a.choice("mode", s.mode, 3);
+  a.choice("mode", s.mode, ContactMode::Rolling);
   part(a, "feature", s.feature, archive_feature);
-  a.choice("round_part", s.round_part, 6);
+  a.choice("round_part", s.round_part, RoundPart::FaceB);
   a.vec3("rim_direction_B", s.rim_direction_B);
   a.vec3("slide_direction_W", s.slide_direction_W);
   a.vec3("slide_turn_W", s.slide_turn_W);

@@ -1,8 +1,8 @@
 #pragma once
 // The fuzz targets' bound on a run: stopped after `steps` accepted steps or kRunWork of work,
 // whichever comes first, through DriverOptions::stop_requested (as Python's Ctrl-C stops a run),
-// so that one input stays well within libFuzzer's second: under the fuzzer's instrumentation a
-// step of four wheels on a ramp costs a quarter of a second.
+// so that one input stays well within libFuzzer's second: under the sanitizers and the fuzzer's
+// instrumentation a step of Andrews' squeezer or of four wheels on a ramp costs some 10 ms.
 #include <chrono>
 #include <functional>
 

@@ -88,17 +88,10 @@ inline void read_input(const std::string& text, const std::string& name) {
     }
   }
   // A bounded run, as a sweep's run records it: stopped after kRunSteps steps or kRunWork of
-  // work, and only where its rows are few enough to be
-  // read within libFuzzer's second (a tiny output_every is many rows a step). Not for closed
-  // loops: under the fuzzer's instrumentation each of their steps costs a tenth of a second or
-  // more (Andrews' squeezer: half a second), and the test suites run them under the sanitizers.
-  // A run never throws: what it meets is its record's status.
+  // work, and only where its rows are few enough to be read within libFuzzer's second (a tiny
+  // output_every is many rows a step). A run never throws: what it meets is its record's status.
   const SimulateSpec& simulate = scenario.simulate;
   if (simulate.output_every > 0 && simulate.duration > kRunRows * simulate.output_every) return;
-  if (std::any_of(scenario.joints.begin(), scenario.joints.end(),
-                  [](const JointSpec& joint) { return joint.closes_loop; })) {
-    return;
-  }
   SweepSpec spec;
   spec.text = text;
   spec.path = name;

@@ -767,12 +767,8 @@ TEST(Cli, AFileWithoutEndOrTooLargeIsRefusedAtItsLimit) {
 }
 
 TEST(Cli, RunningOutOfMemoryIsExitFiveWithOneLine) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#ifdef TUMBLE_SANITIZER_BUILD
   GTEST_SKIP() << "a sanitizer's shadow memory does not fit under ulimit -v";
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-  GTEST_SKIP() << "a sanitizer's shadow memory does not fit under ulimit -v";
-#endif
 #endif
   // The limit raised past the memory there is: /dev/zero is read until an allocation fails.
   const CommandResult r = run_tumble("run /dev/zero --out " + fresh_run_dir("oom").string(),

@@ -51,13 +51,15 @@ std::optional<Scenario> load_scenario_for(const char* command, const std::string
 
 namespace {
 
-// The joints that close loops, and how far their rows were from closing at worst.
+// The joints that close loops (and the rods, held the same way), and how far their rows were
+// from closing at worst.
 void print_loop_closure(const Scenario& scenario, const LoopErrors& worst) {
   std::string joints;
   for (const JointSpec& joint : scenario.joints) {
     if (!joint.closes_loop) continue;
     if (!joints.empty()) joints += ", ";
     joints += joint.name;
+    if (joint.type == JointType::Distance) joints += " (a rod)";
   }
   if (joints.empty()) return;
   fmt::print(

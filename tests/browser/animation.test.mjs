@@ -40,6 +40,8 @@ before(async () => {
   pages.cubli = join(work, 'cubli.html');
   animate(join(root, 'examples', 'planar', 'bat_struck.yaml'), work);
   pages.planarBat = join(work, 'bat_struck_planar.html');
+  animate(join(root, 'examples', 'conical_pendulum.yaml'), work);
+  pages.conical = join(work, 'conical_pendulum.html');
 
   // The backspin disk with plots of its choosing: its speed, and the floor's slip and normal force.
   const disk = readFileSync(join(root, 'examples', 'backspin_disk.yaml'), 'utf8');
@@ -261,6 +263,24 @@ test('joints are drawn, and each body has its colour in the plots as in the lege
   });
   await page.evaluate(() => window.tumble.seek(0.5));
   await page.screenshot({ path: join(artifacts, 'cubli.png'), fullPage: true });
+  assert.deepEqual(seen.errors, []);
+  assert.deepEqual(seen.requests, []);
+  await context.close();
+});
+
+test('a rod is drawn from its end on the ceiling to its end on the ball as the ball circles', async () => {
+  const { page, context, seen } = await open(pages.conical);
+  assert.equal(await page.evaluate(() => window.tumble.joints), 0);
+  for (const t of [0, 0.4, 1.3]) {
+    await page.evaluate((time) => window.tumble.seek(time), t);
+    const [ends] = await page.evaluate(() => window.tumble.rodEnds());
+    // examples/conical_pendulum.yaml: O = (0, 0, 2), L = 1, alpha = 30 deg, the ball at
+    // Omega = sqrt(g / (L cos(alpha))) round the vertical (float rows, interpolated between them).
+    assert.deepEqual(ends.slice(0, 3), [0, 0, 2]);
+    const omega = Math.sqrt(9.81 / Math.cos(Math.PI / 6));
+    const ball = [0.5 * Math.cos(omega * t), 0.5 * Math.sin(omega * t), 2 - Math.cos(Math.PI / 6)];
+    ball.forEach((x, k) => assert.ok(Math.abs(ends[3 + k] - x) < 1e-4, `t ${t}: ${ends} against ${ball}`));
+  }
   assert.deepEqual(seen.errors, []);
   assert.deepEqual(seen.requests, []);
   await context.close();

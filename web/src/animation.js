@@ -4,6 +4,9 @@
 //   planes    [{name, point, normal}]: the contacts' fixed planes (ground, ramps)
 //   joints    [{name, type, body, point, axis}]: each joint where it holds its second body (the
 //             point from that body's COM and the hinge's or slider's axis, in its axes)
+//   rods      [{name, a, end_a, b, end_b}]: each distance joint's massless rod, from its end on
+//             body a to its end on body b (each from its body's COM, its axes; body -1: ground,
+//             the end a world point)
 //   time      base64 Float64 [rows]
 //   system    base64 Float64 [rows][4]: KE, PE, E, |L| (about the world origin)
 //   body_rows base64 Float32 [rows][bodies][16]: r_G (3), q_WB (x y z w), omega_W (3), omega_B (3),
@@ -192,6 +195,16 @@ const joints = (data.joints ?? []).map((spec) => {
   }
   return holder;
 });
+
+// A rod (a distance joint) is a line between its ends, each riding with its body (or fixed).
+const rods = (data.rods ?? []).map((spec) => {
+  const ends = [new THREE.Vector3().fromArray(spec.end_a), new THREE.Vector3().fromArray(spec.end_b)];
+  const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(ends), linkMaterial);
+  line.frustumCulled = false;  // its ends move every frame
+  scene.add(line);
+  return { line, ends: [[spec.a, ends[0].clone()], [spec.b, ends[1].clone()]] };
+});
+const rodEnd = new THREE.Vector3();
 
 // The ground grid lies under everything the bodies reach, at z = 0 unless they go lower.
 let lo = new THREE.Vector3(Infinity, Infinity, Infinity);
@@ -467,6 +480,15 @@ function show(t) {
       controls.target.copy(body.group.position);
     }
   });
+  for (const rod of rods) {
+    const positions = rod.line.geometry.attributes.position;
+    rod.ends.forEach(([b, end], k) => {
+      rodEnd.copy(end);
+      if (b >= 0) rodEnd.applyQuaternion(bodies[b].group.quaternion).add(bodies[b].group.position);
+      positions.setXYZ(k, rodEnd.x, rodEnd.y, rodEnd.z);
+    });
+    positions.needsUpdate = true;
+  }
   timeLabel.textContent = `t = ${t.toFixed(3)} s`;
   if (video) videoTime.textContent = `t = ${t.toFixed(3)} s`;
   for (const { plot, cursor } of plots) {
@@ -535,6 +557,8 @@ window.tumble = {
   rows,
   planes: planes.length,
   joints: joints.length,
+  // Each rod's two ends as drawn now, world: [x1, y1, z1, x2, y2, z2].
+  rodEnds: () => rods.map((rod) => Array.from(rod.line.geometry.attributes.position.array)),
   planar: Boolean(data.planar),
   // Where the camera looks from, relative to what it looks at, and which way is up in the view.
   view: () => ({

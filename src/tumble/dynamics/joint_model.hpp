@@ -34,6 +34,9 @@ struct JointModel {
   int body_b = 0;              // the second: reactions are what body_a exerts on body_b
   Vec3 p_AJ_A = Vec3::Zero();  // joint point from A's COM, A's axes (world point when A is ground)
   Vec3 p_BJ_B = Vec3::Zero();  // joint point from B's COM, B's axes
+  // Distance: the rod's length, m (its ends' distance at t = 0); p_AJ_A is its end on A, p_BJ_B
+  // its end on B.
+  double rod_length = 0.0;
   Mat3 R_AB0 = Mat3::Identity();  // B's axes relative to A's at t = 0: R_WA^T R_WB
   // Hinge: the unit axis in B's axes; the angle theta turns B relative to A about it, positive
   // by the right-hand rule, zero at t = 0. Prismatic: the unit axis in B's axes; the travel d

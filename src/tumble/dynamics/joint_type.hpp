@@ -1,7 +1,9 @@
 #pragma once
 // The kinds of joint, one enum for the scenario, the model and the kinematic tree. Each kind's
 // geometry and kinematics live in one file of multibody/joints/ (JointKind), made in one place
-// (joint_kind.cpp).
+// (joint_kind.cpp); a distance joint is a loop's row alone (loop_rows.hpp).
+#include <string_view>
+
 namespace tumble {
 
 enum class JointType {
@@ -12,6 +14,10 @@ enum class JointType {
   Fixed,        // none: a weld
   Cylindrical,  // two: rotation about an axis through a point and translation along it
   Universal,    // two: rotations about two axes at right angles, one fixed in each body (Hooke)
+  // A massless rod between a point of each body: it holds their distance and nothing else (five
+  // freedoms), always as a constraint on the tree the other joints form, never as a joint of it
+  // (multibody/loop_rows.hpp). It has no kind in multibody/joints/.
+  Distance,
 };
 
 // Whether the kind has one axis the scenario states (`axis:`), about or along which its motor

@@ -499,14 +499,38 @@ std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
   if (!d_.assembly_problem.empty()) {
     return StartProblem{0, d_.assembly_problem, static_cast<int>(loops_.first_joint())};
   }
-  // The freedoms the tree's joints give the bodies relative to each other and to ground (a free
-  // body's six are its own whatever the loops do), less the loops' independent constraints: with
-  // none left and nothing driven, the loops make a structure, whose reactions no motion decides.
+  // The freedoms the tree's joints give the bodies relative to each other and to ground, less
+  // the loops' independent constraints: with none left and nothing driven, the loops make a
+  // structure, whose reactions no motion decides. A floating group's own six freedoms (its free
+  // joint's) are its own whatever a loop does, since a loop joins bodies already joined; but a
+  // rod (a distance joint) may join the group to ground or to another group, and then takes its
+  // share of them.
+  const auto root_slot = [&](int body) {  // the joint that holds the body's group (-1: ground)
+    int slot = -1;
+    while (body != kGround) {
+      slot = static_cast<int>(m_.slot_of_body[static_cast<std::size_t>(body)]);
+      body = m_.tree[static_cast<std::size_t>(slot)].parent;
+    }
+    return slot;
+  };
+  std::vector<bool> held_by_a_rod(m_.tree.size(), false);
+  for (const JointModel& joint : model_.joints) {
+    if (joint.type != JointType::Distance) continue;
+    const int a = root_slot(joint.body_a), b = root_slot(joint.body_b);
+    if (a == b) continue;
+    for (const int slot : {a, b}) {
+      if (slot >= 0) held_by_a_rod[static_cast<std::size_t>(slot)] = true;
+    }
+  }
   Eigen::Index freedoms = 0;
   bool driven = false;
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     const TreeJoint& joint = m_.tree[k];
-    if (joint.type == JointType::Free || joint.nv == 0) continue;
+    if (joint.nv == 0) continue;
+    if (joint.type == JointType::Free) {
+      if (held_by_a_rod[k]) freedoms += joint.nv;
+      continue;
+    }
     if (m_.prescribed(k, s_.schedule_time)) {
       driven = true;
     } else {

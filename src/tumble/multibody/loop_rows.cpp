@@ -38,6 +38,9 @@ LoopShape loop_shape_of(const JointModel& joint) {
     case JointType::Fixed:
       shape.turn_rows = 3;
       break;
+    case JointType::Distance:
+      shape.rod_length = joint.rod_length;
+      break;
     case JointType::Free:
       throw std::logic_error("a free joint closes no loop");
   }

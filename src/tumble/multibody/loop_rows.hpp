@@ -11,7 +11,7 @@
 // three), and the turns its kind forbids (a hinge: about the two directions across its axis; a
 // weld and a slider: all three; a Hooke joint: about the direction across both its axes). The
 // directions are fixed in the first body (the world's for ground), so a row's rate of change has
-// the first body's turn.
+// the first body's turn. A distance joint's one row is along its rod, and turns with the rod.
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/dynamics/joint_model.hpp"
 #include "tumble/math/rotation.hpp"
@@ -31,8 +31,10 @@ struct LoopShape {
   Vec3 across1_A = Vec3::UnitX(), across2_A = Vec3::UnitY();
   bool all_point_rows = true;  // else the two across the axis
   int turn_rows = 0;           // 0, 1 (universal), 2 (across the axis) or 3 (A's axes)
+  // A distance joint's rod, m (> 0): its one row holds the distance from p_AJ_A to p_BJ_B.
+  double rod_length = 0.0;
 
-  int rows() const { return (all_point_rows ? 3 : 2) + turn_rows; }
+  int rows() const { return rod_length > 0.0 ? 1 : (all_point_rows ? 3 : 2) + turn_rows; }
 };
 
 // Throws std::logic_error for a free joint (which closes no loop).
@@ -67,7 +69,24 @@ template <typename S, typename Add>
 void for_each_loop_row(const LoopShape& shape, const BodyStateOf<S>& a, const BodyStateOf<S>& b,
                        Add&& add) {
   using V3 = Vec3Of<S>;
-  const V3 gap_W = loop_point_W(shape, b) - (a.r_G + a.R_WB * shape.p_AJ_A.cast<S>());
+  const V3 p_A_W = a.r_G + a.R_WB * shape.p_AJ_A.cast<S>();
+  const V3 gap_W = loop_point_W(shape, b) - p_A_W;
+  if (shape.rod_length > 0.0) {
+    // A rod holds |gap| at its length: its row is along u = gap / |gap|, which turns as its ends
+    // move apart across it, u' = (I - u u^T) gap' / |gap|. Read at B's end, A's velocity field
+    // gives the row's velocity as at A's own (u . (omega_A x gap) = 0), and a force along the rod
+    // has the same moment on A at either end: B's end serves both bodies, as a joint point does.
+    const S length = gap_W.norm();
+    const V3 gap_rate_W = b.v_G + b.omega_W.cross(V3(gap_W + p_A_W - b.r_G)) -
+                          (a.v_G + a.omega_W.cross(V3(p_A_W - a.r_G)));
+    LoopRowOf<S> row;
+    row.direction_W = gap_W / length;
+    row.direction_rate_W =
+        (gap_rate_W - row.direction_W * row.direction_W.dot(gap_rate_W)) / length;
+    row.error = length - S(shape.rod_length);
+    add(row);
+    return;
+  }
   // Directions fixed in A turn with it.
   const auto fixed_in_a = [&](bool turn, const Vec3& direction_A, const V3& along_W) {
     LoopRowOf<S> row;

@@ -216,6 +216,13 @@ std::string scene_json(const AnimationScene& scene, const RecordedTrajectory& ro
                         k == 0 ? "" : ",", json_string(joint.name), json_string(joint.type),
                         joint.body, vec(joint.point_GJ_B), vec(joint.axis_B));
   }
+  json += R"(],"rods":[)";
+  for (std::size_t k = 0; k < scene.rods.size(); ++k) {
+    const AnimationRod& rod = scene.rods[k];
+    json +=
+        fmt::format(R"({}{{"name":{},"a":{},"end_a":{},"b":{},"end_b":{}}})", k == 0 ? "" : ",",
+                    json_string(rod.name), rod.body_a, vec(rod.end_a), rod.body_b, vec(rod.end_b));
+  }
   json += "],";
 
   std::vector<double> time(n);
@@ -337,13 +344,29 @@ AnimationScene make_animation_scene(const Scenario& scenario) {
     body.extent = extent;
     scene.bodies.push_back(std::move(body));
   }
+  // A world point at t = 0 from a body's COM, its axes (ground's: the point itself).
+  const auto fixed_to = [&](const std::string& body_name, const Vec3& at_W, int& body) -> Vec3 {
+    const auto it = std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
+                                 [&](const BodySpec& b) { return b.name == body_name; });
+    if (it == scenario.bodies.end()) return at_W;
+    body = static_cast<int>(it - scenario.bodies.begin());
+    return it->R_WB.transpose() * (at_W - (it->position_W + it->R_WB * it->mass_properties.com));
+  };
   for (const JointSpec& spec : scenario.joints) {
+    if (spec.type == JointType::Distance) {
+      AnimationRod rod;
+      rod.name = spec.name;
+      rod.end_a = fixed_to(spec.body_a, spec.rod_end_a_W, rod.body_a);
+      rod.end_b = fixed_to(spec.body_b, spec.at_W, rod.body_b);
+      scene.rods.push_back(std::move(rod));
+      continue;
+    }
     const auto held = std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
                                    [&](const BodySpec& b) { return b.name == spec.body_b; });
     if (held == scenario.bodies.end()) continue;
     AnimationJoint joint;
     joint.name = spec.name;
-    joint.type = std::string(joint_kind(spec.type).type_name());
+    joint.type = std::string(joint_type_name(spec.type));
     joint.body = static_cast<std::size_t>(held - scenario.bodies.begin());
     // At t = 0, from the body's COM in its axes (the rows carry the COM and the orientation).
     const Vec3 r_G_W = held->position_W + held->R_WB * held->mass_properties.com;

@@ -67,11 +67,20 @@ struct AnimationJoint {
   Vec3 axis_B = Vec3::UnitZ();     // a hinge's or slider's axis, its axes
 };
 
+// A distance joint's massless rod, drawn as a line between its ends, each fixed to its body.
+struct AnimationRod {
+  std::string name;
+  int body_a = -1, body_b = -1;  // -1: ground
+  Vec3 end_a = Vec3::Zero();     // from body_a's COM, its axes (ground: world), m
+  Vec3 end_b = Vec3::Zero();     // from body_b's COM, its axes (ground: world), m
+};
+
 struct AnimationScene {
   std::string name;  // the scenario's: the page's title
   std::vector<AnimationBody> bodies;
   std::vector<AnimationPlane> planes;  // one per distinct plane of the contacts
-  std::vector<AnimationJoint> joints;
+  std::vector<AnimationJoint> joints;  // but the rods
+  std::vector<AnimationRod> rods;
   bool planar = false;  // seen from +z, y up, as the chapter draws it
 };
 

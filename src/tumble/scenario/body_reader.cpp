@@ -291,9 +291,8 @@ void check_slender_bodies(const Scenario& scenario) {
         fail(fmt::format(
             "the {} '{}' turns it about an axis it has no inertia about (along it, through "
             "it), so nothing says how fast; hinge it across that line, or give `inertia:`",
-            joint.type == JointType::Hinge
-                ? "hinge"
-                : std::string(joint_kind(joint.type).type_name()) + " joint",
+            joint.type == JointType::Hinge ? "hinge"
+                                           : std::string(joint_type_name(joint.type)) + " joint",
             joint.name));
       }
     }

@@ -104,14 +104,8 @@ SpringSpec read_spring(const Reader& reader, const MapReader& map,
                        const std::vector<BodySpec>& bodies) {
   SpringSpec spring;
   std::tie(spring.body_a, spring.body_b) = read_pair(reader, map, bodies);
-  const Field at = map.require("at", "the two attachment points [[x, y, z], [x, y, z]], world");
-  const std::vector<Field> points = reader.items(at, "of two points [[x, y, z], [x, y, z]]");
-  if (points.size() != 2) {
-    reader.fail_at_value(at,
-                         fmt::format("give two points, one on each body; got {}", points.size()));
-  }
-  spring.at_a_W = reader.point_or_vector(points[0]);
-  spring.at_b_W = reader.point_or_vector(points[1]);
+  std::tie(spring.at_a_W, spring.at_b_W) = reader.two_points(
+      map.require("at", "the two attachment points [[x, y, z], [x, y, z]], world"));
   spring.stiffness = read_non_negative(reader, map, "stiffness", "N/m", true);
   spring.damping = read_non_negative(reader, map, "damping", "N s/m", false);
   if (map.has("rest_length")) {

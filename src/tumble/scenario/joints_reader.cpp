@@ -1,7 +1,7 @@
 // `joints:`: a mapping from each joint's name to {type: ball | hinge | prismatic | fixed |
-// cylindrical | universal, bodies: [a, b] (or body: b, held by ground), at: world point at t = 0,
-// axis: (hinge, prismatic, cylindrical), axes: (universal), motor:, lock: (all but ball and
-// fixed)}.
+// cylindrical | universal | distance, bodies: [a, b] (or body: b, held by ground), at: world point
+// at t = 0 (distance: the rod's two ends), axis: (hinge, prismatic, cylindrical), axes:
+// (universal), motor:, lock: (hinge, prismatic, cylindrical, universal)}.
 #include <fmt/format.h>
 #include <algorithm>
 #include <array>
@@ -9,6 +9,8 @@
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <tuple>
 
 #include "tumble/multibody/joints/joint_kind.hpp"
 #include "tumble/scenario/readers.hpp"
@@ -130,6 +132,25 @@ MotorSpec read_motor(const Reader& reader, const Field& field, JointType type) {
   return motor;
 }
 
+// A distance joint's rod: its two ends, which it keeps at their distance at t = 0.
+JointSpec read_rod_ends(const Reader& reader, const MapReader& map, JointSpec& joint) {
+  const Field at = map.require("at",
+                               "the rod's ends [[x, y, z], [x, y, z]], world at t = 0: the first "
+                               "on body a, the second on body b");
+  std::tie(joint.rod_end_a_W, joint.at_W) = reader.two_points(at);
+  const double length = (joint.at_W - joint.rod_end_a_W).norm();
+  const double where =
+      std::max(joint.at_W.cwiseAbs().maxCoeff(), joint.rod_end_a_W.cwiseAbs().maxCoeff());
+  // A rod shorter than the ends' own round-off has no direction to hold them along.
+  if (!(length > 1e-9 * std::max(1.0, where))) {
+    reader.fail_at_value(at,
+                         fmt::format("a rod's ends are {} m apart: a rod holds two points apart "
+                                     "(two points held together are a ball joint)",
+                                     format_number(length)));
+  }
+  return joint;
+}
+
 // A hinge's, a slider's or a cylindrical joint's motor and lock, after its axis.
 JointSpec read_drive(const Reader& reader, const MapReader& map, JointSpec& joint);
 // A universal joint's two axes (the first fixed in body a, the second in body b, at right
@@ -152,12 +173,14 @@ JointSpec read_joint(const Reader& reader, const Field& field,
 
   const Field type_field = map.require("type", joint_types_listed("or"));
   const std::string type = reader.text(type_field);
-  if (joint_kind_named(type, &joint.type) == nullptr) {
+  const std::optional<JointType> named = joint_type_named(type);
+  if (!named) {
     const std::vector<std::string> types = joint_types();
     std::string why = "unknown joint type '" + type + "'";
     if (const auto match = closest_match(type, types)) why += "; did you mean '" + *match + "'?";
     reader.fail_at_value(type_field, why + " (the types are " + joint_types_listed("and") + ")");
   }
+  joint.type = *named;
   std::vector<std::string> keys = {"type", "bodies", "body", "at"};
   const bool universal = joint.type == JointType::Universal;
   if (has_axis(joint.type)) keys.insert(keys.end(), {"axis", "motor", "lock"});
@@ -175,7 +198,10 @@ JointSpec read_joint(const Reader& reader, const Field& field,
              " joint takes no motor (a hinge, a prismatic, a cylindrical or a "
              "universal joint does)";
     }
-    if (key == "lock") return "a " + type + " joint has no freedom to lock";
+    if (key == "lock") {
+      return joint.type == JointType::Distance ? "a distance joint (a rod) takes no lock"
+                                               : "a " + type + " joint has no freedom to lock";
+    }
     if (key == "axes") {
       return "only a universal joint has axes (this joint is a " + type +
              (has_axis(joint.type) ? "; give its one axis: axis: [x, y, z])" : ")");
@@ -207,15 +233,16 @@ JointSpec read_joint(const Reader& reader, const Field& field,
                          "give the bodies it joins: bodies: [a, b] or body: b (held by "
                          "ground)");
   }
-  joint.at_W =
-      reader.point_or_vector(map.require("at", "the joint's point, world coordinates at t = 0"));
   if (reader.planar() && (joint.type == JointType::Ball || joint.type == JointType::Universal ||
                           joint.type == JointType::Cylindrical)) {
     reader.fail_at_value(field,
-                         "a planar scenario's joints are hinges (about z), sliders and "
-                         "welds; a " +
+                         "a planar scenario's joints are hinges (about z), sliders, welds and "
+                         "rods (distance); a " +
                              type + " joint would let the bodies leave the plane");
   }
+  if (joint.type == JointType::Distance) return read_rod_ends(reader, map, joint);
+  joint.at_W =
+      reader.point_or_vector(map.require("at", "the joint's point, world coordinates at t = 0"));
 
   if (universal) return read_universal_axes(reader, map, joint);
   if (!has_axis(joint.type)) return joint;
@@ -321,7 +348,10 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
   for (const BodySpec& body : bodies) heads.note(body.name, "body", body.where);
   for (const Field& f : map.fields()) {
     JointSpec joint = read_joint(reader, f, bodies);
-    joint.closes_loop = !groups.join(joint.body_a, joint.body_b);
+    // A rod is always a constraint on the tree, whether or not it closes a loop: it joins no
+    // bodies in the tree's sense (its bodies keep five freedoms between them).
+    joint.closes_loop =
+        joint.type == JointType::Distance || !groups.join(joint.body_a, joint.body_b);
     if (joint.closes_loop && joint.motor.kind != MotorSpec::Kind::None) {
       throw ScenarioError(joint.motor.where, "motor",
                           "this joint closes a loop (" + joint.body_a + " and " + joint.body_b +

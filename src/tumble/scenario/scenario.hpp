@@ -107,7 +107,8 @@ struct JointSpec {
   std::string name;                  // the key under `joints:`
   std::string body_a = kGroundName;  // `bodies: [a, b]`, or `body: b` (then a is ground)
   std::string body_b;
-  Vec3 at_W = Vec3::Zero();  // the joint point, world at t = 0, m
+  Vec3 at_W = Vec3::Zero();  // the joint point, world at t = 0, m (distance: the rod's end on b)
+  Vec3 rod_end_a_W = Vec3::Zero();  // distance: the rod's end on a, world at t = 0, m
   // hinge, prismatic, cylindrical: unit axis, world at t = 0; universal: the second axis (fixed
   // in b), with first_axis_W the first (fixed in a), at right angles
   Vec3 axis_W = Vec3::UnitZ();

@@ -206,6 +206,14 @@ Vec3 Reader::point_or_vector(const Field& field) const {
   return Vec3(v[0], v[1], 0.0);
 }
 
+std::pair<Vec3, Vec3> Reader::two_points(const Field& field) const {
+  const std::vector<Field> points = items(field, "of two points [[x, y, z], [x, y, z]]");
+  if (points.size() != 2) {
+    fail_at_value(field, fmt::format("give two points, one on each body; got {}", points.size()));
+  }
+  return {point_or_vector(points[0]), point_or_vector(points[1])};
+}
+
 Vec3 Reader::spin_vector(const Field& field) const {
   if (!planar_) return vec3(field);
   if (!field.node || !field.node.IsScalar()) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "tumble/math/types.hpp"
@@ -92,6 +93,9 @@ class Reader {
   // A point or a direction of the world or a body: [x, y, z]; in a planar scenario [x, y], in
   // the plane (z = 0).
   Vec3 point_or_vector(const Field& field) const;
+  // Two points, the first on a spring's or a rod's first body and the second on its second:
+  // [[x, y, z], [x, y, z]] (planar: [[x, y], [x, y]]).
+  std::pair<Vec3, Vec3> two_points(const Field& field) const;
   // An angular velocity or a torque: [x, y, z]; in a planar scenario one number, about z (counter-
   // clockwise seen from +z).
   Vec3 spin_vector(const Field& field) const;

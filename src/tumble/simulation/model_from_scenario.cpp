@@ -128,8 +128,10 @@ JointModel joint_model(const Scenario& scenario, const BodyNumbers& body_number,
   joint.name = spec.name;
   joint.body_a = body_number(spec.body_a);
   joint.body_b = body_number(spec.body_b);
-  joint.p_AJ_A = fixed_point(scenario, joint.body_a, spec.at_W);
+  const bool rod = spec.type == JointType::Distance;
+  joint.p_AJ_A = fixed_point(scenario, joint.body_a, rod ? spec.rod_end_a_W : spec.at_W);
   joint.p_BJ_B = fixed_point(scenario, joint.body_b, spec.at_W);
+  if (rod) joint.rod_length = (spec.at_W - spec.rod_end_a_W).norm();
   const Mat3 R_WA = orientation(scenario, joint.body_a);
   const Mat3 R_WB = orientation(scenario, joint.body_b);
   joint.R_AB0 = R_WA.transpose() * R_WB;

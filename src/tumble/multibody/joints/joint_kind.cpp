@@ -41,23 +41,30 @@ const std::array<Registered, 7>& registry() {
   return kinds;
 }
 
+// A distance joint is a loop's row alone (multibody/loop_rows.hpp): it has a name but no kind.
+constexpr std::string_view kDistanceName = "distance";
+
 }  // namespace
 
 const JointKind& joint_kind(JointType type) {
   for (const Registered& r : registry()) {
     if (r.type == type) return r.kind;
   }
+  // A distance joint is a loop's row, never a joint of the tree.
   throw std::logic_error("a JointType without a kind: register it in joint_kind.cpp");
 }
 
-const JointKind* joint_kind_named(std::string_view name, JointType* type) {
+std::optional<JointType> joint_type_named(std::string_view name) {
+  if (name == kDistanceName) return JointType::Distance;
   for (const Registered& r : registry()) {
     // A free joint is the tree's, for a body no joint holds: a scenario does not state one.
-    if (r.type == JointType::Free || r.kind.type_name() != name) continue;
-    if (type != nullptr) *type = r.type;
-    return &r.kind;
+    if (r.type != JointType::Free && r.kind.type_name() == name) return r.type;
   }
-  return nullptr;
+  return std::nullopt;
+}
+
+std::string_view joint_type_name(JointType type) {
+  return type == JointType::Distance ? kDistanceName : joint_kind(type).type_name();
 }
 
 std::span<const std::string_view> joint_type_names() {
@@ -66,6 +73,7 @@ std::span<const std::string_view> joint_type_names() {
     for (const Registered& r : registry()) {
       if (r.type != JointType::Free) out.push_back(r.kind.type_name());
     }
+    out.push_back(kDistanceName);
     return out;
   }();
   return names;

@@ -15,6 +15,7 @@
 // Frames: P the parent's axes at its COM (ground: world), C the child's at its COM. A joint's
 // point is p_PJ_P on the parent and p_CJ_C on the child; R_PC0 is the child's orientation
 // relative to the parent where the coordinates are zero; axis_C the hinge's or slider's axis.
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -158,10 +159,13 @@ class JointKind {
                               VecX& y) const = 0;
 };
 
-// The one place that makes the kinds: each JointType's, and the kind a scenario names ("hinge";
-// nullptr for a name that is none).
+// The one place that makes the kinds: each JointType's of the tree (a distance joint has none:
+// std::logic_error).
 const JointKind& joint_kind(JointType type);
-const JointKind* joint_kind_named(std::string_view name, JointType* type = nullptr);
+// The type a scenario names ("hinge", "distance"; nothing for a name that is none), and a type's
+// name.
+std::optional<JointType> joint_type_named(std::string_view name);
+std::string_view joint_type_name(JointType type);
 // The names a scenario may give, in the order the documentation lists them.
 std::span<const std::string_view> joint_type_names();
 

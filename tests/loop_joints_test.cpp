@@ -151,6 +151,48 @@ TEST(LoopJoints, AFourBarFreeUnderGravityConservesEnergyWithItsLoopClosed) {
   EXPECT_GT(turned, kPi / 3.0);
 }
 
+// A torque motor at B, between the coupler and the rocker, for half a second: the same
+// mechanism whether B closes the loop (the torque pair is a load on the coupler and the rocker)
+// or O4 does (B is a joint of the tree, and the torque its generalised force). The two runs
+// agree to their tolerance, and in each the motor's work is what the energy gained.
+TEST(LoopJoints, ATorqueAcrossTheClosingJointMovesTheLinkageAsAcrossATreeJoint) {
+  std::string text = test::read_file(test::example("four_bar.yaml"));
+  text = test::replaced(text, "duration: 10", "duration: 2");
+  text = test::replaced(text, "axis: [0, 1, 0]}\nsimulate:",
+                        "axis: [0, 1, 0], motor: {torque: 3, from: 0.2, to: 0.7}}\nsimulate:");
+  // O4 listed last: it closes the loop, and B is a joint of the tree.
+  const std::size_t o4 = text.find("  O4:");
+  const std::size_t b = text.find("  B:");
+  std::string tree_b = text;
+  tree_b.erase(o4, b - o4);
+  tree_b = test::replaced(tree_b, "simulate:", text.substr(o4, b - o4) + "simulate:");
+  const test::ScenarioRun closing = test::run_inline_scenario(text, "four_bar_motor_closing");
+  const test::ScenarioRun in_tree = test::run_inline_scenario(tree_b, "four_bar_motor_in_tree");
+  ASSERT_TRUE(closing.scenario.joints.at(3).closes_loop);  // B
+  ASSERT_EQ(in_tree.scenario.joints.back().name, "O4");
+  ASSERT_TRUE(in_tree.scenario.joints.back().closes_loop);
+  ASSERT_EQ(closing.rows.size(), in_tree.rows.size());
+  const double E0 = closing.rows.front().quantities.total_energy;
+  const double scale = std::max(std::abs(E0), largest_kinetic_energy(closing));
+  double work = 0.0;
+  for (std::size_t i = 0; i < closing.rows.size(); ++i) {
+    const test::Row& c = closing.rows[i];
+    const test::Row& t = in_tree.rows[i];
+    ASSERT_EQ(c.t, t.t);
+    // The crank's angle O2 (joint 0 in both) and the rocker's place (rtol 1e-10 each).
+    EXPECT_NEAR(c.extras.coordinates.at(0).values[0], t.extras.coordinates.at(0).values[0], 1e-8)
+        << "t " << c.t;
+    EXPECT_LT((c.states.at(2).r_G - t.states.at(2).r_G).norm(), 1e-8) << "t " << c.t;
+    for (const test::Row* row : {&c, &t}) {
+      // B.motor is the first element; E - E0 is its work (the hinges do none).
+      EXPECT_NEAR(row->quantities.total_energy - E0, row->extras.elements.at(0).work, 1e-9 * scale)
+          << "t " << row->t;
+    }
+    work = c.extras.elements.at(0).work;
+  }
+  EXPECT_GT(std::abs(work), 0.1 * scale);  // it did work
+}
+
 TEST(LoopJoints, ALockOnAFourBarStopsItAndGroundsItsMomentThroughTheLoop) {
   // The crank locks at t = 0.5 s: a four-bar with its crank held has no freedom left, so every
   // body stops at once. The ground's reaction impulses at O2 (with the lock's moment) and O4,
@@ -403,12 +445,13 @@ joints:
   q: {type: hinge, bodies: [a, b], at: [1, 0, -0.5], axis: [0, 1, 0]}
 )";
   const std::string run = "simulate: {duration: 1}\n";
-  // A loop's closing joint (r: b is already joined to ground) cannot carry a motor.
+  // A loop's closing joint (r: b is already joined to ground) cannot carry a speed motor (a
+  // torque it can: LoopJoints.ATorqueAcrossTheClosingJointMovesTheLinkageAsAcrossATreeJoint).
   test::expect_error(links +
                          "  r: {type: hinge, bodies: [ground, b], at: [0, 0, -1], axis: [0, 1, 0], "
-                         "motor: {torque: 1}}\n" +
+                         "motor: {speed: 1}}\n" +
                          run,
-                     8, 74, "motor", "closes a loop");
+                     8, 74, "motor", "takes no speed motor");
   // Nor a lock.
   test::expect_error(links +
                          "  r: {type: hinge, bodies: [ground, b], at: [0, 0, -1], axis: [0, 1, 0], "

@@ -62,6 +62,41 @@ ElementLoadOf<S> calc_torsional_spring_load(const TorsionalSpring& spring,
   return load;
 }
 
+template <typename S>
+ElementLoadOf<S> calc_loop_motor_load(const JointModel& joint,
+                                      std::span<const BodyStateOf<S>> states) {
+  const BodyStateOf<S>& a = state_or_ground(states, joint.body_a);
+  const BodyStateOf<S>& b = state_or_ground(states, joint.body_b);
+  const bool about_first_axis = joint.type == JointType::Universal && joint.motor.freedom == 0;
+  const Vec3Of<S> axis_W = about_first_axis ? Vec3Of<S>(a.R_WB * joint.axis_A.cast<S>())
+                                            : Vec3Of<S>(b.R_WB * joint.axis_B.cast<S>());
+  const bool slides = joint.type == JointType::Prismatic ||
+                      (joint.type == JointType::Cylindrical && joint.motor.freedom == 1);
+  ElementLoadOf<S> load;
+  if (slides) {
+    // At B's joint point, which A's material point there meets.
+    const Vec3Of<S> p_B_W = b.R_WB * joint.p_BJ_B.cast<S>();
+    const Vec3Of<S> p_A_W = b.r_G + p_B_W - a.r_G;
+    const Vec3Of<S> F_W = S(joint.motor.value) * axis_W;
+    load.F_b_W = F_W;
+    load.M_b_W = p_B_W.cross(F_W);
+    load.F_a_W = -F_W;
+    load.M_a_W = -p_A_W.cross(F_W);
+    load.power = F_W.dot(velocity_of_point<S>(b.v_G, b.omega_W, p_B_W) -
+                         velocity_of_point<S>(a.v_G, a.omega_W, p_A_W));
+  } else {
+    const Vec3Of<S> M_W = S(joint.motor.value) * axis_W;
+    load.M_b_W = M_W;
+    load.M_a_W = -M_W;
+    load.power = M_W.dot(b.omega_W - a.omega_W);
+  }
+  return load;
+}
+
+template ElementLoadOf<double> calc_loop_motor_load<double>(const JointModel&,
+                                                            std::span<const BodyStateOf<double>>);
+template ElementLoadOf<Dual> calc_loop_motor_load<Dual>(const JointModel&,
+                                                        std::span<const BodyStateOf<Dual>>);
 template ElementLoadOf<double> calc_spring_load<double>(const LinearSpring&,
                                                         std::span<const BodyStateOf<double>>);
 template ElementLoadOf<Dual> calc_spring_load<Dual>(const LinearSpring&,

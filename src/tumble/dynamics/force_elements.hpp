@@ -85,4 +85,20 @@ inline ElementLoad calc_torsional_spring_load(const TorsionalSpring& spring,
   return calc_torsional_spring_load<double>(spring, states, hinge_angle, hinge_rate, axis_W);
 }
 
+// A motor's effort across a joint that closes a loop, whose angle and travel are no coordinates
+// of the tree (a tree joint's effort is its generalised force instead): a torque about its axis
+// (a hinge's or a cylindrical joint's, fixed in B; a universal joint's first, fixed in A, or its
+// second, fixed in B) or a force along it at B's joint point (a slider's or a cylindrical
+// joint's), on the second body and its opposite on the first, active or not (the caller asks
+// JointMotor::active_at). Its power is the effort times the joint's rate about or along the
+// axis: the axes a joint holds at right angles make (omega_B - omega_A) . a a universal joint's
+// rate about a.
+template <typename S>
+ElementLoadOf<S> calc_loop_motor_load(const JointModel& joint,
+                                      std::span<const BodyStateOf<S>> states);
+inline ElementLoad calc_loop_motor_load(const JointModel& joint,
+                                        std::span<const BodyState> states) {
+  return calc_loop_motor_load<double>(joint, states);
+}
+
 }  // namespace tumble

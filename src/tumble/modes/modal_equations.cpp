@@ -344,6 +344,15 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
                 calc_torsional_spring_load<S>(spring, std::span<const BodyStateOf<S>>(states),
                                               angle, rate, axis_W));
   }
+  // A motor's effort across a loop's closing joint, a load on its bodies (as a run applies it).
+  for (const JointModel& joint : model.joints) {
+    if (!joint.closes_loop || joint.motor.kind != JointMotor::Kind::Effort ||
+        !joint.motor.active_at(t0_)) {
+      continue;
+    }
+    add_element(joint.body_a, joint.body_b,
+                calc_loop_motor_load<S>(joint, std::span<const BodyStateOf<S>>(states)));
+  }
 
   // Newton-Euler projected onto the unknown speeds' rates: M(q) u' = generalised forces.
   MX<S> mass = MX<S>::Zero(unknowns, unknowns);

@@ -193,6 +193,15 @@ void ArticulatedFormulation::accumulate_element_loads(const VecX& y, double mode
     elastic += e.energy;
     rates(slot++) = e.power;
   }
+  // A motor across a loop's closing joint has no coordinate of the tree to drive: its effort is
+  // a load on its two bodies (a tree joint's is its generalised force, in solve).
+  for (const std::size_t j : m_.motor_joints) {
+    const JointModel& joint = model_.joints[j];
+    if (!joint.closes_loop || !joint.motor.active_at(mode_time)) continue;
+    const ElementLoad e = calc_loop_motor_load(joint, d_.states);
+    add(joint.body_a, e.F_a_W, e.M_a_W);
+    add(joint.body_b, e.F_b_W, e.M_b_W);
+  }
   if (elastic_energy != nullptr) *elastic_energy = elastic;
 }
 
@@ -337,8 +346,15 @@ void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,
   // are written by the contact subsystem's write_powers).
   Eigen::Index entry = offset + m_.first_motor_entry();
   for (const std::size_t j : m_.motor_joints) {
+    const JointModel& joint = model_.joints[j];
+    if (joint.closes_loop) {
+      rates(entry++) = joint.motor.active_at(s_.schedule_time)
+                           ? calc_loop_motor_load(joint, d_.states).power
+                           : 0.0;
+      continue;
+    }
     const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
-    const int f = model_.joints[j].motor.freedom;
+    const int f = joint.motor.freedom;
     rates(entry++) = d_.work[k].tau(f) * y(m_.tree[k].v + f);
   }
   for (; entry < rates.size(); ++entry) rates(entry) = 0.0;
@@ -629,9 +645,10 @@ bool ArticulatedFormulation::apply_jumps_at(double t, VecX& y) {
 
   Eigen::Index slot = m_.ledger + m_.first_motor_entry();
   for (const std::size_t j : m_.motor_joints) {
-    const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
     const JointModel& joint = model_.joints[j];
+    // (A loop's closing joint takes no speed motor: the reader refuses one.)
     if (joint.motor.kind == JointMotor::Kind::Speed && joint.motor.from == t && t < joint.lock_at) {
+      const std::size_t k = static_cast<std::size_t>(m_.slot_of_joint[j]);
       y(slot) += d_.work[k].tau(0) * 0.5 * (rate_before[k](0) + y(m_.tree[k].v));
     }
     ++slot;

@@ -114,15 +114,18 @@ class ArticulatedFormulation final : public Formulation {
   // the others do not move under loads on it (their workspaces are left as they were).
   static constexpr std::size_t kEveryTree = static_cast<std::size_t>(-1);
   void solve(double mode_time, bool impulsive, std::size_t only_tree = kEveryTree) const;
-  // Applied loads and force elements on each body (into Workspace::external); their powers into
-  // rates from `offset` on, in ledger order; the springs' stored energy into elastic_energy.
+  // Applied loads, force elements and the efforts of motors across loops' closing joints on each
+  // body (into Workspace::external); the loads' and elements' powers into rates from `offset` on,
+  // in ledger order (the motors' are write_joint_powers'); the springs' stored energy into
+  // elastic_energy.
   void accumulate_element_loads(const VecX& y, double mode_time, VecX& rates, Eigen::Index offset,
                                 double* elastic_energy) const;
   // solve() with the contacts' forces in their current modes (the contact subsystem's
   // solve_forces) and the loops' (LoopJoints::solve_forces), after calc_kinematics and
   // accumulate_element_loads.
   void solve_with_contacts(double t) const;
-  // Motors' powers (tau theta', after solve()) and zero for impulses and locks, into rates from
+  // Motors' powers (tau theta', after solve(); across a loop's closing joint, its effort times
+  // the joint's rate) and zero for impulses and locks, into rates from
   // offset + first_motor_entry() to the end.
   void write_joint_powers(const VecX& y, VecX& rates, Eigen::Index offset) const;
   // After the last solve: every joint's coordinate rates and accelerations into dydt, and the

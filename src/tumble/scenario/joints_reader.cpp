@@ -352,12 +352,14 @@ std::vector<JointSpec> read_joints(const Reader& reader, const Field& field,
     // bodies in the tree's sense (its bodies keep five freedoms between them).
     joint.closes_loop =
         joint.type == JointType::Distance || !groups.join(joint.body_a, joint.body_b);
-    if (joint.closes_loop && joint.motor.kind != MotorSpec::Kind::None) {
+    // A closing joint's effort is a load on its bodies; a speed would be a row of its own.
+    if (joint.closes_loop && joint.motor.kind == MotorSpec::Kind::Speed) {
       throw ScenarioError(joint.motor.where, "motor",
                           "this joint closes a loop (" + joint.body_a + " and " + joint.body_b +
                               " are already joined through the joints listed before it), and "
-                              "a loop's closing joint takes no motor: list it before a joint "
-                              "of the loop that takes none, so that the tree holds it");
+                              "a loop's closing joint takes no speed motor (a torque or a force "
+                              "it does): list it before a joint of the loop that has no speed "
+                              "motor, so that the tree drives it");
     }
     if (joint.closes_loop && joint.lock_at != std::numeric_limits<double>::infinity()) {
       reader.fail_at_key(f,

@@ -2,8 +2,6 @@
 // The kinds of joint, one enum for the scenario, the model and the kinematic tree. Each kind's
 // geometry and kinematics live in one file of multibody/joints/ (JointKind), made in one place
 // (joint_kind.cpp); a distance joint is a loop's row alone (loop_rows.hpp).
-#include <string_view>
-
 namespace tumble {
 
 enum class JointType {

@@ -521,13 +521,9 @@ std::optional<Formulation::StartProblem> ArticulatedFormulation::start_problem(
   // joint's) are its own whatever a loop does, since a loop joins bodies already joined; but a
   // rod (a distance joint) may join the group to ground or to another group, and then takes its
   // share of them.
-  const auto root_slot = [&](int body) {  // the joint that holds the body's group (-1: ground)
-    int slot = -1;
-    while (body != kGround) {
-      slot = static_cast<int>(m_.slot_of_body[static_cast<std::size_t>(body)]);
-      body = m_.tree[static_cast<std::size_t>(slot)].parent;
-    }
-    return slot;
+  const auto root_slot = [&](int body) {  // the joint that hangs the body's tree (-1: ground)
+    if (body == kGround) return -1;
+    return static_cast<int>(m_.tree_root[m_.slot_of_body[static_cast<std::size_t>(body)]]);
   };
   std::vector<bool> held_by_a_rod(m_.tree.size(), false);
   for (const JointModel& joint : model_.joints) {

@@ -361,17 +361,16 @@ AnimationScene make_animation_scene(const Scenario& scenario) {
       scene.rods.push_back(std::move(rod));
       continue;
     }
-    const auto held = std::find_if(scenario.bodies.begin(), scenario.bodies.end(),
-                                   [&](const BodySpec& b) { return b.name == spec.body_b; });
-    if (held == scenario.bodies.end()) continue;
+    // At t = 0, from the body's COM in its axes (the rows carry the COM and the orientation).
+    int held = -1;
+    const Vec3 point_GJ_B = fixed_to(spec.body_b, spec.at_W, held);
+    if (held < 0) continue;
     AnimationJoint joint;
     joint.name = spec.name;
     joint.type = std::string(joint_type_name(spec.type));
-    joint.body = static_cast<std::size_t>(held - scenario.bodies.begin());
-    // At t = 0, from the body's COM in its axes (the rows carry the COM and the orientation).
-    const Vec3 r_G_W = held->position_W + held->R_WB * held->mass_properties.com;
-    joint.point_GJ_B = held->R_WB.transpose() * (spec.at_W - r_G_W);
-    joint.axis_B = held->R_WB.transpose() * spec.axis_W;
+    joint.body = static_cast<std::size_t>(held);
+    joint.point_GJ_B = point_GJ_B;
+    joint.axis_B = scenario.bodies[joint.body].R_WB.transpose() * spec.axis_W;
     scene.joints.push_back(std::move(joint));
   }
   // One plane per distinct plane: bodies racing down one ramp each have a contact with it.

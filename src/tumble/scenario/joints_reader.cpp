@@ -139,10 +139,10 @@ JointSpec read_rod_ends(const Reader& reader, const MapReader& map, JointSpec& j
                                "on body a, the second on body b");
   std::tie(joint.rod_end_a_W, joint.at_W) = reader.two_points(at);
   const double length = (joint.at_W - joint.rod_end_a_W).norm();
-  const double where =
+  const double largest_coordinate =
       std::max(joint.at_W.cwiseAbs().maxCoeff(), joint.rod_end_a_W.cwiseAbs().maxCoeff());
   // A rod shorter than the ends' own round-off has no direction to hold them along.
-  if (!(length > 1e-9 * std::max(1.0, where))) {
+  if (!(length > 1e-9 * std::max(1.0, largest_coordinate))) {
     reader.fail_at_value(at,
                          fmt::format("a rod's ends are {} m apart: a rod holds two points apart "
                                      "(two points held together are a ball joint)",

@@ -172,6 +172,9 @@ INSTANTIATE_TEST_SUITE_P(
         CheckpointCase{"gyroscope", 0.5, "a fast spin by dop853, between rows"},
         CheckpointCase{"tumbling_prism", 9.0, "by rk4's fixed steps", "rk4"},
         CheckpointCase{"tumbling_prism", 9.0, "by rkmk4's steps on the rotation group", "rkmk4"},
+        // The implicit method's memory: the Jacobian it keeps, its factorisations' step.
+        CheckpointCase{"stiff_mount", 0.002, "by radau5, as the mount creeps back"},
+        CheckpointCase{"inverted_mast", 5.0, "by radau5's steps on a hinge", "radau5"},
         // With an event to watch, the closed form steps an eighth of a turn at most.
         CheckpointCase{"tumbling_prism", 9.0, "by the closed form", "exact",
                        "events:\n  - {name: flips, when: prism.w3 < 0}\n"}),

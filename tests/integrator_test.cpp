@@ -1,6 +1,7 @@
-// The time-stepping methods (dopri5, dop853, rk4, rkmk4) against closed-form solutions: order of
-// convergence, error against tolerance, the continuous extensions, step-size control by hand,
-// landing on stop times, restarts, failures, and the evaluation counts each design implies.
+// The explicit time-stepping methods (dopri5, dop853, rk4, rkmk4; radau5 has radau5_test.cpp)
+// against closed-form solutions: order of convergence, error against tolerance, the continuous
+// extensions, step-size control by hand, landing on stop times, restarts, failures, and the
+// evaluation counts each design implies.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -774,8 +775,9 @@ TEST(Factory, MakesEachMethodByName) {
     int order;
     bool adaptive;
   };
-  for (const Expected e : {Expected{"dopri5", 5, true}, Expected{"dop853", 8, true},
-                           Expected{"rk4", 4, false}, Expected{"rkmk4", 4, false}}) {
+  for (const Expected e :
+       {Expected{"dopri5", 5, true}, Expected{"dop853", 8, true}, Expected{"rk4", 4, false},
+        Expected{"rkmk4", 4, false}, Expected{"radau5", 5, true}}) {
     auto integrator = make_integrator(e.name, control);
     EXPECT_EQ(integrator->name(), e.name);
     EXPECT_EQ(integrator->order(), e.order);
@@ -796,7 +798,7 @@ std::string factory_error(const std::string& name, const StepControl& control) {
 TEST(Factory, RejectsUnknownNamesAndBadControlsWithAHelpfulMessage) {
   StepControl control;
   EXPECT_EQ(factory_error("euler", control),
-            "unknown integrator 'euler'; valid names: dopri5, dop853, rk4, rkmk4");
+            "unknown integrator 'euler'; valid names: dopri5, dop853, rk4, rkmk4, radau5");
   for (const std::string method : {"rk4", "rkmk4"}) {
     EXPECT_NE(factory_error(method, control).find("fixed_step = 0"), std::string::npos) << method;
     control.fixed_step = -0.1;
@@ -808,6 +810,7 @@ TEST(Factory, RejectsUnknownNamesAndBadControlsWithAHelpfulMessage) {
   control.rtol = 1e-6;
   control.atol = -1.0;
   EXPECT_NE(factory_error("dop853", control).find("dop853: atol = -1"), std::string::npos);
+  EXPECT_NE(factory_error("radau5", control).find("radau5: atol = -1"), std::string::npos);
 }
 
 TEST(Factory, StartRejectsAStateOfTheWrongSize) {

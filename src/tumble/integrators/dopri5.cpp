@@ -95,7 +95,7 @@ StepOutcome Dopri5::step(double t_stop) {
   k[0] = accepted_stages()[kStages - 1];  // FSAL: f at the current state
   const double rtol = control_.rtol;
   const double h_min = step_control::minimum_step(t_);
-  double h_abs = std::min({h_max_, std::max(h_min, step_bound_), std::max(h_min, h_)});
+  double h_abs = step_control::first_try(h_, h_max_, step_bound_, h_min);
   bool rejected_before = false;
 
   for (;;) {

@@ -115,8 +115,9 @@ class Integrator {
   mutable IntegratorStats stats_;
 };
 
-// The methods by their scenario names: dopri5, dop853, rk4, rkmk4. Throws std::invalid_argument
-// for an unknown name or a control that does not fit the method (e.g. rk4 without a step).
+// The methods by their scenario names: dopri5, dop853, rk4, rkmk4, radau5. Throws
+// std::invalid_argument for an unknown name or a control that does not fit the method (e.g. rk4
+// without a step).
 std::unique_ptr<Integrator> make_integrator(std::string_view name, const StepControl& control);
 
 }  // namespace tumble

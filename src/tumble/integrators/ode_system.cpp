@@ -47,6 +47,10 @@ EventAction OdeSystem::on_event(std::size_t /*event_index*/, double /*t*/, VecX&
   return EventAction::Record;
 }
 
+bool OdeSystem::jacobian(double /*t*/, const VecX& /*y*/, MatX& /*dfdy*/) const {
+  return false;
+}
+
 double OdeSystem::step_limit(double /*t*/, const VecX& /*y*/) const {
   return std::numeric_limits<double>::infinity();
 }

@@ -54,6 +54,12 @@ class OdeSystem {
   // else: a method may renormalise q without evaluating f again.
   virtual std::span<const Eigen::Index> unit_quaternion_offsets() const { return {}; }
 
+  // df/dy at (t, y) into dfdy (sized n x n by the caller), for the implicit methods (radau5);
+  // returns false where the system gives none (the default). Called at the start of a step that
+  // needs a new Jacobian (a method keeps one while its Newton iteration converges fast), never
+  // inside a step's stages; it may allocate.
+  virtual bool jacobian(double t, const VecX& y, MatX& dfdy) const;
+
   // Put y back onto the manifold and the constraints after every accepted step and after every
   // jump. The default normalises the unit quaternions.
   virtual void project(double t, VecX& y) const;

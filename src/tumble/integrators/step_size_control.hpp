@@ -7,6 +7,7 @@
 // (1997) 1-22, and the ode45.m code it describes; E. Hairer, S. P. Norsett and G. Wanner, "Solving
 // Ordinary Differential Equations I", 2nd ed., Springer 1993, section II.4 (step control, eq.
 // 4.11 norm, the starting step) and the DOP853 code that goes with it.
+#include <algorithm>
 #include <string_view>
 
 #include "tumble/integrators/integrator.hpp"
@@ -37,6 +38,12 @@ double spacing(double t);
 // The smallest step ode45 takes at t, 16 eps(t); a rejected step this small is a step-size
 // underflow (the solution changes faster than the time grid can resolve).
 double minimum_step(double t);
+
+// The size a step tries first: the method's proposal h, within its largest step h_max and the
+// bound a system asked for (Integrator::bound_next_step), and not below h_min.
+inline double first_try(double h, double h_max, double step_bound, double h_min) {
+  return std::min({h_max, std::max(h_min, step_bound), std::max(h_min, h)});
+}
 
 // ode45's first step: h = min(h_max, |t_end - t0|); rh = ||f0 ./ max(|y0|, atol_i/rtol)||_inf
 // / (0.8 rtol^(1/5)); if h rh > 1 then h = 1 / rh; then at least minimum_step(t0).

@@ -360,6 +360,11 @@ void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,
   for (; entry < rates.size(); ++entry) rates(entry) = 0.0;
 }
 
+bool ArticulatedFormulation::jacobian(double /*t*/, const VecX& y, MatX& dfdy) const {
+  return state_jacobian_ != nullptr &&
+         state_jacobian_(shared_articulated_, s_.schedule_time, y, dfdy);
+}
+
 void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) const {
   y.setZero();
   for (const TreeJoint& joint : m_.tree) {

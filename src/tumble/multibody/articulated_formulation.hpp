@@ -46,7 +46,9 @@ class ArticulatedFormulation final : public Formulation {
   explicit ArticulatedFormulation(Model model);
 
   std::unique_ptr<Formulation> new_run() const override {
-    return std::make_unique<ArticulatedFormulation>(shared_articulated_);
+    auto run = std::make_unique<ArticulatedFormulation>(shared_articulated_);
+    run->state_jacobian_ = state_jacobian_;
+    return run;
   }
 
   std::string_view name() const override { return "body, joint coordinates"; }
@@ -74,6 +76,15 @@ class ArticulatedFormulation final : public Formulation {
   std::span<const EventSpec> events() const override { return m_.event_specs; }
   void event_functions(double t, const VecX& y, VecX& g) const override;
   EventAction on_event(std::size_t event_index, double t, VecX& y) override;
+  // df/dy at the schedule's mode, from the function set_state_jacobian gave (false without one,
+  // or where it has none).
+  bool jacobian(double t, const VecX& y, MatX& dfdy) const override;
+  // The Jacobian's source: automatic differentiation of the one physics
+  // (modes/state_jacobian.hpp), which this layer does not depend on; the simulation layer hands
+  // it over (FormulationModel::new_run).
+  using StateJacobian = bool (*)(const std::shared_ptr<const ArticulatedModel>& model, double t,
+                                 const VecX& y, MatX& dfdy);
+  void set_state_jacobian(StateJacobian source) { state_jacobian_ = source; }
   // Normalises the quaternions, then puts each touching contact back on the plane and its
   // velocity on the mode's constraints (no normal velocity; rolling: no slip), and closes the
   // loops (LoopJoints::project).
@@ -96,6 +107,9 @@ class ArticulatedFormulation final : public Formulation {
   void calc_row_extras(double t, const VecX& y, RowExtras& extras) const override;
 
   const std::vector<TreeJoint>& tree() const { return m_.tree; }
+  const std::shared_ptr<const ArticulatedModel>& shared_articulated_model() const {
+    return shared_articulated_;
+  }
   double joint_rate(const VecX& y, std::size_t joint) const override {
     return m_.joint_rate(y, joint);
   }
@@ -165,6 +179,7 @@ class ArticulatedFormulation final : public Formulation {
     const ArticulatedFormulation& f_;
   };
 
+  StateJacobian state_jacobian_ = nullptr;
   std::shared_ptr<const ArticulatedModel> shared_articulated_;
   const ArticulatedModel& m_;  // *shared_articulated_: constant, shared by every run
   // This run's scratch, written by const evaluations (derivative, event functions, rows): a

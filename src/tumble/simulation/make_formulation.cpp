@@ -5,6 +5,7 @@
 
 #include "tumble/dynamics/body_frame_formulation.hpp"
 #include "tumble/dynamics/textbook_formulation.hpp"
+#include "tumble/modes/state_jacobian.hpp"
 #include "tumble/multibody/articulated_formulation.hpp"
 
 namespace tumble {
@@ -35,14 +36,21 @@ FormulationModel::FormulationModel(std::string_view name, std::shared_ptr<const 
   has_unit_quaternions_ = !run->unit_quaternion_offsets().empty();
 }
 
+bool FormulationModel::gives_jacobian() const {
+  return kind_ == Kind::Articulated && model_->contacts.empty();
+}
+
 std::unique_ptr<Formulation> FormulationModel::new_run() const {
   switch (kind_) {
     case Kind::BodyFrame:
       return std::make_unique<BodyFrameFormulation>(model_);
     case Kind::Textbook:
       return std::make_unique<TextbookFormulation>(model_);
-    case Kind::Articulated:
-      return std::make_unique<ArticulatedFormulation>(articulated_);
+    case Kind::Articulated: {
+      auto run = std::make_unique<ArticulatedFormulation>(articulated_);
+      run->set_state_jacobian(&calc_state_jacobian);
+      return run;
+    }
   }
   throw std::logic_error("FormulationModel: no such kind");
 }

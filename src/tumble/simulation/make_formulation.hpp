@@ -38,6 +38,9 @@ class FormulationModel {
   bool keeps_work_ledger() const { return keeps_work_ledger_; }
   Eigen::Index dimension() const { return dimension_; }
   bool has_unit_quaternions() const { return has_unit_quaternions_; }
+  // Whether its runs give their Jacobian df/dy (an implicit method's need): the articulated
+  // form's, without contacts (modes/state_jacobian.hpp).
+  bool gives_jacobian() const;
 
  private:
   enum class Kind { BodyFrame, Textbook, Articulated };

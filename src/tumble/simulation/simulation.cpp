@@ -151,6 +151,13 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
           "exact is for free bodies on which no force or torque acts (gravity is allowed); "
           "remove forces, joints and contacts or choose dopri5");
     }
+    if (sim.integrator == "radau5" && !m->formulation.gives_jacobian()) {
+      throw std::invalid_argument(
+          "radau5, the implicit method for stiff systems, needs its equations' Jacobian, which "
+          "tumble takes for bodies on joints, springs, dampers and loads (formulation: body) but "
+          "not yet with contacts; nor for free bodies under gravity alone, which are not stiff "
+          "(choose dop853 for those)");
+    }
     make_run_integrator(*m);  // refuses a control that does not fit, before any run
   } catch (const std::invalid_argument& e) {
     throw ScenarioError(sim.where, "simulate.integrator", e.what());

@@ -44,6 +44,9 @@ class UserEventSystem final : public OdeSystem {
   std::span<const Eigen::Index> unit_quaternion_offsets() const override {
     return formulation_->unit_quaternion_offsets();
   }
+  bool jacobian(double t, const VecX& y, MatX& dfdy) const override {
+    return formulation_->jacobian(t, y, dfdy);
+  }
   void project(double t, VecX& y) const override { formulation_->project(t, y); }
   void tolerance_units(const VecX& y0, VecX& units) const override {
     formulation_->tolerance_units(y0, units);

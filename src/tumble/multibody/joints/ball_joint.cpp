@@ -71,6 +71,17 @@ void BallJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /
   turn_quaternion(y, joint.q, z_q.head<3>());
 }
 
+// The turn to its quaternion; the speeds are the same numbers.
+void BallJoint::add_modal_tangent(const TreeJoint& joint, const VecX& y, double /*sign*/,
+                                  Eigen::Index position_offset, Eigen::Index speed_offset, MatX& E,
+                                  MatX& P) const {
+  if (position_offset >= 0) add_turn_tangent(y, joint.q, position_offset, E, P);
+  if (speed_offset >= 0) {
+    E.block<3, 3>(joint.v, speed_offset).setIdentity();
+    P.block<3, 3>(speed_offset, joint.v).setIdentity();
+  }
+}
+
 template <typename S>
 void BallJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                              JointMotionOf<S>& motion) const {

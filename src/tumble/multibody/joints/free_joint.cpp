@@ -68,6 +68,31 @@ void FreeJoint::displace_modal(const TreeJoint& joint, const VecX& z_q, double /
   turn_quaternion(y, joint.q + 3, z_q.tail<3>());
 }
 
+// Its place and turn as a ball's; its speeds (omega_C, v_C) against the modal (v_G world,
+// omega_C): v_C = R^T v_G with R = R0 (I + [r]x), so dv_C = R0^T dv_G + [v_C]x dr, and back,
+// dv_G = R0 (dv_C - [v_C]x dr).
+void FreeJoint::add_modal_tangent(const TreeJoint& joint, const VecX& y, double /*sign*/,
+                                  Eigen::Index position_offset, Eigen::Index speed_offset, MatX& E,
+                                  MatX& P) const {
+  if (position_offset >= 0) {
+    E.block<3, 3>(joint.q, position_offset).setIdentity();
+    P.block<3, 3>(position_offset, joint.q).setIdentity();
+    add_turn_tangent(y, joint.q + 3, position_offset + 3, E, P);
+  }
+  if (speed_offset < 0) return;
+  E.block<3, 3>(joint.v, speed_offset + 3).setIdentity();
+  P.block<3, 3>(speed_offset + 3, joint.v).setIdentity();
+  const Mat3 R0 = rotation_at(y, joint.q + 3);
+  const Vec3 v_C = y.segment<3>(joint.v + 3);
+  E.block<3, 3>(joint.v + 3, speed_offset) = R0.transpose();
+  P.block<3, 3>(speed_offset, joint.v + 3) = R0;
+  if (position_offset >= 0) {
+    E.block<3, 3>(joint.v + 3, position_offset + 3) = hat(v_C);
+    P.block<3, 4>(speed_offset, joint.q + 3) =
+        -R0 * hat(v_C) * P.block<3, 4>(position_offset + 3, joint.q + 3);
+  }
+}
+
 template <typename S>
 void FreeJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                              JointMotionOf<S>& motion) const {

@@ -35,6 +35,9 @@ class FreeJoint final : public JointKindOf<FreeJoint> {
   bool modal_positions_are_symmetries() const override { return true; }
   bool turns_freely() const override { return true; }
   void displace_modal(const TreeJoint& joint, const VecX& z_q, double sign, VecX& y) const override;
+  void add_modal_tangent(const TreeJoint& joint, const VecX& y, double sign,
+                         Eigen::Index position_offset, Eigen::Index speed_offset, MatX& E,
+                         MatX& P) const override;
   template <typename S>
   void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                     JointMotionOf<S>& motion) const;

@@ -101,6 +101,35 @@ void write_quaternion(const Mat3& R, Eigen::Index o, VecX& y) {
   y.segment<4>(o) << q.w(), q.x(), q.y(), q.z();
 }
 
+void add_turn_tangent(const VecX& y, Eigen::Index o, Eigen::Index z_offset, MatX& E, MatX& P) {
+  const double w = y(o), x = y(o + 1), yy = y(o + 2), z = y(o + 3);
+  // q (x) p = L p, and L^T L = |q|^2 I.
+  Eigen::Matrix4d L;
+  L << w, -x, -yy, -z,  //
+      x, w, -z, yy,     //
+      yy, z, w, -x,     //
+      z, -yy, x, w;
+  E.block<4, 3>(o, z_offset) = 0.5 * L.rightCols<3>();
+  P.block<3, 4>(z_offset, o) = (2.0 / L.col(0).squaredNorm()) * L.transpose().bottomRows<3>();
+}
+
+void JointKind::add_modal_tangent(const TreeJoint& joint, const VecX& /*y*/, double sign,
+                                  Eigen::Index position_offset, Eigen::Index speed_offset, MatX& E,
+                                  MatX& P) const {
+  if (position_offset >= 0) {
+    for (Eigen::Index i = 0; i < joint.nq; ++i) {
+      E(joint.q + i, position_offset + i) = sign;
+      P(position_offset + i, joint.q + i) = sign;
+    }
+  }
+  if (speed_offset >= 0) {
+    for (Eigen::Index i = 0; i < joint.nv; ++i) {
+      E(joint.v + i, speed_offset + i) = sign;
+      P(speed_offset + i, joint.v + i) = sign;
+    }
+  }
+}
+
 void turn_quaternion(VecX& y, Eigen::Index o, const Vec3& angle_B) {
   const double angle = angle_B.norm();
   if (angle == 0.0) return;

@@ -157,6 +157,14 @@ class JointKind {
   // y moved by its modal positions z_q (the configuration a mode shape shows).
   virtual void displace_modal(const TreeJoint& joint, const VecX& z_q, double sign,
                               VecX& y) const = 0;
+  // How its part of the state y moves with its modal coordinates at z = 0, and back: the columns
+  // of dy/dz of its positions (from position_offset in z; -1: none) and speeds (speed_offset)
+  // into E, the rows of dz/dy into P (P E = I; a quaternion's direction off the unit sphere has
+  // no z). The state's Jacobian is E (dz'/dz) P (modes/state_jacobian.hpp). The default: its
+  // coordinates and speeds are numbers, y = y0 + sign z (hinge, slider, cylindrical, Hooke).
+  virtual void add_modal_tangent(const TreeJoint& joint, const VecX& y, double sign,
+                                 Eigen::Index position_offset, Eigen::Index speed_offset, MatX& E,
+                                 MatX& P) const;
 };
 
 // The one place that makes the kinds: each JointType's of the tree (a distance joint has none:
@@ -177,5 +185,8 @@ void write_quaternion_rate(const VecX& y, Eigen::Index o, const Vec3& omega, Vec
 void write_quaternion(const Mat3& R, Eigen::Index o, VecX& y);
 // Turns the unit quaternion at o by the small rotation angle_B (body axes): q (x) exp(angle / 2).
 void turn_quaternion(VecX& y, Eigen::Index o, const Vec3& angle_B);
+// The tangent of that turn at angle 0: dq/dr = q (x) (0, I) / 2 into E's rows o.. and columns
+// z_offset.., and its inverse on the tangent, dr/dq = 2 [0 I] (q^-1 (x) .), into P.
+void add_turn_tangent(const VecX& y, Eigen::Index o, Eigen::Index z_offset, MatX& E, MatX& P);
 
 }  // namespace tumble

@@ -1,0 +1,34 @@
+#include "tumble/modes/state_jacobian.hpp"
+
+#include "tumble/modes/linearisation.hpp"
+#include "tumble/modes/modal_equations.hpp"
+
+namespace tumble {
+
+void calc_modal_tangent(const ArticulatedModel& model, const ModalLayout& layout, const VecX& y,
+                        MatX& E, MatX& P) {
+  E.setZero(y.size(), layout.size());
+  P.setZero(layout.size(), y.size());
+  for (std::size_t k = 0; k < model.tree.size(); ++k) {
+    model.tree[k].kind->add_modal_tangent(model.tree[k], y, layout.sign[k],
+                                          layout.position_offset[k], layout.speed_offset[k], E, P);
+  }
+}
+
+bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, double t,
+                         const VecX& y, MatX& dfdy) {
+  if (!model->model.contacts.empty()) return false;
+  dfdy.setZero();
+  ModalLayout layout = make_modal_layout(*model, t);
+  const Eigen::Index n = layout.size();
+  if (n == 0) return true;  // every joint held or driven: nothing depends on the state
+  MatX E, P;
+  calc_modal_tangent(*model, layout, y, E, P);
+  const ModalEquations equations(model, std::move(layout), y, t);
+  const MatX rates_jacobian =
+      jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.rates<Dual>(z); }, n);
+  dfdy.noalias() = E * rates_jacobian * P;
+  return true;
+}
+
+}  // namespace tumble

@@ -1,0 +1,242 @@
+// Radau IIA of order 5 (integrators/radau5.hpp) against closed-form solutions of stiff and
+// non-stiff linear systems: the steps a stiff system takes are set by its slow motion, not by
+// its fast one; the error follows the tolerance; the continuous extension is as accurate as the
+// steps; a clone and a saved-and-loaded copy go on exactly as the original; no step allocates.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+#include "allocation_counter.hpp"
+#include "tumble/integrators/radau5.hpp"
+#include "tumble/simulation/text_archive.hpp"
+
+namespace tumble {
+namespace {
+
+// y' = A y with its Jacobian A: y(t) = exp(A (t - t0)) y0, from A's eigen-decomposition.
+class Linear : public OdeSystem {
+ public:
+  explicit Linear(MatX a) : a_(std::move(a)) {}
+  Eigen::Index dimension() const override { return a_.rows(); }
+  void derivative(double /*t*/, const VecX& y, VecX& dydt) const override {
+    dydt.noalias() = a_ * y;
+  }
+  bool jacobian(double /*t*/, const VecX& /*y*/, MatX& dfdy) const override {
+    dfdy = a_;
+    return true;
+  }
+  VecX exact(double t, const VecX& y0) const {
+    const Eigen::EigenSolver<MatX> solver(a_);
+    const Eigen::VectorXcd exp_lambda_t = (solver.eigenvalues() * t).array().exp();
+    const Eigen::MatrixXcd& v = solver.eigenvectors();
+    const Eigen::VectorXcd y =
+        v * exp_lambda_t.asDiagonal() * v.inverse() * y0.cast<std::complex<double>>();
+    return y.real();
+  }
+
+ private:
+  MatX a_;
+};
+
+// The same without a Jacobian: an explicit method's system.
+class NoJacobian : public OdeSystem {
+ public:
+  Eigen::Index dimension() const override { return 1; }
+  void derivative(double /*t*/, const VecX& y, VecX& dydt) const override { dydt[0] = -y[0]; }
+};
+
+// Two modes, rates -1 and -1e6 s^-1, coupled in the state's axes: A = P diag(-1, -1e6) P^-1.
+MatX two_rates() {
+  Eigen::Matrix2d p;
+  p << 1.0, 1.0, 1.0, -2.0;
+  const Eigen::Matrix2d d = Eigen::Vector2d(-1.0, -1e6).asDiagonal();
+  return p * d * p.inverse();
+}
+
+// A body of 1 kg on a spring k = 1e9 N/m with a damper c = 1e6 N s/m, as (x, v): overdamped,
+// its modes at -k/c (about -1000 s^-1) and -c/m (about -1e6 s^-1).
+MatX stiff_spring() {
+  MatX a(2, 2);
+  a << 0.0, 1.0, -1e9, -1e6;
+  return a;
+}
+
+// x'' = -x.
+MatX oscillator() {
+  MatX a(2, 2);
+  a << 0.0, 1.0, -1.0, 0.0;
+  return a;
+}
+
+struct Outcome {
+  VecX y;
+  IntegratorStats stats;
+};
+
+Outcome integrate(Radau5& method, OdeSystem& system, const VecX& y0, double t_end) {
+  method.start(system, 0.0, y0, t_end);
+  while (method.t() < t_end) {
+    EXPECT_EQ(method.step(t_end), StepOutcome::Ok);
+  }
+  return {method.y(), method.stats()};
+}
+
+StepControl tolerances(double rtol, double atol) {
+  StepControl control;
+  control.rtol = rtol;
+  control.atol = atol;
+  return control;
+}
+
+TEST(Radau5, AStiffSystemTakesTheStepsOfItsSlowMode) {
+  // An explicit method is stable only for h |lambda| below about 3.3: over 10 s the fast mode
+  // alone would hold it to 3 million steps. Radau IIA is L-stable: its steps follow the slow
+  // mode's accuracy, and the fast mode, gone after a few microseconds, is damped at any step.
+  Linear system(two_rates());
+  const VecX y0 = Eigen::Vector2d(1.0, 0.5);
+  for (const double rtol : {1e-6, 1e-9}) {
+    Radau5 method(tolerances(rtol, rtol * 1e-2));
+    const Outcome run = integrate(method, system, y0, 10.0);
+    const VecX exact = system.exact(10.0, y0);
+    // Decayed to exp(-10) of its start, where atol holds the local error more than rtol does:
+    // the global error of a decaying motion stays within a few of the last steps' tolerance.
+    const double atol = rtol * 1e-2;
+    EXPECT_LT((run.y - exact).cwiseAbs().maxCoeff(),
+              10.0 * (atol + rtol * exact.cwiseAbs().maxCoeff()))
+        << rtol;
+    // A thousandth of what stability alone would hold an explicit method to.
+    EXPECT_LT(run.stats.accepted_steps, 3000) << rtol;
+  }
+}
+
+TEST(Radau5, TheStiffSpringDamperFollowsItsClosedForm) {
+  Linear system(stiff_spring());
+  const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
+  const double t_end = 5e-3;  // five time constants of the slow mode
+  for (const double rtol : {1e-6, 1e-9}) {
+    Radau5 method(tolerances(rtol, 1e-3 * rtol * 1e-3));
+    const Outcome run = integrate(method, system, y0, t_end);
+    const VecX exact = system.exact(t_end, y0);
+    EXPECT_LT(std::abs(run.y[0] - exact[0]), 10.0 * rtol * std::abs(exact[0])) << rtol;
+    EXPECT_LT(std::abs(run.y[1] - exact[1]), 10.0 * rtol * std::abs(exact[1])) << rtol;
+  }
+  // Over a second (a thousand of the slow mode's time constants) an explicit method's stability
+  // along the damper's rate, 1e6 s^-1, would take 300,000 steps at least; this takes a hundredth.
+  Radau5 method(tolerances(1e-9, 1e-15));
+  const Outcome run = integrate(method, system, y0, 1.0);
+  EXPECT_LT(run.stats.accepted_steps, 3000);
+  EXPECT_LT(std::abs(run.y[0]), 1e-12 * y0[0]);  // the mount has settled (exp(-1000))
+}
+
+TEST(Radau5, TheErrorOnANonStiffSystemFollowsTheTolerance) {
+  // Two turns of an oscillator: the error is a small multiple of rtol, and falls with it.
+  Linear system(oscillator());
+  const VecX y0 = Eigen::Vector2d(1.0, 0.0);
+  const double t_end = 4.0 * M_PI;
+  double previous = 1.0;
+  for (const double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    Radau5 method(tolerances(rtol, rtol));
+    const Outcome run = integrate(method, system, y0, t_end);
+    const double error = (run.y - system.exact(t_end, y0)).norm();
+    EXPECT_LT(error, 10.0 * rtol) << rtol;
+    EXPECT_LT(error, previous) << rtol;
+    previous = error;
+  }
+}
+
+TEST(Radau5, TheContinuousExtensionIsAsAccurateAsTheSteps) {
+  Linear system(oscillator());
+  const VecX y0 = Eigen::Vector2d(1.0, 0.0);
+  const double rtol = 1e-8;
+  Radau5 method(tolerances(rtol, rtol));
+  method.start(system, 0.0, y0, 10.0);
+  VecX y(2);
+  double worst = 0.0;
+  while (method.t() < 10.0) {
+    ASSERT_EQ(method.step(10.0), StepOutcome::Ok);
+    for (int k = 0; k <= 10; ++k) {
+      const double t = method.t_previous() + 0.1 * k * (method.t() - method.t_previous());
+      method.dense_output(t, y);
+      worst = std::max(worst, (y - system.exact(t, y0)).norm());
+    }
+  }
+  // The collocation cubic's error is of order h^4, as the error estimate's, which is held to
+  // rtol: between the steps too the error is a small multiple of rtol (radau5.hpp).
+  EXPECT_LT(worst, 10.0 * rtol) << worst;
+  method.dense_output(method.t(), y);
+  EXPECT_EQ(y, method.y());
+}
+
+TEST(Radau5, LandsOnTheStopAndRestartsFromANewState) {
+  Linear system(stiff_spring());
+  const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
+  Radau5 method(tolerances(1e-8, 1e-14));
+  method.start(system, 0.0, y0, 1e-2);
+  while (method.t() < 1e-3) ASSERT_EQ(method.step(1e-3), StepOutcome::Ok);
+  EXPECT_EQ(method.t(), 1e-3);
+  // A blow at 1 ms: the body's speed jumps to 1 m/s.
+  VecX jumped = method.y();
+  jumped[1] = 1.0;
+  method.restart(1e-3, jumped);
+  const long steps_before = method.stats().accepted_steps;
+  while (method.t() < 1e-2) ASSERT_EQ(method.step(1e-2), StepOutcome::Ok);
+  EXPECT_GT(method.stats().accepted_steps, steps_before);
+  const VecX exact = system.exact(1e-2 - 1e-3, jumped);
+  EXPECT_LT(std::abs(method.y()[0] - exact[0]), 1e-7 * std::abs(exact[0]));
+}
+
+TEST(Radau5, ACloneAndASavedCopyGoOnExactlyAsTheOriginal) {
+  Linear system(two_rates());
+  const VecX y0 = Eigen::Vector2d(1.0, 0.5);
+  Radau5 method(tolerances(1e-8, 1e-10));
+  method.start(system, 0.0, y0, 10.0);
+  for (int i = 0; i < 12; ++i) ASSERT_EQ(method.step(10.0), StepOutcome::Ok);
+  std::unique_ptr<Integrator> clone = method.clone_onto(system);
+  TextArchiveWriter writer;
+  method.archive_memory(writer);
+  Radau5 loaded(tolerances(1e-8, 1e-10));
+  loaded.start(system, 0.0, y0, 10.0);
+  TextArchiveReader reader(writer.written(), "saved");
+  loaded.archive_memory(reader);
+  EXPECT_TRUE(reader.at_end());
+  while (method.t() < 10.0) {
+    ASSERT_EQ(method.step(10.0), StepOutcome::Ok);
+    ASSERT_EQ(clone->step(10.0), StepOutcome::Ok);
+    ASSERT_EQ(loaded.step(10.0), StepOutcome::Ok);
+    ASSERT_EQ(clone->t(), method.t());
+    ASSERT_EQ(loaded.t(), method.t());
+    ASSERT_EQ(clone->y(), method.y());
+    ASSERT_EQ(loaded.y(), method.y());
+  }
+}
+
+TEST(Radau5, AStepAllocatesNothing) {
+  Linear system(two_rates());
+  const VecX y0 = Eigen::Vector2d(1.0, 0.5);
+  Radau5 method(tolerances(1e-8, 1e-10));
+  method.start(system, 0.0, y0, 10.0);
+  VecX y(2);
+  test::AllocationCounter counter;
+  for (int i = 0; i < 50 && method.t() < 10.0; ++i) {
+    method.step(10.0);
+    method.dense_output(0.5 * (method.t() + method.t_previous()), y);
+  }
+  method.restart(method.t(), method.y());
+  method.step(10.0);
+  EXPECT_EQ(counter.count(), 0);
+}
+
+TEST(Radau5, RefusesASystemWithoutAJacobian) {
+  NoJacobian system;
+  Radau5 method(tolerances(1e-6, 1e-8));
+  const VecX y0 = VecX::Ones(1);
+  EXPECT_THROW(method.start(system, 0.0, y0, 1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tumble

@@ -1,0 +1,176 @@
+// Stiff systems with the implicit method (`integrator: radau5`): its Jacobian, taken by automatic
+// differentiation of the one physics (modes/state_jacobian.hpp), against the run's own equations;
+// the stiff mount (examples/stiff_mount.yaml) against its closed form in a few hundred steps,
+// where an explicit method's stability asks for thousands (and 150,000 a second); what it does
+// not take yet, refused where the scenario says it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "scenario_run.hpp"
+#include "test_files.hpp"
+#include "tumble/modes/state_jacobian.hpp"
+#include "tumble/multibody/articulated_formulation.hpp"
+#include "tumble/simulation/simulation.hpp"
+
+namespace tumble {
+namespace {
+
+// A box of 1 kg on a rail, held by a mount of k = 1e9 N/m with a damper of c = 1e6 N s/m, let go
+// 1 mm from its rest: overdamped, its modes at about -k/c = -1000 s^-1 and -c/m = -1e6 s^-1.
+constexpr char kMount[] = R"(tumble: 1
+name: a stiff overdamped mount
+parameters: {m: 1, k: 1e9, c: 1e6, x0: 1e-3, v0: 0}
+gravity: [0, 0, 0]
+bodies:
+  box: {shape: box, size: [0.1, 0.1, 0.1], mass: m, position: [x0, 0, 0], velocity: [v0, 0, 0]}
+joints:
+  rail: {type: prismatic, body: box, at: [0, 0, 0], axis: [1, 0, 0]}
+forces:
+  - {type: spring, name: mount, bodies: [ground, box], at: [[-1, 0, 0], [x0, 0, 0]],
+     stiffness: k, rest_length: 1, damping: c}
+simulate: {duration: 1, integrator: radau5, rtol: 1e-8, atol: 1e-12, output_every: 0.01}
+)";
+
+// Two links on hinges, a stiff torsional spring at the knee, swinging.
+constexpr char kDoublePendulum[] = R"(tumble: 1
+name: a double pendulum with a stiff knee
+gravity: [0, 0, -9.81]
+bodies:
+  upper: {shape: box, size: [0.05, 0.05, 1], mass: 2, position: [0.3, 0, -0.45],
+          orientation: {axis: [0, 1, 0], angle: -0.6}, angular_velocity: [0, 1.5, 0]}
+  lower: {shape: box, size: [0.05, 0.05, 1], mass: 1, position: [0.3, 0, -1.45],
+          orientation: {axis: [0, 1, 0], angle: -0.6}, angular_velocity: [0, 1.5, 0]}
+joints:
+  hip: {type: hinge, body: upper, at: [0.3, 0, 0.05], axis: [0, 1, 0]}
+  knee: {type: hinge, bodies: [upper, lower], at: [0.3, 0, -0.95], axis: [0, 1, 0]}
+forces:
+  - {type: torsional_spring, bodies: [upper, lower], stiffness: 1e6, damping: 10}
+simulate: {duration: 0.1, integrator: radau5, rtol: 1e-8, atol: 1e-10}
+)";
+
+// A top on a ball joint, spinning and leaning, on a torsional spring to ground.
+constexpr char kTop[] = R"(tumble: 1
+name: a top on a ball joint
+gravity: [0, 0, -9.81]
+bodies:
+  top: {shape: cylinder, radius: 0.3, length: 0.1, mass: 1, position: [0.1, 0, 0.5],
+        orientation: {axis: [0, 1, 0], angle: 0.2}, angular_velocity: [0.3, -0.2, 40]}
+joints:
+  tip: {type: ball, body: top, at: [0, 0, 0]}
+forces:
+  - {type: torsional_spring, bodies: [ground, top], stiffness: 1e4, damping: 1}
+simulate: {duration: 0.1, integrator: radau5, rtol: 1e-8, atol: 1e-10}
+)";
+
+// A free box hung by a stiff spring from a point above its top, at rest where the spring holds
+// its weight.
+constexpr char kHung[] = R"(tumble: 1
+name: a box hung on a stiff spring
+parameters: {m: 1, g: 9.81, k: 1e6}
+gravity: [0, 0, -g]
+bodies:
+  box: {shape: box, size: [0.2, 0.1, 0.1], mass: m, position: [0, 0, 0]}
+forces:
+  - {type: spring, bodies: [ground, box], at: [[0.05, 0, 1], [0.05, 0, 0.05]], stiffness: k,
+     rest_length: 0.95 - m*g/k, damping: 0}
+simulate: {duration: 0.1, integrator: radau5, rtol: 1e-8, atol: 1e-10}
+)";
+
+// The largest departure, over the modal directions d_i = E e_i, of P J d_i (the Jacobian's
+// motion along d_i, read in the modal coordinates) from P (f(y + eps d_i) - f(y - eps d_i)) /
+// (2 eps), the run's own equations by central differences, against the largest of them.
+double largest_jacobian_departure(const std::string& yaml, const std::string& name) {
+  const Scenario scenario = test::load_inline_scenario(yaml, name);
+  const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
+  std::unique_ptr<Formulation> run = model->formulation.new_run();
+  const VecX& y = model->y0;
+  run->begin(0.0, y);
+  const Eigen::Index n = y.size();
+  MatX J(n, n);
+  EXPECT_TRUE(run->jacobian(0.0, y, J)) << name;
+  const auto& articulated = dynamic_cast<const ArticulatedFormulation&>(*run);
+  const ArticulatedModel& tree = *articulated.shared_articulated_model();
+  const ModalLayout layout = make_modal_layout(tree, 0.0);
+  MatX E, P;
+  calc_modal_tangent(tree, layout, y, E, P);
+  EXPECT_TRUE((P * E - MatX::Identity(layout.size(), layout.size())).isZero(1e-14)) << name;
+  double departure = 0.0, largest = 0.0;
+  VecX f_plus(n), f_minus(n);
+  for (Eigen::Index i = 0; i < layout.size(); ++i) {
+    const VecX d = E.col(i);
+    // Central differences: truncation about eps^2 of the scale, round-off about 1e-16 / eps.
+    const double eps = 1e-6;
+    run->derivative(0.0, y + eps * d, f_plus);
+    run->derivative(0.0, y - eps * d, f_minus);
+    const VecX by_differences = P * (f_plus - f_minus) / (2.0 * eps);
+    const VecX by_jacobian = P * J * d;
+    departure = std::max(departure, (by_differences - by_jacobian).cwiseAbs().maxCoeff());
+    largest = std::max(largest, by_jacobian.cwiseAbs().maxCoeff());
+  }
+  return departure / largest;
+}
+
+TEST(StateJacobian, IsTheRunsOwnAlongEveryModalDirection) {
+  // Wrong by a term (a sign, a coupling, a frame) would be wrong by O(1) of some column; central
+  // differences agree with the exact derivative to about 1e-9 of the largest entry here.
+  EXPECT_LT(largest_jacobian_departure(test::replaced(kMount, "v0: 0", "v0: 0.3"), "mount"), 1e-7);
+  EXPECT_LT(largest_jacobian_departure(kDoublePendulum, "double_pendulum"), 1e-7);
+  EXPECT_LT(largest_jacobian_departure(kTop, "top"), 1e-7);
+  EXPECT_LT(largest_jacobian_departure(kHung, "hung"), 1e-7);
+}
+
+TEST(Radau5Runs, TheStiffMountFollowsItsClosedFormInAFewHundredSteps) {
+  // examples/stiff_mount.yaml: 10 ms, ten of the slow mode's time constants.
+  const test::ScenarioRun run =
+      test::run_scenario(load_scenario(test::example("stiff_mount.yaml"), {}));
+  // x = a e^(r1 t) + b e^(r2 t), r the roots of m r^2 + c r + k = 0, from x0 at rest.
+  const double m = 1.0, k = 1e9, c = 1e6, x0 = 1e-3;
+  const double root = std::sqrt(c * c - 4.0 * k * m);
+  const double r1 = (-c + root) / (2.0 * m), r2 = (-c - root) / (2.0 * m);
+  const double b = -r1 * x0 / (r2 - r1), a = x0 - b;
+  ASSERT_EQ(run.rows.size(), 1001u);
+  double worst = 0.0;
+  for (const test::Row& row : run.rows) {
+    const double exact = a * std::exp(r1 * row.t) + b * std::exp(r2 * row.t);
+    worst = std::max(worst, std::abs(row.states[0].r_G.x() - exact));
+  }
+  // Every row within 1e-8 of the initial stretch: the example's atol, which the error estimate
+  // and with it the rows' continuous extension are held to (rtol 1e-7 of |x| adds less).
+  EXPECT_LT(worst, 1e-8 * x0);
+  // An explicit method's stability along the fast mode (about 3.3 / 1e6 s a step for dopri5, 6 /
+  // 1e6 s for dop853) would take 1,600 steps at least; the slow mode's accuracy takes under 300.
+  EXPECT_LE(run.result.report.stats.accepted_steps, 300);
+}
+
+TEST(Radau5Runs, OverASecondTheStepsAreTheSlowModesOnly) {
+  // A thousand of the slow mode's time constants: 150,000 steps at least by stability alone.
+  const test::ScenarioRun run = test::run_inline_scenario(kMount, "mount");
+  EXPECT_LT(run.result.report.stats.accepted_steps, 1500);
+  EXPECT_LT(std::abs(run.rows.back().states[0].r_G.x()), 1e-9 * 1e-3);  // settled: exp(-1000)
+}
+
+TEST(Radau5Runs, WhatItDoesNotTakeYetIsRefusedAtTheIntegrator) {
+  // Contacts: their modes have no Jacobian yet.
+  const std::string ball = R"(tumble: 1
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}
+contacts:
+  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: 0.5}
+simulate: {duration: 1, integrator: radau5}
+)";
+  test::expect_error(ball, 6, 37, "simulate.integrator", "not yet with contacts");
+  // A free body under gravity alone is not stiff, and its formulation gives no Jacobian.
+  const std::string free = R"(tumble: 1
+bodies:
+  ball: {shape: sphere, radius: 0.1, mass: 1}
+simulate: {duration: 1, integrator: radau5}
+)";
+  test::expect_error(free, 4, 37, "simulate.integrator", "choose dop853");
+}
+
+}  // namespace
+}  // namespace tumble

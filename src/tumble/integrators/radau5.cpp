@@ -5,8 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-
-#include <Eigen/Eigenvalues>
+#include <type_traits>
 
 #include "tumble/integrators/step_size_control.hpp"
 
@@ -62,19 +61,44 @@ Tableau derive_tableau() {
     }
   }
   const Eigen::Matrix3d A_inv = A.inverse();
-  // A^-1 = T Lambda T^-1 with T = [v, Re u, Im u] for a real eigenvector v and a complex one u:
-  // Lambda = [gamma 0 0; 0 alpha -beta; 0 beta alpha] (beta's sign follows u's eigenvalue).
-  const Eigen::EigenSolver<Eigen::Matrix3d> solver(A_inv);
-  int real = 0;
-  for (int k = 1; k < 3; ++k) {
-    if (std::abs(solver.eigenvalues()(k).imag()) < std::abs(solver.eigenvalues()(real).imag())) {
-      real = k;
-    }
+  // A^-1's eigenvalues, from its characteristic polynomial x^3 - c2 x^2 + c1 x - c0 (c2 its
+  // trace, c1 the sum of its principal 2 x 2 minors, c0 its determinant): its one real root gamma
+  // by Newton's method from above (the cubic is convex and rising right of its inflection c2/3,
+  // where gamma lies), and the pair alpha +- i beta the quadratic left over gives
+  // (2 alpha = c2 - gamma, alpha^2 + beta^2 = c0 / gamma).
+  const Eigen::Matrix3d& M = A_inv;
+  const double c2 = M.trace();
+  const double c1 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0) + M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0) +
+                    M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1);
+  const double c0 = M.determinant();
+  double gamma = 1.0 + std::max({std::abs(c2), std::abs(c1), std::abs(c0)});  // above every root
+  for (int i = 0; i < 100; ++i) {
+    const double step =
+        (((gamma - c2) * gamma + c1) * gamma - c0) / ((3.0 * gamma - 2.0 * c2) * gamma + c1);
+    gamma -= step;
+    if (!(std::abs(step) > 4.0 * kEpsilon * gamma)) break;
   }
-  const int complex = real == 0 ? 1 : 0;
-  t.T.col(0) = solver.eigenvectors().col(real).real();
-  t.T.col(1) = solver.eigenvectors().col(complex).real();
-  t.T.col(2) = solver.eigenvectors().col(complex).imag();
+  const double alpha = 0.5 * (c2 - gamma);
+  const std::complex<double> mu(alpha, std::sqrt(c0 / gamma - alpha * alpha));
+  // Each eigenvector spans the null space of M - lambda I (rank 2): the cross product of two of
+  // its rows (the pair whose product is largest), complex rows for the complex pair.
+  const auto null_vector = [](const auto& rows) {
+    using V = Eigen::Matrix<typename std::decay_t<decltype(rows)>::Scalar, 3, 1>;
+    V best = V::Zero();
+    for (int a = 0; a < 3; ++a) {
+      const V candidate = V(rows.row(a).transpose()).cross(V(rows.row((a + 1) % 3).transpose()));
+      if (candidate.norm() > best.norm()) best = candidate;
+    }
+    return best;
+  };
+  const Eigen::Vector3d v = null_vector(Eigen::Matrix3d(M - gamma * Eigen::Matrix3d::Identity()));
+  const Eigen::Vector3cd u = null_vector(
+      Eigen::Matrix3cd(M.cast<std::complex<double>>() - mu * Eigen::Matrix3cd::Identity()));
+  // A^-1 = T Lambda T^-1 with T = [v, Re u, Im u]: Lambda = [gamma 0 0; 0 alpha b; 0 -b alpha],
+  // b = +-beta as u's eigenvalue has it; read from Lambda itself.
+  t.T.col(0) = v;
+  t.T.col(1) = u.real();
+  t.T.col(2) = u.imag();
   t.T_inv = t.T.inverse();
   const Eigen::Matrix3d lambda = t.T_inv * A_inv * t.T;
   t.gamma = lambda(0, 0);

@@ -91,6 +91,30 @@ TEST(SweepReductions, TheRowsDoNotChangeThem) {
   EXPECT_EQ(values[1][5], 1.0);
 }
 
+// A run whose outcomes read no row (no final()) costs its steps, not a row per output_every: with
+// rows asked 0.1 ms apart it makes one at each step's end (and the start), where E_drift is taken,
+// and its values are the closed form's. Reading a row, the same run makes every one.
+TEST(SweepReductions, ARunThatReadsNoRowMakesOneAtEachStepNotOnePerOutputEvery) {
+  SweepSpec spec = spec_for(kFall, {"z0"}, {"low=min(ball.z)", "mean=mean(ball.z)"});
+  spec.fixed = {{"h", "1e-4"}};
+  SweepRunner runner(spec);
+  const double z0 = 7.5, T = 1.0;
+  const RunRecord r = runner.run(std::vector<double>{z0});
+  ASSERT_EQ(r.status, RunStatus::Ok) << r.message;
+  EXPECT_EQ(r.rows, r.steps + 1);
+  EXPECT_LT(r.steps, 100);
+  EXPECT_NEAR(r.values[0], z0 - kG * T * T / 2, 1e-12 * z0);
+  EXPECT_NEAR(r.values[1], z0 - kG * T * T / 6, 1e-12 * z0);
+  EXPECT_LT(r.energy_drift, 1e-12);
+  SweepSpec rows = spec_for(kFall, {"z0"}, {"zf=final(ball.z)"});
+  rows.fixed = {{"h", "1e-4"}};
+  SweepRunner row_runner(rows);
+  const RunRecord every = row_runner.run(std::vector<double>{z0});
+  ASSERT_EQ(every.status, RunStatus::Ok) << every.message;
+  EXPECT_EQ(every.rows, 10001);
+  EXPECT_NEAR(every.values[0], z0 - kG * T * T / 2, 1e-12 * z0);
+}
+
 TEST(SweepReductions, EventsFirstTimeAndCountAgainstTheCratesSlipStop) {
   const std::string text =
       test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/box_slides_to_rest.yaml");

@@ -32,6 +32,9 @@ class RunRecorder {
   bool fits(const ColumnLayout& layout, const Scenario& scenario) const;
   // A new run of it: its parameter values, and nothing accumulated.
   void start(const Scenario& scenario);
+  // Whether an outcome reads the rows (final() of a column): all others read the pieces, the
+  // event states or the events, so a run for them alone need not make a row per output_every.
+  bool reads_rows() const { return reads_rows_; }
   void observe(const OutputRow& row);
   // Whether an outcome reads the run between its rows (all but final() of a column): then each
   // run's pieces (PreparedSimulation::on_piece) go to observe_piece.

@@ -36,8 +36,9 @@ struct RunRecord {
   RunStatus status = RunStatus::Ok;
   std::string message;  // why it failed or is invalid
   long steps = 0;       // accepted steps
+  long rows = 0;        // rows made (not written): one per step where no outcome reads rows
   // max |E - E0| over the larger of |E0| and the largest KE; max ||L| - |L0|| over the largest
-  // |L| (L about the origin): tumble run's summary's drifts.
+  // |L| (L about the origin), over the run's rows: tumble run's summary's drifts.
   double energy_drift = 0.0, momentum_drift = 0.0;
   std::vector<double> values;  // one per outcome; empty unless Ok
 };

@@ -2,7 +2,9 @@
 // reads the scenario from its thread's parsed document, builds the run's model, integrates and
 // records the outcomes) on 1 and 2 threads, and the same 1,000 runs' integration alone (the models
 // built beforehand, rows made and dropped, as tumble run makes them for its CSV): the sweep's cost
-// per run over that is what reading, building and recording add.
+// per run over that is what reading, building and recording add. And a 2,000-run sweep of the
+// prism's flip time, whose rows 0.01 s apart no record reads, against its runs' integration with
+// no rows at all (the issue of studies that pay only for what they record).
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
@@ -22,11 +24,14 @@ namespace tumble {
 namespace {
 
 struct SweepCase {
-  const char* stem;
-  const char* vary;    // NAME=START:STOP:1000
+  const char* stem;    // under examples/
+  const char* vary;    // NAME=START:STOP:COUNT
   const char* record;  // NAME=REDUCTION
   // Text the example's is given in place of some of its own: {written, instead}.
   std::vector<std::pair<std::string, std::string>> edits = {};
+  // Whether the integration alone makes the example's rows (as tumble run does) or none but the
+  // first and last (the steps alone).
+  bool rows_made = true;
 };
 // The prism's size reaches its inertia: each run reads the document and builds its model.
 const SweepCase kPrism{"tumbling_prism", "a=3.9:4.1:1000", "w3=min(prism.w3)"};
@@ -39,6 +44,10 @@ const SweepCase kPrismTilt{
     {{"parameters: {a: 4, b: 1, c: 2}", "parameters: {a: 4, b: 1, c: 2, tilt: 0}"},
      {"angular_velocity: [0, 0.01, 1]", "angular_velocity: [0, tilt, 1]"}}};
 const SweepCase kBackspin{"backspin_disk", "v0=1.5:2.5:1000", "roll=first(floor.rolls)"};
+// The prism's first flip against its tilt, 10^-2 to 10^-8 rad/s (dop853 at rtol 1e-12 to 60 s,
+// rows 0.01 s apart): 6,001 rows a run that no record reads.
+const SweepCase kFlipTime{
+    "sweeps/prism_flip_time", "decades=2:8:2000", "flip=first(prism.w3 < 0)", {}, false};
 
 struct PreparedSweep {
   SweepSpec spec;
@@ -61,7 +70,7 @@ const PreparedSweep& prepared(const SweepCase& c) {
     const VaryRange range = parse_vary(c.vary, true);
     p.spec.varied = {range.name};
     p.spec.outcomes = {parse_record(c.record)};
-    p.points = grid_points(std::vector<VaryRange>{range}, 1000);
+    p.points = grid_points(std::vector<VaryRange>{range}, range.count);
     const ScenarioDocument document = ScenarioDocument::from_text(p.spec.text, p.spec.path);
     for (const std::vector<double>& point : p.points) {
       p.models.push_back(
@@ -88,6 +97,7 @@ void BM_Integration1000(benchmark::State& state, const SweepCase& c) {
   for (auto _ : state) {
     for (const auto& model : p.models) {
       PreparedSimulation run = prepare_run(*model);
+      if (!c.rows_made) run.options.output_every = run.t_end - run.t0;
       const SimulationResult result = run_simulation(run, ignore);
       benchmark::DoNotOptimize(result.rows);
     }
@@ -117,6 +127,14 @@ BENCHMARK_CAPTURE(BM_Integration1000, backspin_disk, kBackspin)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Sweep1000, backspin_disk, kBackspin)
+    ->Arg(1)
+    ->Arg(2)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Integration1000, prism_flip_time_2000, kFlipTime)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sweep1000, prism_flip_time_2000, kFlipTime)
     ->Arg(1)
     ->Arg(2)
     ->UseRealTime()

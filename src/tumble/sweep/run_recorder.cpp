@@ -168,7 +168,18 @@ RunRecorder::RunRecorder(std::span<const Outcome> outcomes, const ColumnLayout& 
     read.push_back(&reduction->value());
     if (reduction->margin()) read.push_back(reduction->margin());
     (reduction->reads_pieces() ? reads_pieces_ : reads_rows_) = true;
-    if (reduction->kind() == ReductionKind::Mean) reads_a_mean_ = true;
+    switch (reduction->kind()) {
+      case ReductionKind::Mean:
+        piece_samples_ = PieceSamples::Need::Mean;
+        break;
+      case ReductionKind::Max:
+      case ReductionKind::Min:
+      case ReductionKind::TimeOfMax:
+        piece_samples_ = std::max(piece_samples_, PieceSamples::Need::Middle);
+        break;
+      default:
+        break;
+    }
   }
   for (const auto& after : after_events_) read.push_back(&after->value);
   row_.read_by(read);
@@ -211,7 +222,7 @@ void RunRecorder::observe_piece(PieceRows& piece) {
   const bool extras = row_.reads_extras(), quantities = row_.reads_quantities();
   const auto load = [&](double t) { row_.take(piece.row_at(t, extras, quantities)); };
   const PieceSamples samples =
-      PieceSamples::on(piece.t_begin(), piece.t_end(), !piece.continues(), reads_a_mean_);
+      PieceSamples::on(piece.t_begin(), piece.t_end(), !piece.continues(), piece_samples_);
   for (int k = samples.fresh_start ? 0 : 1; k < samples.count; ++k) {
     load(samples.t[static_cast<std::size_t>(k)]);
     for (const auto& reduction : reductions_) {

@@ -64,7 +64,8 @@ class RunRecorder {
   ColumnLayout layout_;
   RowVariables row_;  // the columns the reductions read, and the run's parameters
   std::vector<std::unique_ptr<RunReduction>> reductions_;
-  bool reads_rows_ = false, reads_pieces_ = false, reads_a_mean_ = false;
+  bool reads_rows_ = false, reads_pieces_ = false;
+  PieceSamples::Need piece_samples_ = PieceSamples::Need::Ends;
   std::vector<std::unique_ptr<AfterEvent>> after_events_;
   // Per outcome: its expression over its reductions' values, and where each value comes from
   // (an index into row_reductions_, or an event reduction).

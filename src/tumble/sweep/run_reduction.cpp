@@ -31,14 +31,17 @@ bool peaks_between(double x_end, double f_end, double x_next, double f_next, dou
 
 }  // namespace
 
-PieceSamples PieceSamples::on(double a, double b, bool fresh_start, bool for_a_mean) {
+PieceSamples PieceSamples::on(double a, double b, bool fresh_start, Need need) {
   PieceSamples samples;
   samples.fresh_start = fresh_start;
   samples.t.fill(a);
   const double h = b - a;
   if (!(h > 0.0)) {
     samples.count = 1;
-  } else if (for_a_mean) {
+  } else if (need == Need::Ends) {
+    samples.t[1] = b;
+    samples.count = 2;
+  } else if (need == Need::Mean) {
     static const double inner = std::sqrt(21.0) / 14.0;
     samples.t = {a, a + (0.5 - inner) * h, a + 0.5 * h, a + (0.5 + inner) * h, b};
     samples.count = 5;

@@ -1,10 +1,10 @@
 #pragma once
 // One reduction of a run over its columns (final, max, min, mean, time_of_max, and first and
 // count of a condition), gathered as the run goes. All but final() read the run's continuous
-// solution, piece by piece (PieceRows), not its rows: each piece is sampled at its ends and its
-// middle, a maximum beside the highest sample is found on the continuous extension by Brent's
-// method, and a condition's turn between two samples located there to a few ulps of t. A mean
-// takes two more samples, at Gauss-Lobatto's points, and integrates by their five-point rule
+// solution, piece by piece (PieceRows), not its rows: each piece is sampled at its ends (and its
+// middle for a maximum), a maximum beside the highest sample is found on the continuous extension
+// by Brent's method, and a condition's turn between two samples located there to a few ulps of t. A
+// mean takes two more samples, at Gauss-Lobatto's points, and integrates by their five-point rule
 // (exact for a polynomial of degree 7). Their values do not depend on output_every.
 #include <array>
 #include <memory>
@@ -18,17 +18,21 @@
 namespace tumble {
 
 // A piece's samples: at t[0] = its start ... t[count - 1] = its end, what the run's reductions
-// read: its middle between (three), or for a mean Gauss-Lobatto's five points. A piece of no
-// width (the state just after a jump, at its instant) has one.
+// read: the ends alone where only conditions are read (a step's end is the integrator's own state,
+// so no continuous extension is evaluated unless a condition turns inside), its middle too for a
+// maximum or minimum (three), or for a mean Gauss-Lobatto's five points. A piece of no width (the
+// state just after a jump, at its instant) has one.
 struct PieceSamples {
   static constexpr int kNodes = 5;
+  // What the reductions need of each piece, fewest samples first.
+  enum class Need { Ends, Middle, Mean };
   std::array<double, kNodes> t{};
   int count = kNodes;
   // Whether t[0] was sampled for this piece (the run's start, or just after a jump or a change
   // of modes); otherwise t[0] is the last piece's end, which each reduction already has.
   bool fresh_start = true;
-  // The samples on [a, b], the ends exactly: five where a mean reads them.
-  static PieceSamples on(double a, double b, bool fresh_start, bool for_a_mean);
+  // The samples on [a, b], the ends exactly.
+  static PieceSamples on(double a, double b, bool fresh_start, Need need);
 };
 
 class RunReduction {

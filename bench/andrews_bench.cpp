@@ -225,8 +225,9 @@ class MuJoCoAndrews {
     const PreparedSimulation simulation = prepare_simulation(scenario);
     const Model& model = simulation.formulation->model();
     const AndrewsMjcf mjcf(model, initial_states(scenario));
-    model_ = load_mujoco_xml(mjcf.xml(dt, stiff), "andrews_squeezer.xml");
-    data_ = mj_makeData(model_);
+    mujoco_.load(mjcf.xml(dt, stiff), "andrews_squeezer.xml");
+    model_ = mujoco_.model();
+    data_ = mujoco_.data();
     for (const JointModel& joint : model.joints) {
       if (joint.closes_loop) continue;
       const int id = mj_name2id(model_, mjOBJ_JOINT, joint.name.c_str());
@@ -244,12 +245,6 @@ class MuJoCoAndrews {
                           anchor.on_2});
     }
     steps_ = std::lround(kDuration / dt);
-  }
-  MuJoCoAndrews(const MuJoCoAndrews&) = delete;
-  MuJoCoAndrews& operator=(const MuJoCoAndrews&) = delete;
-  ~MuJoCoAndrews() {
-    mj_deleteData(data_);
-    mj_deleteModel(model_);
   }
 
   // From the start to t = 0.03 s; with `loop_max`, the hinges at E's largest gap after each step.
@@ -298,7 +293,8 @@ class MuJoCoAndrews {
     return x + R * p_B;
   }
 
-  mjModel* model_ = nullptr;
+  MuJoCoModel mujoco_;
+  mjModel* model_ = nullptr;  // mujoco_'s
   mjData* data_ = nullptr;
   std::vector<int> hinge_qpos_;
   std::vector<Torque> torques_;
@@ -320,10 +316,6 @@ void BM_AndrewsMuJoCo(benchmark::State& state, double dt, bool stiff) {
   state.counters["steps"] = static_cast<double>(andrews.steps());
 }
 
-struct NamedValue {
-  const char* name;
-  double value;
-};
 [[maybe_unused]] const bool kAndrewsRegistered = [] {
   for (const NamedValue rtol :
        {NamedValue{"1e-6", 1e-6}, {"1e-7", 1e-7}, {"1e-8", 1e-8}, {"1e-10", 1e-10}}) {

@@ -8,6 +8,12 @@
 
 namespace tumble {
 
+// A benchmark's argument with the name it is registered under ("1e-7" for 1e-7).
+struct NamedValue {
+  const char* name;
+  double value;
+};
+
 inline std::string example_path(const char* stem) {
   return std::string(TUMBLE_SOURCE_DIR) + "/examples/" + stem + ".yaml";
 }

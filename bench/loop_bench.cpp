@@ -191,18 +191,13 @@ std::string four_bar_mjcf(double dt, bool stiff) {
 class MuJoCoFourBar {
  public:
   MuJoCoFourBar(double dt, bool stiff) {
-    model_ = load_mujoco_xml(four_bar_mjcf(dt, stiff), "four_bar.xml");
-    data_ = mj_makeData(model_);
+    mujoco_.load(four_bar_mjcf(dt, stiff), "four_bar.xml");
+    model_ = mujoco_.model();
+    data_ = mujoco_.data();
     crank_qpos_ = model_->jnt_qposadr[mj_name2id(model_, mjOBJ_JOINT, "O2")];
     coupler_ = mj_name2id(model_, mjOBJ_BODY, "coupler");
     rocker_ = mj_name2id(model_, mjOBJ_BODY, "rocker");
     steps_ = std::lround(kDuration / dt);
-  }
-  MuJoCoFourBar(const MuJoCoFourBar&) = delete;
-  MuJoCoFourBar& operator=(const MuJoCoFourBar&) = delete;
-  ~MuJoCoFourBar() {
-    mj_deleteData(data_);
-    mj_deleteModel(model_);
   }
 
   // From the start to t = 10 s; with `loop_max`, B's largest gap after each step into it.
@@ -243,7 +238,8 @@ class MuJoCoFourBar {
     return p_W;
   }
 
-  mjModel* model_ = nullptr;
+  MuJoCoModel mujoco_;
+  mjModel* model_ = nullptr;  // mujoco_'s
   mjData* data_ = nullptr;
   int crank_qpos_ = 0;
   int coupler_ = 0;
@@ -271,10 +267,6 @@ void BM_FourBarMuJoCo(benchmark::State& state, double dt, bool stiff) {
 }
 
 // Registered by name here: a BENCHMARK_CAPTURE name cannot hold "1e-6" (clang-format splits it).
-struct NamedValue {
-  const char* name;
-  double value;
-};
 [[maybe_unused]] const bool kFourBarRegistered = [] {
   for (const NamedValue rtol : {NamedValue{"1e-6", 1e-6}, {"1e-8", 1e-8}, {"1e-10", 1e-10}}) {
     benchmark::RegisterBenchmark(fmt::format("BM_FourBarTumble/dop853_rtol_{}", rtol.name).c_str(),

@@ -26,4 +26,28 @@ inline mjModel* load_mujoco_xml(const std::string& xml, const char* name) {
   return model;
 }
 
+// A MuJoCo model and its data, owned together: deleted with it. Not copyable, so neither is a
+// benchmark's class that holds one.
+class MuJoCoModel {
+ public:
+  MuJoCoModel() = default;
+  MuJoCoModel(const MuJoCoModel&) = delete;
+  MuJoCoModel& operator=(const MuJoCoModel&) = delete;
+  ~MuJoCoModel() {
+    if (data_ != nullptr) mj_deleteData(data_);
+    if (model_ != nullptr) mj_deleteModel(model_);
+  }
+  // From MJCF text (load_mujoco_xml), with fresh data.
+  void load(const std::string& xml, const char* name) {
+    model_ = load_mujoco_xml(xml, name);
+    data_ = mj_makeData(model_);
+  }
+  mjModel* model() const { return model_; }
+  mjData* data() const { return data_; }
+
+ private:
+  mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
+};
+
 }  // namespace tumble

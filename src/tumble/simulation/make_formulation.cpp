@@ -10,11 +10,12 @@
 
 namespace tumble {
 
-FormulationModel::FormulationModel(std::string_view name, std::shared_ptr<const Model> model)
+FormulationModel::FormulationModel(std::string_view name, std::shared_ptr<const Model> model,
+                                   bool jacobian_wanted)
     : model_(std::move(model)) {
   const bool gravity_only = model_->bodies_are_free() && model_->loads.empty();
   if (name == "body") {
-    kind_ = gravity_only ? Kind::BodyFrame : Kind::Articulated;
+    kind_ = gravity_only && !jacobian_wanted ? Kind::BodyFrame : Kind::Articulated;
     if (kind_ == Kind::Articulated) articulated_ = std::make_shared<const ArticulatedModel>(model_);
   } else if (name == "textbook") {
     if (!model_->bodies_are_free()) {

@@ -22,8 +22,11 @@ class FormulationModel {
   // "body" or "textbook"; throws std::invalid_argument otherwise. "body" runs free bodies under
   // gravity alone in the body-frame form, and anything with joints, force elements or loads
   // (whose work the rows report) in the articulated form (joint coordinates), whose tree is
-  // built here (std::invalid_argument for joints that close a loop, ...).
-  FormulationModel(std::string_view name, std::shared_ptr<const Model> model);
+  // built here (std::invalid_argument for joints that close a loop, ...). With
+  // `jacobian_wanted` (an implicit method's runs), free bodies too take the articulated form,
+  // whose Jacobian the modal equations give (gives_jacobian).
+  FormulationModel(std::string_view name, std::shared_ptr<const Model> model,
+                   bool jacobian_wanted = false);
 
   // One run's formulation: the model shared, its own scratch and hybrid state. Safe to call from
   // any thread.

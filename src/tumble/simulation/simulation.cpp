@@ -111,6 +111,11 @@ void check_initial_state_finite(const Scenario& scenario, const Model& model,
 
 namespace {
 
+// Whether the method is implicit: its runs need the equations' Jacobian.
+bool integrator_needs_jacobian(std::string_view name) {
+  return name == "radau5";
+}
+
 // The scenario's integrator for one run. Throws std::invalid_argument for a control that does
 // not fit the method.
 std::unique_ptr<Integrator> make_run_integrator(const SimulationModel& model) {
@@ -126,8 +131,8 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
   // model's, which the reader has checked), then the integrator's.
   const auto formulation_model = [&] {
     try {
-      return FormulationModel(sim.formulation,
-                              std::make_shared<const Model>(build_model(scenario)));
+      return FormulationModel(sim.formulation, std::make_shared<const Model>(build_model(scenario)),
+                              integrator_needs_jacobian(sim.integrator));
     } catch (const std::invalid_argument& e) {
       throw ScenarioError(sim.where, "simulate.formulation", e.what());
     }
@@ -151,12 +156,11 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
           "exact is for free bodies on which no force or torque acts (gravity is allowed); "
           "remove forces, joints and contacts or choose dopri5");
     }
-    if (sim.integrator == "radau5" && !m->formulation.gives_jacobian()) {
+    if (integrator_needs_jacobian(sim.integrator) && !m->formulation.gives_jacobian()) {
       throw std::invalid_argument(
           "radau5, the implicit method for stiff systems, needs its equations' Jacobian, which "
-          "tumble takes for bodies on joints, springs, dampers and loads (formulation: body) but "
-          "not yet with contacts; nor for free bodies under gravity alone, which are not stiff "
-          "(choose dop853 for those)");
+          "tumble takes for free bodies and bodies on joints, springs, dampers and loads "
+          "(formulation: body) but not yet with contacts");
     }
     make_run_integrator(*m);  // refuses a control that does not fit, before any run
   } catch (const std::invalid_argument& e) {

@@ -156,9 +156,9 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
   recorder_->start(scenario);
   if (!recorder_->reads_rows()) {
     // No outcome reads a row: the run makes one at each step's end (where the summary's E_drift
-    // and L_drift are taken), not one per output_every, which would cost more than the steps
-    // (6.2 times the integration with rows 1 ms apart). The rows are not kept, so the scenario's
-    // max_rows, a bound on the disk they would fill, does not apply.
+    // and L_drift are taken), not one per output_every, which can cost more than the steps (the
+    // prism's flip-time sweep, rows 0.01 s apart: 6.2 times its integration). The rows are not
+    // kept, so the scenario's max_rows, a bound on the disk they would fill, does not apply.
     simulation.options.output_every = 0.0;
     simulation.options.max_rows = std::numeric_limits<long>::max();
   }

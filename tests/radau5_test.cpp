@@ -160,9 +160,9 @@ TEST(Radau5, OnAStiffSystemTheErrorFallsAsTheFifthPowerOfTheStep) {
   // halves, the method's order 5 (R(-h)^(2/h) - e^-2, R the method's (2, 3) Pade approximant of
   // e^z, falls by 2^4.96, 2^4.98, 2^4.99 over these h). The fast mode, h |lambda| = 5e4 to 4e5,
   // is damped to nothing at every step (L-stability: R(z) ~ 1/z) and leaves the slow one's order.
-  // The errors, 4e-7 down to 1.2e-11, stay well above the round-off each step leaves through
-  // the stiff mode's solve (about eps |h lambda| of the state: at h = 0.025 it is half the error
-  // and the last ratio comes out 2^6.25).
+  // The errors, 3e-7 down to 1e-11, stay well above the round-off each step leaves through the
+  // stiff mode's solve (about eps |h lambda| of the state: taken to t = 1 with h = 0.025, it was
+  // half the error, and the ratio read 2^6.25).
   Linear system(two_rates());
   const VecX y0 = Eigen::Vector2d(1.0, 0.5);
   const double t_end = 2.0;

@@ -70,7 +70,7 @@ const PreparedSweep& prepared(const SweepCase& c) {
     const VaryRange range = parse_vary(c.vary, true);
     p.spec.varied = {range.name};
     p.spec.outcomes = {parse_record(c.record)};
-    p.points = grid_points(std::vector<VaryRange>{range}, range.count);
+    p.points = grid_points(std::vector<VaryRange>{range}, static_cast<std::size_t>(range.count));
     const ScenarioDocument document = ScenarioDocument::from_text(p.spec.text, p.spec.path);
     for (const std::vector<double>& point : p.points) {
       p.models.push_back(
@@ -105,39 +105,30 @@ void BM_Integration1000(benchmark::State& state, const SweepCase& c) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(p.points.size()));
 }
 
-}  // namespace
+// Each case's integration alone, and its sweep on 1 and 2 threads.
+[[maybe_unused]] const bool kSweepsRegistered = [] {
+  struct NamedCase {
+    const char* name;
+    const SweepCase* sweep;
+  };
+  for (const NamedCase c : {NamedCase{"tumbling_prism", &kPrism},
+                            {"tumbling_prism_tilt", &kPrismTilt},
+                            {"backspin_disk", &kBackspin},
+                            {"prism_flip_time_2000", &kFlipTime}}) {
+    benchmark::RegisterBenchmark(fmt::format("BM_Integration1000/{}", c.name).c_str(),
+                                 BM_Integration1000, *c.sweep)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(fmt::format("BM_Sweep1000/{}", c.name).c_str(), BM_Sweep1000,
+                                 *c.sweep)
+        ->Arg(1)
+        ->Arg(2)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}();
 
-BENCHMARK_CAPTURE(BM_Integration1000, tumbling_prism, kPrism)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sweep1000, tumbling_prism, kPrism)
-    ->Arg(1)
-    ->Arg(2)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Integration1000, tumbling_prism_tilt, kPrismTilt)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sweep1000, tumbling_prism_tilt, kPrismTilt)
-    ->Arg(1)
-    ->Arg(2)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Integration1000, backspin_disk, kBackspin)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sweep1000, backspin_disk, kBackspin)
-    ->Arg(1)
-    ->Arg(2)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Integration1000, prism_flip_time_2000, kFlipTime)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sweep1000, prism_flip_time_2000, kFlipTime)
-    ->Arg(1)
-    ->Arg(2)
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
+}  // namespace
 
 }  // namespace tumble

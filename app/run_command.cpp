@@ -13,6 +13,7 @@
 #include "exit_status.hpp"
 #include "output_files.hpp"
 #include "system_summary.hpp"
+#include "tumble/integrators/auto_switching.hpp"
 #include "tumble/output/animation_html.hpp"
 #include "tumble/output/events_csv.hpp"
 #include "tumble/output/trajectory_csv.hpp"
@@ -68,6 +69,43 @@ void print_loop_closure(const Scenario& scenario, const LoopErrors& worst) {
       joints, worst.gap, worst.turn, worst.speed);
 }
 
+// `auto`'s methods: which took how many steps, and each switch with the test that decided it.
+void print_method_switches(const Integrator& integrator) {
+  const auto* automatic = dynamic_cast<const AutoSwitching*>(&integrator);
+  if (automatic == nullptr) return;
+  fmt::print("  methods        dop853 {} steps, radau5 {} steps", automatic->explicit_steps(),
+             automatic->implicit_steps());
+  if (automatic->switch_count() == 0) {
+    if (automatic->stiff_without_jacobian_at() >= 0.0) {
+      fmt::print(
+          "; stiff from t = {:.6g} s (dop853's steps held by its stability), but radau5 needs the "
+          "equations' Jacobian, which tumble does not take with contacts: dop853 went on\n",
+          automatic->stiff_without_jacobian_at());
+    } else {
+      fmt::print(" (no stiffness: dop853 throughout)\n");
+    }
+    return;
+  }
+  fmt::print("\n");
+  for (const MethodSwitch& change : automatic->switches()) {
+    if (change.to_implicit) {
+      fmt::print(
+          "  switch         to radau5 at t = {:.6g} s: stiff ({} of dop853's steps held by its "
+          "stability, |h lambda| > {:g}; the last {:.3g})\n",
+          change.t, AutoSwitching::kStiffSteps, AutoSwitching::kExplicitStabilityEdge,
+          change.h_lambda);
+    } else {
+      fmt::print(
+          "  switch         to dop853 at t = {:.6g} s: no longer stiff ({} of radau5's steps "
+          "within dop853's stability, |h lambda| <= {:g}; the last {:.3g})\n",
+          change.t, AutoSwitching::kStiffSteps, 0.5 * AutoSwitching::kExplicitStabilityEdge,
+          change.h_lambda);
+    }
+  }
+  const long unlisted = automatic->switch_count() - static_cast<long>(automatic->switches().size());
+  if (unlisted > 0) fmt::print("  switch         and {} more\n", unlisted);
+}
+
 void print_summary(const Scenario& scenario, const PreparedSimulation& simulation,
                    const SimulationResult& result, const std::filesystem::path& trajectory,
                    const std::optional<std::filesystem::path>& events,
@@ -89,6 +127,7 @@ void print_summary(const Scenario& scenario, const PreparedSimulation& simulatio
   fmt::print("\n  steps          {} accepted, {} rejected\n", stats.accepted_steps,
              stats.rejected_steps);
   fmt::print("  evaluations    {} of the right-hand side\n", stats.rhs_evaluations);
+  print_method_switches(*simulation.integrator);
   fmt::print("  wall time      {:.3f} ms (integration and output)\n", 1e3 * result.wall_seconds);
   const bool forces_act = energy_changes(scenario);
   const ConservationReport& c = result.conservation;

@@ -5,47 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <complex>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "allocation_counter.hpp"
+#include "linear_system.hpp"
 #include "tumble/integrators/radau5.hpp"
 #include "tumble/simulation/text_archive.hpp"
 
 namespace tumble {
 namespace {
-
-// y' = A y with its Jacobian A: y(t) = exp(A (t - t0)) y0, from A's eigen-decomposition.
-class Linear : public OdeSystem {
- public:
-  explicit Linear(MatX a) : a_(std::move(a)) {}
-  Eigen::Index dimension() const override { return a_.rows(); }
-  void derivative(double /*t*/, const VecX& y, VecX& dydt) const override {
-    dydt.noalias() = a_ * y;
-  }
-  bool jacobian(double /*t*/, const VecX& /*y*/, MatX& dfdy) const override {
-    dfdy = a_;
-    return true;
-  }
-  // exp(A t) y0 for a 2 x 2 A, from its eigenvalues tau +- d (tau = tr(A)/2, d^2 = tau^2 -
-  // det(A), complex where the motion oscillates): with C = (e^((tau+d)t) + e^((tau-d)t))/2 and
-  // S = (e^((tau+d)t) - e^((tau-d)t))/(2d), exp(A t) = (C - tau S) I + S A (each exponential
-  // on its own, so that a fast decay underflows to zero rather than meeting an overflow).
-  VecX exact(double t, const VecX& y0) const {
-    using Complex = std::complex<double>;
-    const double tau = 0.5 * a_.trace();
-    const Complex d = std::sqrt(Complex(tau * tau - a_.determinant()));
-    const Complex plus = std::exp((tau + d) * t), minus = std::exp((tau - d) * t);
-    const double C = std::real(0.5 * (plus + minus));
-    const double S = std::real((plus - minus) / (2.0 * d));
-    return (C - tau * S) * y0 + S * (a_ * y0);
-  }
-
- private:
-  MatX a_;
-};
 
 // The same without a Jacobian: an explicit method's system.
 class NoJacobian : public OdeSystem {
@@ -101,7 +71,7 @@ TEST(Radau5, AStiffSystemTakesTheStepsOfItsSlowMode) {
   // An explicit method is stable only for h |lambda| below about 3.3: over 10 s the fast mode
   // alone would hold it to 3 million steps. Radau IIA is L-stable: its steps follow the slow
   // mode's accuracy, and the fast mode, gone after a few microseconds, is damped at any step.
-  Linear system(two_rates());
+  test::Linear system(two_rates());
   const VecX y0 = Eigen::Vector2d(1.0, 0.5);
   for (const double rtol : {1e-6, 1e-9}) {
     Radau5 method(tolerances(rtol, rtol * 1e-2));
@@ -119,7 +89,7 @@ TEST(Radau5, AStiffSystemTakesTheStepsOfItsSlowMode) {
 }
 
 TEST(Radau5, TheStiffSpringDamperFollowsItsClosedForm) {
-  Linear system(stiff_spring());
+  test::Linear system(stiff_spring());
   const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
   const double t_end = 5e-3;  // five time constants of the slow mode
   for (const double rtol : {1e-6, 1e-9}) {
@@ -139,7 +109,7 @@ TEST(Radau5, TheStiffSpringDamperFollowsItsClosedForm) {
 
 TEST(Radau5, TheErrorOnANonStiffSystemFollowsTheTolerance) {
   // Two turns of an oscillator: the error is a small multiple of rtol, and falls with it.
-  Linear system(oscillator());
+  test::Linear system(oscillator());
   const VecX y0 = Eigen::Vector2d(1.0, 0.0);
   const double t_end = 4.0 * M_PI;
   double previous = 1.0;
@@ -163,7 +133,7 @@ TEST(Radau5, OnAStiffSystemTheErrorFallsAsTheFifthPowerOfTheStep) {
   // The errors, 3e-7 down to 1e-11, stay well above the round-off each step leaves through the
   // stiff mode's solve (about eps |h lambda| of the state: taken to t = 1 with h = 0.025, it was
   // half the error, and the ratio read 2^6.25).
-  Linear system(two_rates());
+  test::Linear system(two_rates());
   const VecX y0 = Eigen::Vector2d(1.0, 0.5);
   const double t_end = 2.0;
   double previous = 0.0;
@@ -184,7 +154,7 @@ TEST(Radau5, OnAStiffSystemTheErrorFallsAsTheFifthPowerOfTheStep) {
 }
 
 TEST(Radau5, TheContinuousExtensionIsAsAccurateAsTheSteps) {
-  Linear system(oscillator());
+  test::Linear system(oscillator());
   const VecX y0 = Eigen::Vector2d(1.0, 0.0);
   const double rtol = 1e-8;
   Radau5 method(tolerances(rtol, rtol));
@@ -207,7 +177,7 @@ TEST(Radau5, TheContinuousExtensionIsAsAccurateAsTheSteps) {
 }
 
 TEST(Radau5, LandsOnTheStopAndRestartsFromANewState) {
-  Linear system(stiff_spring());
+  test::Linear system(stiff_spring());
   const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
   Radau5 method(tolerances(1e-8, 1e-14));
   method.start(system, 0.0, y0, 1e-2);
@@ -225,7 +195,7 @@ TEST(Radau5, LandsOnTheStopAndRestartsFromANewState) {
 }
 
 TEST(Radau5, ACloneAndASavedCopyGoOnExactlyAsTheOriginal) {
-  Linear system(two_rates());
+  test::Linear system(two_rates());
   const VecX y0 = Eigen::Vector2d(1.0, 0.5);
   Radau5 method(tolerances(1e-8, 1e-10));
   method.start(system, 0.0, y0, 10.0);
@@ -250,7 +220,7 @@ TEST(Radau5, ACloneAndASavedCopyGoOnExactlyAsTheOriginal) {
 }
 
 TEST(Radau5, AStepAllocatesNothing) {
-  Linear system(two_rates());
+  test::Linear system(two_rates());
   const VecX y0 = Eigen::Vector2d(1.0, 0.5);
   Radau5 method(tolerances(1e-8, 1e-10));
   method.start(system, 0.0, y0, 10.0);

@@ -381,6 +381,25 @@ StepOutcome Dop853::step(double t_stop) {
   }
 }
 
+double Dop853::last_step_h_lambda() const {
+  if (t_ == t_previous_) return 0.0;
+  // y_stage_ still holds the last stage's argument: nothing writes it between a step's k_12
+  // and the next step.
+  // Each component in the error's own scale, sk_i = atol_i + rtol max(|y_i|, |y_new_i|), as
+  // the step's error is measured: in the state's raw units a stiff spring's position and speed
+  // differ by its frequency, and the Euclidean ratio would see k/m where the motion has sqrt(k/m).
+  const Stages& k = accepted_stages();
+  double slopes = 0.0, across = 0.0;
+  for (Eigen::Index i = 0; i < y_.size(); ++i) {
+    const double sk =
+        atols_[i] + control_.rtol * std::max(std::abs(y_[i]), std::abs(y_previous_[i]));
+    slopes += ((k[12][i] - k[11][i]) / sk) * ((k[12][i] - k[11][i]) / sk);
+    across += ((y_[i] - y_stage_[i]) / sk) * ((y_[i] - y_stage_[i]) / sk);
+  }
+  if (!(across > 0.0)) return 0.0;
+  return std::abs(t_ - t_previous_) * std::sqrt(slopes / across);
+}
+
 void Dop853::prepare_dense_output() const {
   const Stages& k = accepted_stages();
   const double h = t_ - t_previous_;

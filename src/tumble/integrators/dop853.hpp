@@ -56,6 +56,13 @@ class Dop853 final : public Integrator {
   void archive_memory(StateArchive& archive) override;
   StepOutcome step(double t_stop) override;
   void dense_output(double t, VecX& y_out) const override;
+  // Hairer's stiffness estimate (DOP853's, and dopri5's in Hairer-Wanner II, section IV.2): the
+  // last step's two evaluations at its end, k_12 at the last stage's argument and k_13 at the new
+  // state, give |lambda| ~ |k_13 - k_12| / |y_new - Y_12| along their difference, a direction in
+  // which the stages' own error has grown where stability holds the step; here both norms are
+  // taken in the step error's scale (sk_i). Compared with 6.1, the edge of DOP853's stability
+  // region on the negative real axis. 0 right after a start or restart.
+  double last_step_h_lambda() const override;
 
  private:
   static constexpr int kStages = 13;  // k_1..k_12 and k_13 = f(t + h, y_new)

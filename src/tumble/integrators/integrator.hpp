@@ -73,7 +73,15 @@ class Integrator {
   const VecX& y_previous() const { return y_previous_; }
   // The step size the method would try next (for reports and restarts).
   double step_size() const { return h_; }
-  const IntegratorStats& stats() const { return stats_; }
+  // The counts so far (a method made of others, `auto`, adds theirs up).
+  virtual IntegratorStats stats() const { return stats_; }
+
+  // |h| rho: the last accepted step's length times the method's estimate of the largest
+  // |eigenvalue| of df/dy there, or 0 where it has none (no step yet, or a method that makes
+  // none). Against the method's own bound on h |lambda| it says whether stability rather than
+  // accuracy held the step (an explicit method) or would hold an explicit one (an implicit
+  // method): what `auto` switches on (auto_switching.hpp).
+  virtual double last_step_h_lambda() const { return 0.0; }
 
  protected:
   // The memory every method has (t, y and the step before, h, the step bound, the statistics).
@@ -115,7 +123,7 @@ class Integrator {
   mutable IntegratorStats stats_;
 };
 
-// The methods by their scenario names: dopri5, dop853, rk4, rkmk4, radau5. Throws
+// The methods by their scenario names: dopri5, dop853, rk4, rkmk4, radau5, auto. Throws
 // std::invalid_argument for an unknown name or a control that does not fit the method (e.g. rk4
 // without a step).
 std::unique_ptr<Integrator> make_integrator(std::string_view name, const StepControl& control);

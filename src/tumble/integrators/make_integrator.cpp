@@ -2,6 +2,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "tumble/integrators/auto_switching.hpp"
 #include "tumble/integrators/dop853.hpp"
 #include "tumble/integrators/dopri5.hpp"
 #include "tumble/integrators/integrator.hpp"
@@ -17,8 +18,9 @@ std::unique_ptr<Integrator> make_integrator(std::string_view name, const StepCon
   if (name == "rk4") return std::make_unique<Rk4>(control);
   if (name == "rkmk4") return std::make_unique<Rkmk4>(control);
   if (name == "radau5") return std::make_unique<Radau5>(control);
+  if (name == "auto") return std::make_unique<AutoSwitching>(control);
   throw std::invalid_argument("unknown integrator '" + std::string(name) +
-                              "'; valid names: dopri5, dop853, rk4, rkmk4, radau5");
+                              "'; valid names: dopri5, dop853, rk4, rkmk4, radau5, auto");
 }
 
 }  // namespace tumble

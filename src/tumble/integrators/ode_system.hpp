@@ -59,6 +59,8 @@ class OdeSystem {
   // needs a new Jacobian (a method keeps one while its Newton iteration converges fast), never
   // inside a step's stages; it may allocate.
   virtual bool jacobian(double t, const VecX& y, MatX& dfdy) const;
+  // Whether jacobian() gives one at all (what `auto` asks before it would switch to radau5).
+  virtual bool gives_jacobian() const { return false; }
 
   // Put y back onto the manifold and the constraints after every accepted step and after every
   // jump. The default normalises the unit quaternions.

@@ -133,6 +133,37 @@ double extension_weight(int k, double s) {
   return lagrange<4>(nodes, k + 1, s);
 }
 
+// An upper bound on the spectral radius of J: the infinity norm of D^-1 J D after Osborne's
+// balancing sweeps, each making row i's off-diagonal sum equal to column i's (B_ij = J_ij d_j /
+// d_i: row sum r / d_i, column sum c d_i, equal at d_i = sqrt(r / c)). Every induced norm bounds
+// the spectral radius, and balancing brings the bound down to it where units set the entries
+// apart (k/m beside 1 in a spring's Jacobian). `d` is scratch of J's size.
+double balanced_radius_bound(const MatX& J, VecX& d) {
+  constexpr int kSweeps = 5;
+  const Eigen::Index n = J.rows();
+  d.setOnes();
+  for (int sweep = 0; sweep < kSweeps; ++sweep) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double r = 0.0, c = 0.0;
+      for (Eigen::Index j = 0; j < n; ++j) {
+        if (j == i) continue;
+        r += std::abs(J(i, j)) * d(j);
+        c += std::abs(J(j, i)) / d(j);
+      }
+      if (r > 0.0 && c > 0.0 && std::isfinite(r / c)) d(i) = std::sqrt(r / c);
+    }
+  }
+  double bound = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double row = std::abs(J(i, i));
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (j != i) row += std::abs(J(i, j)) * d(j) / d(i);
+    }
+    bound = std::max(bound, row);
+  }
+  return bound;
+}
+
 // The RMS norm of v / sk.
 double rms(const VecX& v, const VecX& sk) {
   return std::sqrt((v.array() / sk.array()).square().sum() / static_cast<double>(v.size()));
@@ -148,6 +179,7 @@ void Radau5::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
   step_control::validate_start(name(), system, t0, y0, t_end);
   const Eigen::Index n = y0.size();
   jacobian_.setZero(n, n);
+  balance_.setOnes(n);
   if (!system.jacobian(t0, y0, jacobian_)) {
     throw std::invalid_argument(
         "radau5: this system gives no Jacobian df/dy, which an implicit method needs");
@@ -183,6 +215,7 @@ void Radau5::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
   system_->derivative(t_, y_, f0_);
   ++stats_.rhs_evaluations;
   ++jacobian_evaluations_;  // the one taken above, at (t0, y0)
+  bound_jacobian_radius();
   jacobian_current_ = true;
   need_jacobian_ = false;
   factored_h_ = 0.0;
@@ -218,9 +251,14 @@ void Radau5::take_jacobian() {
     throw std::logic_error("radau5: the system stopped giving a Jacobian");
   }
   ++jacobian_evaluations_;
+  bound_jacobian_radius();
   jacobian_current_ = true;
   need_jacobian_ = false;
   factored_h_ = 0.0;
+}
+
+void Radau5::bound_jacobian_radius() {
+  jacobian_radius_bound_ = balanced_radius_bound(jacobian_, balance_);
 }
 
 void Radau5::factor(double h) {
@@ -459,6 +497,7 @@ void Radau5::archive_memory(StateArchive& archive) {
   if (archive.loading()) {
     archive.require("jacobian", jacobian.allFinite(), "finite numbers");
     jacobian_ = jacobian.reshaped(jacobian_.rows(), jacobian_.cols());
+    bound_jacobian_radius();
   }
   archive.flag("jacobian_current", jacobian_current_);
   archive.flag("need_jacobian", need_jacobian_);

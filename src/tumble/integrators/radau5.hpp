@@ -47,6 +47,7 @@
 // rhs_evaluations = 3 per Newton iteration + 1 per accepted step (f at the new state, for the
 // next error estimate and Jacobian) + 1 per second filtering + 1 per start and restart.
 #include <array>
+#include <cmath>
 #include <complex>
 
 #include <Eigen/LU>
@@ -77,6 +78,14 @@ class Radau5 final : public Integrator {
   StepOutcome step(double t_stop) override;
   void dense_output(double t, VecX& y_out) const override;
 
+  // The last step's |h| times a bound on the spectral radius of the Jacobian in use: the
+  // infinity norm of D^-1 J D, D the diagonal scaling that balances J's rows against its
+  // columns (Osborne's iteration, a few sweeps), an upper bound for any D and a tight one for the
+  // springs and dampers that make a system stiff. Computed when J is taken, not at every step.
+  double last_step_h_lambda() const override {
+    return std::abs(t_ - t_previous_) * jacobian_radius_bound_;
+  }
+
   // Jacobians taken and the two matrices factored, over the run (for reports and tests).
   long jacobian_evaluations() const { return jacobian_evaluations_; }
   long factorisations() const { return factorisations_; }
@@ -88,6 +97,8 @@ class Radau5 final : public Integrator {
 
   // J at (t_, y_) into jacobian_.
   void take_jacobian();
+  // jacobian_radius_bound_ from jacobian_.
+  void bound_jacobian_radius();
   // Factors (gamma/h I - J) and ((alpha + i beta)/h I - J) for the signed step h.
   void factor(double h);
   // The Newton iteration for the stages of a step h from (t_, y_), from the starting values in
@@ -109,6 +120,8 @@ class Radau5 final : public Integrator {
   bool jacobian_current_ = false;  // taken at (t_, y_)
   bool need_jacobian_ = true;      // to be taken before the next try (else the last one serves)
   double factored_h_ = 0.0;        // the signed step the factorisations are for; 0: none
+  double jacobian_radius_bound_ = 0.0;  // 1/s, >= the spectral radius of jacobian_
+  VecX balance_;                        // the diagonal of D (last_step_h_lambda)
   Eigen::PartialPivLU<MatX> real_lu_;
   Eigen::PartialPivLU<MatXc> complex_lu_;
 

@@ -365,6 +365,10 @@ bool ArticulatedFormulation::jacobian(double /*t*/, const VecX& y, MatX& dfdy) c
          state_jacobian_(shared_articulated_, s_.schedule_time, y, dfdy);
 }
 
+bool ArticulatedFormulation::gives_jacobian() const {
+  return state_jacobian_ != nullptr && shared_articulated_->model.contacts.empty();
+}
+
 void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) const {
   y.setZero();
   for (const TreeJoint& joint : m_.tree) {

@@ -79,6 +79,8 @@ class ArticulatedFormulation final : public Formulation {
   // df/dy at the schedule's mode, from the function set_state_jacobian gave (false without one,
   // or where it has none).
   bool jacobian(double t, const VecX& y, MatX& dfdy) const override;
+  // With a source and without contacts (whose modes it does not differentiate).
+  bool gives_jacobian() const override;
   // The Jacobian's source: automatic differentiation of the one physics
   // (modes/state_jacobian.hpp), which this layer does not depend on; the simulation layer hands
   // it over (FormulationModel::new_run).

@@ -47,6 +47,7 @@ class UserEventSystem final : public OdeSystem {
   bool jacobian(double t, const VecX& y, MatX& dfdy) const override {
     return formulation_->jacobian(t, y, dfdy);
   }
+  bool gives_jacobian() const override { return formulation_->gives_jacobian(); }
   void project(double t, VecX& y) const override { formulation_->project(t, y); }
   void tolerance_units(const VecX& y0, VecX& units) const override {
     formulation_->tolerance_units(y0, units);

@@ -1,0 +1,178 @@
+// `integrator: auto` (integrators/auto_switching.hpp): DOP853 where nothing is stiff, step for
+// step; radau5 where DOP853's stability holds its steps, and back where that has passed, each
+// switch where its test says; the answer against the closed form throughout; a clone and a saved
+// copy going on exactly as the original across a switch; no allocation in a step once radau5
+// has its workspace.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "allocation_counter.hpp"
+#include "linear_system.hpp"
+#include "tumble/integrators/auto_switching.hpp"
+#include "tumble/simulation/text_archive.hpp"
+
+namespace tumble {
+namespace {
+
+// Prothero and Robinson's test equation with a stiffness that fades: y' = lambda(t) (y - cos t)
+// - sin t, lambda(t) = -1e5 e^(-4 t). From y(0) = 1 the solution is cos t whatever lambda is,
+// and a step's error is pulled back onto it at the rate |lambda|: stiff while |lambda| is far
+// above 1/h (t below about 1.5 s for these tolerances), not stiff after. Its Jacobian is
+// lambda(t); `with_jacobian` false hides it, as a system with contacts has none.
+class FadingStiffness : public OdeSystem {
+ public:
+  explicit FadingStiffness(bool with_jacobian = true) : with_jacobian_(with_jacobian) {}
+  Eigen::Index dimension() const override { return 1; }
+  static double lambda(double t) { return -1e5 * std::exp(-4.0 * t); }
+  void derivative(double t, const VecX& y, VecX& dydt) const override {
+    dydt[0] = lambda(t) * (y[0] - std::cos(t)) - std::sin(t);
+  }
+  bool jacobian(double t, const VecX& /*y*/, MatX& dfdy) const override {
+    if (!with_jacobian_) return false;
+    dfdy(0, 0) = lambda(t);
+    return true;
+  }
+  bool gives_jacobian() const override { return with_jacobian_; }
+
+ private:
+  bool with_jacobian_;
+};
+
+StepControl tolerances(double rtol, double atol) {
+  StepControl control;
+  control.rtol = rtol;
+  control.atol = atol;
+  return control;
+}
+
+constexpr double kEnd = 6.0;
+
+TEST(AutoSwitching, TakesRadau5WhereStiffAndDop853BackWhereTheStiffnessHasFaded) {
+  FadingStiffness system;
+  const double rtol = 1e-8;
+  AutoSwitching method(tolerances(rtol, rtol));
+  method.start(system, 0.0, VecX::Ones(1), kEnd);
+  double worst = 0.0;
+  while (method.t() < kEnd) {
+    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+    worst = std::max(worst, std::abs(method.y()[0] - std::cos(method.t())));
+  }
+  ASSERT_EQ(method.switch_count(), 2);
+  const MethodSwitch& to_radau5 = method.switches()[0];
+  const MethodSwitch& to_dop853 = method.switches()[1];
+  EXPECT_TRUE(to_radau5.to_implicit);
+  EXPECT_FALSE(to_dop853.to_implicit);
+  // To radau5 after DOP853's fifteen steps at its stability edge, 6.1 / |lambda| = 6.1e-5 s
+  // each at the start: within a few milliseconds.
+  EXPECT_GT(to_radau5.h_lambda, AutoSwitching::kExplicitStabilityEdge);
+  EXPECT_LT(to_radau5.t, 5e-3);
+  // Back where radau5's steps h hold |h lambda(t)| <= 3.05 (fifteen of them): lambda has faded
+  // by then from 1e5 to a few hundred per second at most, and is well below that at the end.
+  EXPECT_LE(to_dop853.h_lambda, 0.5 * AutoSwitching::kExplicitStabilityEdge);
+  EXPECT_LT(std::abs(FadingStiffness::lambda(to_dop853.t)), 1e3);
+  EXPECT_EQ(method.method_in_use(), "dop853");
+  // The solution is cos t throughout; each step's error is held to rtol (atol = rtol on a
+  // solution of size 1), and the stiff part pulls what it leaves back onto cos t.
+  EXPECT_LT(worst, 10.0 * rtol) << worst;
+  const IntegratorStats stats = method.stats();
+  EXPECT_EQ(stats.accepted_steps, method.explicit_steps() + method.implicit_steps());
+  EXPECT_GT(method.implicit_steps(), 0);
+}
+
+TEST(AutoSwitching, WhereNothingIsStiffItIsDop853StepForStep) {
+  // An undamped spring of 1e9 N/m on 1 kg over 0.1 s (503 periods): fast, but every step is
+  // set by the accuracy of the oscillation, never by stability. At rtol 1e-10 DOP853 ends within
+  // 1e-6 of the amplitude (its phase error over the periods is most of it).
+  MatX spring(2, 2);
+  spring << 0.0, 1.0, -1e9, 0.0;
+  test::Linear system(spring);
+  const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
+  const StepControl control = tolerances(1e-10, 1e-13);
+  AutoSwitching automatic(control);
+  Dop853 dop853(control);
+  automatic.start(system, 0.0, y0, 0.1);
+  dop853.start(system, 0.0, y0, 0.1);
+  while (dop853.t() < 0.1) {
+    ASSERT_EQ(dop853.step(0.1), StepOutcome::Ok);
+    ASSERT_EQ(automatic.step(0.1), StepOutcome::Ok);
+    ASSERT_EQ(automatic.t(), dop853.t());
+    ASSERT_EQ(automatic.y(), dop853.y());
+  }
+  EXPECT_EQ(automatic.switch_count(), 0);
+  EXPECT_EQ(automatic.stats().accepted_steps, dop853.stats().accepted_steps);
+  EXPECT_EQ(automatic.stats().rhs_evaluations, dop853.stats().rhs_evaluations);
+  // Against x0 cos(omega t).
+  EXPECT_LT(std::abs(automatic.y()[0] - system.exact(0.1, y0)[0]), 1e-6 * 1e-3);
+}
+
+TEST(AutoSwitching, WithoutAJacobianItSaysWhereItWasStiffAndGoesOnWithDop853) {
+  FadingStiffness system(false);
+  AutoSwitching automatic(tolerances(1e-8, 1e-8));
+  Dop853 dop853(tolerances(1e-8, 1e-8));
+  automatic.start(system, 0.0, VecX::Ones(1), 1.0);
+  dop853.start(system, 0.0, VecX::Ones(1), 1.0);
+  while (dop853.t() < 1.0) {
+    ASSERT_EQ(dop853.step(1.0), StepOutcome::Ok);
+    ASSERT_EQ(automatic.step(1.0), StepOutcome::Ok);
+    ASSERT_EQ(automatic.y(), dop853.y());
+  }
+  EXPECT_EQ(automatic.switch_count(), 0);
+  EXPECT_GT(automatic.stiff_without_jacobian_at(), 0.0);
+  EXPECT_LT(automatic.stiff_without_jacobian_at(), 5e-3);
+}
+
+TEST(AutoSwitching, ACloneAndASavedCopyGoOnExactlyAsTheOriginalAcrossTheSwitches) {
+  FadingStiffness system;
+  const StepControl control = tolerances(1e-8, 1e-8);
+  AutoSwitching method(control);
+  method.start(system, 0.0, VecX::Ones(1), kEnd);
+  // Into radau5's stretch, a few of its steps along.
+  while (method.switch_count() == 0 || method.implicit_steps() < 5) {
+    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+  }
+  ASSERT_EQ(method.method_in_use(), "radau5");
+  std::unique_ptr<Integrator> clone = method.clone_onto(system);
+  TextArchiveWriter writer;
+  method.archive_memory(writer);
+  AutoSwitching loaded(control);
+  loaded.start(system, 0.0, VecX::Ones(1), kEnd);
+  TextArchiveReader reader(writer.written(), "saved");
+  loaded.archive_memory(reader);
+  EXPECT_TRUE(reader.at_end());
+  while (method.t() < kEnd) {
+    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+    ASSERT_EQ(clone->step(kEnd), StepOutcome::Ok);
+    ASSERT_EQ(loaded.step(kEnd), StepOutcome::Ok);
+    ASSERT_EQ(clone->t(), method.t());
+    ASSERT_EQ(loaded.t(), method.t());
+    ASSERT_EQ(clone->y(), method.y());
+    ASSERT_EQ(loaded.y(), method.y());
+  }
+  ASSERT_EQ(method.switch_count(), 2);
+  EXPECT_EQ(loaded.switch_count(), 2);
+  EXPECT_EQ(loaded.switches()[1].t, method.switches()[1].t);
+  EXPECT_EQ(loaded.stats().rhs_evaluations, method.stats().rhs_evaluations);
+}
+
+TEST(AutoSwitching, NoStepAllocatesOnceRadau5HasItsWorkspace) {
+  // The first switch to radau5 sizes its workspace (once a run); the steps after it, the switch
+  // back, the continuous extension and a restart allocate nothing.
+  FadingStiffness system;
+  AutoSwitching method(tolerances(1e-8, 1e-8));
+  method.start(system, 0.0, VecX::Ones(1), kEnd);
+  while (method.switch_count() == 0) ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+  VecX y(1);
+  test::AllocationCounter counter;
+  while (method.t() < kEnd) {
+    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+    method.dense_output(0.5 * (method.t() + method.t_previous()), y);
+  }
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_EQ(method.switch_count(), 2);
+}
+
+}  // namespace
+}  // namespace tumble

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "test_constants.hpp"
+#include "tumble/integrators/tolerances.hpp"
 
 namespace tumble {
 namespace {
@@ -851,14 +852,27 @@ TEST(ScenarioError, OutputBeyondTheRowBudgetIsRefusedBeforeTheRun) {
                      "simulate.max_rows = 1000000: give output_every"});
 }
 
+TEST(ScenarioWarnings, AnRtolBelowWhatRoundOffAllowsIsRaisedToItWithANote) {
+  // Below 100 eps each step's error estimate is round-off: the steps would shrink without end.
+  // The reader raises it to 100 eps (the methods' floor) and says so at the key; atol, not
+  // given, follows the raised rtol.
+  const Scenario scenario =
+      load_text(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1e-15\n");
+  EXPECT_EQ(scenario.simulate.rtol, tolerances::kMinRtol);
+  EXPECT_EQ(scenario.simulate.atol, tolerances::kMinRtol * tolerances::kAtolPerRtol);
+  ASSERT_EQ(scenario.warnings.size(), 1u);
+  EXPECT_NE(scenario.warnings[0].find(":6:9: simulate.rtol: rtol 1e-15 is below what round-off "
+                                      "allows (100 eps = 2.220446e-14"),
+            std::string::npos)
+      << scenario.warnings[0];
+  EXPECT_NE(scenario.warnings[0].find("raised to 2.220446e-14"), std::string::npos);
+}
+
 TEST(ScenarioError, RtolAndAtolHaveTheIntegratorsRanges) {
   expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1.5\n",
-                    {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1) (e.g. 1e-8), got 1.5"});
+                    {6, 9, "simulate.rtol", "rtol must be in (0, 1) (e.g. 1e-8; below 2.2e-14"});
   expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 0\n",
                     {6, 9, "simulate.rtol", "got 0"});
-  // Below 100 eps the integrators refuse it: so does the reader, at the key, with the same range.
-  expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  rtol: 1e-15\n",
-                    {6, 9, "simulate.rtol", "rtol must be in [2.2e-14, 1)"});
   expect_load_error(kHead + kSphere + "simulate:\n  duration: 1\n  atol: 0\n",
                     {6, 9, "simulate.atol", "atol must be > 0 and finite"});
   expect_load_error(kHead + kSphere + "simulate:\n  duration: 0\n",

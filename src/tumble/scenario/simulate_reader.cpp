@@ -40,7 +40,7 @@ bool non_negative(double x) {
   return x >= 0.0;
 }
 bool valid_rtol(double x) {
-  return tolerances::rtol_valid(x);
+  return tolerances::rtol_asked_valid(x);
 }
 bool valid_atol(double x) {
   return tolerances::atol_valid(x);
@@ -73,8 +73,15 @@ SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_fo
     }
   }
   if (const auto f = map.find("rtol")) {
-    sim.rtol = checked(reader, *f, valid_rtol, tolerances::kRtolRule);
+    sim.rtol = checked(reader, *f, valid_rtol, tolerances::kRtolAskedRule);
     sim.rtol_given = true;
+    if (sim.rtol < tolerances::kMinRtol) {
+      reader.warn(*f, fmt::format("rtol {:g} is below what round-off allows (100 eps = {:.7g}: "
+                                  "below it each step's error estimate is round-off, and the "
+                                  "steps shrink without end); raised to {:.7g}",
+                                  sim.rtol, tolerances::kMinRtol, tolerances::kMinRtol));
+      sim.rtol = tolerances::kMinRtol;
+    }
   }
   if (const auto f = map.find("atol")) {
     sim.atol = checked(reader, *f, valid_atol, tolerances::kAtolRule);

@@ -3,8 +3,14 @@
 // against MuJoCo 2.2.2 (Debian's libmujoco-dev), both against the closed form
 //     x(t) = x0 (r2 e^(r1 t) - r1 e^(r2 t)) / (r2 - r1),   r1, r2 = (-c -+ sqrt(c^2 - 4 m k)) / 2m
 // (r1 = -1001 /s, the slow mode; r2 = -998,999 /s, the stiff one).
-//  - BM_StiffMountTumble/radau5_rtol_<r>: run_simulation of the example with its rtol replaced
-//    (atol = 1e-4 rtol x0, the example's ratio), rows 10 us apart as the example writes them.
+//  - BM_StiffMountTumble/<method>_rtol_<r>: run_simulation of the example by radau5 (its own
+//    method), trbdf2 (order 2, L-stable) or auto (dop853 until its stability holds the steps,
+//    then radau5) with its rtol
+//    replaced (atol = 1e-4 rtol x0, the example's ratio), rows 10 us apart as the example writes
+//    them.
+//  - BM_UndampedStiffSpring/<method>: the same mount without its damper (c = 0: 503 periods of
+//    5.03 kHz in 0.1 s, fast but never stiff) at rtol 1e-10, atol 1e-13 m, by dop853 and by auto,
+//    which must stay dop853 and cost no more; error against x0 cos(omega t) at the rows.
 //  - BM_StiffMountMuJoCo/<integrator>_dt_<dt>: the same body on a slide joint whose stiffness and
 //    damping are the mount's, at a fixed step dt: Euler (semi-implicit, the damping implicit:
 //    MuJoCo's answer to stiff damping) and implicit (implicit in velocity, 2.2's own).
@@ -39,12 +45,10 @@ double exact_stretch(double t) {
   return kStretch * (r2 * std::exp(r1 * t) - r1 * std::exp(r2 * t)) / (r2 - r1);
 }
 
-void BM_StiffMountTumble(benchmark::State& state, double rtol) {
-  Scenario scenario = load_scenario(example_path("stiff_mount"), {});
-  if (scenario.simulate.integrator != "radau5") throw std::runtime_error("not radau5");
-  scenario.simulate.rtol = rtol;
-  scenario.simulate.atol = 1e-4 * rtol * kStretch;
-  PreparedSimulation simulation = prepare_simulation(scenario);
+// Times the whole run of `simulation`, then counts its steps and its largest |x - exact(t)| over
+// the rows, relative to x0.
+template <typename Exact>
+void time_against(benchmark::State& state, PreparedSimulation& simulation, const Exact& exact) {
   const RowObserver ignore = [](double, std::span<const BodyState>, const SystemQuantities&) {};
   SimulationResult result;
   for (auto _ : state) {
@@ -55,10 +59,32 @@ void BM_StiffMountTumble(benchmark::State& state, double rtol) {
   double worst = 0.0;
   run_simulation(simulation,
                  [&](double t, std::span<const BodyState> states, const SystemQuantities&) {
-                   worst = std::max(worst, std::abs(states[0].r_G.x() - exact_stretch(t)));
+                   worst = std::max(worst, std::abs(states[0].r_G.x() - exact(t)));
                  });
   state.counters["error"] = worst / kStretch;
   state.counters["steps"] = static_cast<double>(result.report.stats.accepted_steps);
+}
+
+void BM_StiffMountTumble(benchmark::State& state, const char* method, double rtol) {
+  Scenario scenario = load_scenario(example_path("stiff_mount"), {});
+  if (scenario.simulate.integrator != "radau5") throw std::runtime_error("not radau5");
+  scenario.simulate.integrator = method;
+  scenario.simulate.rtol = rtol;
+  scenario.simulate.atol = 1e-4 * rtol * kStretch;
+  PreparedSimulation simulation = prepare_simulation(scenario);
+  time_against(state, simulation, exact_stretch);
+}
+
+void BM_UndampedStiffSpring(benchmark::State& state, const char* method) {
+  Scenario scenario = load_scenario(example_path("stiff_mount"), {{"c", "0"}});
+  scenario.simulate.integrator = method;
+  scenario.simulate.duration = 0.1;
+  scenario.simulate.rtol = 1e-10;
+  scenario.simulate.atol = 1e-13;
+  PreparedSimulation simulation = prepare_simulation(scenario);
+  simulation.options.output_every = 1e-4;
+  const double omega = std::sqrt(kStiffness / kMass);
+  time_against(state, simulation, [omega](double t) { return kStretch * std::cos(omega * t); });
 }
 
 class MuJoCoMount {
@@ -115,11 +141,18 @@ void BM_StiffMountMuJoCo(benchmark::State& state, const char* integrator, double
 }
 
 [[maybe_unused]] const bool kStiffMountRegistered = [] {
-  for (const NamedValue rtol :
-       {NamedValue{"1e-3", 1e-3}, {"1e-5", 1e-5}, {"1e-7", 1e-7}, {"1e-9", 1e-9}}) {
-    benchmark::RegisterBenchmark(
-        fmt::format("BM_StiffMountTumble/radau5_rtol_{}", rtol.name).c_str(), BM_StiffMountTumble,
-        rtol.value)
+  for (const char* method : {"radau5", "trbdf2", "auto"}) {
+    for (const NamedValue rtol :
+         {NamedValue{"1e-3", 1e-3}, {"1e-5", 1e-5}, {"1e-7", 1e-7}, {"1e-9", 1e-9}}) {
+      benchmark::RegisterBenchmark(
+          fmt::format("BM_StiffMountTumble/{}_rtol_{}", method, rtol.name).c_str(),
+          BM_StiffMountTumble, method, rtol.value)
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  for (const char* method : {"dop853", "auto"}) {
+    benchmark::RegisterBenchmark(fmt::format("BM_UndampedStiffSpring/{}", method).c_str(),
+                                 BM_UndampedStiffSpring, method)
         ->Unit(benchmark::kMillisecond);
   }
   for (const char* integrator : {"Euler", "implicit"}) {

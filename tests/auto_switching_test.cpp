@@ -7,12 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include "allocation_counter.hpp"
 #include "linear_system.hpp"
+#include "method_checks.hpp"
 #include "tumble/integrators/auto_switching.hpp"
-#include "tumble/simulation/text_archive.hpp"
 
 namespace tumble {
 namespace {
@@ -41,19 +40,12 @@ class FadingStiffness : public OdeSystem {
   bool with_jacobian_;
 };
 
-StepControl tolerances(double rtol, double atol) {
-  StepControl control;
-  control.rtol = rtol;
-  control.atol = atol;
-  return control;
-}
-
 constexpr double kEnd = 6.0;
 
 TEST(AutoSwitching, TakesRadau5WhereStiffAndDop853BackWhereTheStiffnessHasFaded) {
   FadingStiffness system;
   const double rtol = 1e-8;
-  AutoSwitching method(tolerances(rtol, rtol));
+  AutoSwitching method(test::tolerances(rtol, rtol));
   method.start(system, 0.0, VecX::Ones(1), kEnd);
   double worst = 0.0;
   while (method.t() < kEnd) {
@@ -90,7 +82,7 @@ TEST(AutoSwitching, WhereNothingIsStiffItIsDop853StepForStep) {
   spring << 0.0, 1.0, -1e9, 0.0;
   test::Linear system(spring);
   const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
-  const StepControl control = tolerances(1e-10, 1e-13);
+  const StepControl control = test::tolerances(1e-10, 1e-13);
   AutoSwitching automatic(control);
   Dop853 dop853(control);
   automatic.start(system, 0.0, y0, 0.1);
@@ -110,8 +102,8 @@ TEST(AutoSwitching, WhereNothingIsStiffItIsDop853StepForStep) {
 
 TEST(AutoSwitching, WithoutAJacobianItSaysWhereItWasStiffAndGoesOnWithDop853) {
   FadingStiffness system(false);
-  AutoSwitching automatic(tolerances(1e-8, 1e-8));
-  Dop853 dop853(tolerances(1e-8, 1e-8));
+  AutoSwitching automatic(test::tolerances(1e-8, 1e-8));
+  Dop853 dop853(test::tolerances(1e-8, 1e-8));
   automatic.start(system, 0.0, VecX::Ones(1), 1.0);
   dop853.start(system, 0.0, VecX::Ones(1), 1.0);
   while (dop853.t() < 1.0) {
@@ -126,31 +118,19 @@ TEST(AutoSwitching, WithoutAJacobianItSaysWhereItWasStiffAndGoesOnWithDop853) {
 
 TEST(AutoSwitching, ACloneAndASavedCopyGoOnExactlyAsTheOriginalAcrossTheSwitches) {
   FadingStiffness system;
-  const StepControl control = tolerances(1e-8, 1e-8);
+  const StepControl control = test::tolerances(1e-8, 1e-8);
+  // How many steps take it into radau5's stretch, a few of its steps along.
+  AutoSwitching scout(control);
+  scout.start(system, 0.0, VecX::Ones(1), kEnd);
+  int steps = 0;
+  for (; scout.switch_count() == 0 || scout.implicit_steps() < 5; ++steps) {
+    ASSERT_EQ(scout.step(kEnd), StepOutcome::Ok);
+  }
+  ASSERT_EQ(scout.method_in_use(), "radau5");
+  // Saved there, the copies go on through the switch back as the original does.
   AutoSwitching method(control);
-  method.start(system, 0.0, VecX::Ones(1), kEnd);
-  // Into radau5's stretch, a few of its steps along.
-  while (method.switch_count() == 0 || method.implicit_steps() < 5) {
-    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
-  }
-  ASSERT_EQ(method.method_in_use(), "radau5");
-  std::unique_ptr<Integrator> clone = method.clone_onto(system);
-  TextArchiveWriter writer;
-  method.archive_memory(writer);
   AutoSwitching loaded(control);
-  loaded.start(system, 0.0, VecX::Ones(1), kEnd);
-  TextArchiveReader reader(writer.written(), "saved");
-  loaded.archive_memory(reader);
-  EXPECT_TRUE(reader.at_end());
-  while (method.t() < kEnd) {
-    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
-    ASSERT_EQ(clone->step(kEnd), StepOutcome::Ok);
-    ASSERT_EQ(loaded.step(kEnd), StepOutcome::Ok);
-    ASSERT_EQ(clone->t(), method.t());
-    ASSERT_EQ(loaded.t(), method.t());
-    ASSERT_EQ(clone->y(), method.y());
-    ASSERT_EQ(loaded.y(), method.y());
-  }
+  test::expect_copies_go_on_as_the_original(method, loaded, system, VecX::Ones(1), kEnd, steps);
   ASSERT_EQ(method.switch_count(), 2);
   EXPECT_EQ(loaded.switch_count(), 2);
   EXPECT_EQ(loaded.switches()[1].t, method.switches()[1].t);
@@ -161,7 +141,7 @@ TEST(AutoSwitching, NoStepAllocatesOnceRadau5HasItsWorkspace) {
   // The first switch to radau5 sizes its workspace (once a run); the steps after it, the switch
   // back, the continuous extension and a restart allocate nothing.
   FadingStiffness system;
-  AutoSwitching method(tolerances(1e-8, 1e-8));
+  AutoSwitching method(test::tolerances(1e-8, 1e-8));
   method.start(system, 0.0, VecX::Ones(1), kEnd);
   while (method.switch_count() == 0) ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
   VecX y(1);

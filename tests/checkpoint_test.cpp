@@ -175,6 +175,7 @@ INSTANTIATE_TEST_SUITE_P(
         // The implicit method's memory: the Jacobian it keeps, its factorisations' step.
         CheckpointCase{"stiff_mount", 0.002, "by radau5, as the mount creeps back"},
         CheckpointCase{"inverted_mast", 5.0, "by radau5's steps on a hinge", "radau5"},
+        CheckpointCase{"stiff_mount", 0.002, "by trbdf2, as the mount creeps back", "trbdf2"},
         // auto's two methods' memories, stopped after its switch to radau5 (at 0.15 ms) and before.
         CheckpointCase{"stiff_mount", 0.002, "by auto, after its switch to radau5", "auto"},
         CheckpointCase{"stiff_mount", 0.00005, "by auto, before its switch", "auto"},

@@ -797,8 +797,9 @@ std::string factory_error(const std::string& name, const StepControl& control) {
 
 TEST(Factory, RejectsUnknownNamesAndBadControlsWithAHelpfulMessage) {
   StepControl control;
-  EXPECT_EQ(factory_error("euler", control),
-            "unknown integrator 'euler'; valid names: dopri5, dop853, rk4, rkmk4, radau5, auto");
+  EXPECT_EQ(
+      factory_error("euler", control),
+      "unknown integrator 'euler'; valid names: dopri5, dop853, rk4, rkmk4, radau5, trbdf2, auto");
   for (const std::string method : {"rk4", "rkmk4"}) {
     EXPECT_NE(factory_error(method, control).find("fixed_step = 0"), std::string::npos) << method;
     control.fixed_step = -0.1;

@@ -39,4 +39,19 @@ class Linear : public OdeSystem {
   MatX a_;
 };
 
+// Two modes, rates -1 and -1e6 s^-1, coupled in the state's axes: A = P diag(-1, -1e6) P^-1.
+inline MatX two_rates() {
+  Eigen::Matrix2d p;
+  p << 1.0, 1.0, 1.0, -2.0;
+  const Eigen::Matrix2d d = Eigen::Vector2d(-1.0, -1e6).asDiagonal();
+  return p * d * p.inverse();
+}
+
+// x'' = -x.
+inline MatX oscillator() {
+  MatX a(2, 2);
+  a << 0.0, 1.0, -1.0, 0.0;
+  return a;
+}
+
 }  // namespace tumble::test

@@ -5,14 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <memory>
 #include <stdexcept>
 #include <string>
 
-#include "allocation_counter.hpp"
 #include "linear_system.hpp"
+#include "method_checks.hpp"
 #include "tumble/integrators/radau5.hpp"
-#include "tumble/simulation/text_archive.hpp"
 
 namespace tumble {
 namespace {
@@ -24,14 +22,6 @@ class NoJacobian : public OdeSystem {
   void derivative(double /*t*/, const VecX& y, VecX& dydt) const override { dydt[0] = -y[0]; }
 };
 
-// Two modes, rates -1 and -1e6 s^-1, coupled in the state's axes: A = P diag(-1, -1e6) P^-1.
-MatX two_rates() {
-  Eigen::Matrix2d p;
-  p << 1.0, 1.0, 1.0, -2.0;
-  const Eigen::Matrix2d d = Eigen::Vector2d(-1.0, -1e6).asDiagonal();
-  return p * d * p.inverse();
-}
-
 // A body of 1 kg on a spring k = 1e9 N/m with a damper c = 1e6 N s/m, as (x, v): overdamped,
 // its modes at -k/c (about -1000 s^-1) and -c/m (about -1e6 s^-1).
 MatX stiff_spring() {
@@ -40,42 +30,15 @@ MatX stiff_spring() {
   return a;
 }
 
-// x'' = -x.
-MatX oscillator() {
-  MatX a(2, 2);
-  a << 0.0, 1.0, -1.0, 0.0;
-  return a;
-}
-
-struct Outcome {
-  VecX y;
-  IntegratorStats stats;
-};
-
-Outcome integrate(Radau5& method, OdeSystem& system, const VecX& y0, double t_end) {
-  method.start(system, 0.0, y0, t_end);
-  while (method.t() < t_end) {
-    EXPECT_EQ(method.step(t_end), StepOutcome::Ok);
-  }
-  return {method.y(), method.stats()};
-}
-
-StepControl tolerances(double rtol, double atol) {
-  StepControl control;
-  control.rtol = rtol;
-  control.atol = atol;
-  return control;
-}
-
 TEST(Radau5, AStiffSystemTakesTheStepsOfItsSlowMode) {
   // An explicit method is stable only for h |lambda| below about 3.3: over 10 s the fast mode
   // alone would hold it to 3 million steps. Radau IIA is L-stable: its steps follow the slow
   // mode's accuracy, and the fast mode, gone after a few microseconds, is damped at any step.
-  test::Linear system(two_rates());
+  test::Linear system(test::two_rates());
   const VecX y0 = Eigen::Vector2d(1.0, 0.5);
   for (const double rtol : {1e-6, 1e-9}) {
-    Radau5 method(tolerances(rtol, rtol * 1e-2));
-    const Outcome run = integrate(method, system, y0, 10.0);
+    Radau5 method(test::tolerances(rtol, rtol * 1e-2));
+    const test::Finish run = test::integrate_to(method, system, y0, 10.0);
     const VecX exact = system.exact(10.0, y0);
     // Decayed to exp(-10) of its start, where atol holds the local error more than rtol does:
     // the global error of a decaying motion stays within a few of the last steps' tolerance.
@@ -93,29 +56,29 @@ TEST(Radau5, TheStiffSpringDamperFollowsItsClosedForm) {
   const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
   const double t_end = 5e-3;  // five time constants of the slow mode
   for (const double rtol : {1e-6, 1e-9}) {
-    Radau5 method(tolerances(rtol, 1e-3 * rtol * 1e-3));
-    const Outcome run = integrate(method, system, y0, t_end);
+    Radau5 method(test::tolerances(rtol, 1e-3 * rtol * 1e-3));
+    const test::Finish run = test::integrate_to(method, system, y0, t_end);
     const VecX exact = system.exact(t_end, y0);
     EXPECT_LT(std::abs(run.y[0] - exact[0]), 10.0 * rtol * std::abs(exact[0])) << rtol;
     EXPECT_LT(std::abs(run.y[1] - exact[1]), 10.0 * rtol * std::abs(exact[1])) << rtol;
   }
   // Over a second (a thousand of the slow mode's time constants) an explicit method's stability
   // along the damper's rate, 1e6 s^-1, would take 300,000 steps at least; this takes a hundredth.
-  Radau5 method(tolerances(1e-9, 1e-15));
-  const Outcome run = integrate(method, system, y0, 1.0);
+  Radau5 method(test::tolerances(1e-9, 1e-15));
+  const test::Finish run = test::integrate_to(method, system, y0, 1.0);
   EXPECT_LT(run.stats.accepted_steps, 3000);
   EXPECT_LT(std::abs(run.y[0]), 1e-12 * y0[0]);  // the mount has settled (exp(-1000))
 }
 
 TEST(Radau5, TheErrorOnANonStiffSystemFollowsTheTolerance) {
   // Two turns of an oscillator: the error is a small multiple of rtol, and falls with it.
-  test::Linear system(oscillator());
+  test::Linear system(test::oscillator());
   const VecX y0 = Eigen::Vector2d(1.0, 0.0);
   const double t_end = 4.0 * M_PI;
   double previous = 1.0;
   for (const double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
-    Radau5 method(tolerances(rtol, rtol));
-    const Outcome run = integrate(method, system, y0, t_end);
+    Radau5 method(test::tolerances(rtol, rtol));
+    const test::Finish run = test::integrate_to(method, system, y0, t_end);
     const double error = (run.y - system.exact(t_end, y0)).norm();
     EXPECT_LT(error, 10.0 * rtol) << rtol;
     EXPECT_LT(error, previous) << rtol;
@@ -133,31 +96,15 @@ TEST(Radau5, OnAStiffSystemTheErrorFallsAsTheFifthPowerOfTheStep) {
   // The errors, 3e-7 down to 1e-11, stay well above the round-off each step leaves through the
   // stiff mode's solve (about eps |h lambda| of the state: taken to t = 1 with h = 0.025, it was
   // half the error, and the ratio read 2^6.25).
-  test::Linear system(two_rates());
-  const VecX y0 = Eigen::Vector2d(1.0, 0.5);
-  const double t_end = 2.0;
-  double previous = 0.0;
-  for (const double h : {0.4, 0.2, 0.1, 0.05}) {
-    StepControl control = tolerances(0.5, 1e3);
-    control.initial_step = h;
-    control.max_step = h;
-    Radau5 method(control);
-    const Outcome run = integrate(method, system, y0, t_end);
-    EXPECT_EQ(run.stats.accepted_steps, std::lround(t_end / h)) << h;
-    EXPECT_EQ(run.stats.rejected_steps, 0) << h;
-    const double error = (run.y - system.exact(t_end, y0)).cwiseAbs().maxCoeff();
-    if (previous > 0.0) {
-      EXPECT_NEAR(std::log2(previous / error), 5.0, 0.1) << h << ": " << error;
-    }
-    previous = error;
-  }
+  test::expect_order_as_the_step_halves<Radau5>(
+      test::Linear(test::two_rates()), Eigen::Vector2d(1.0, 0.5), 2.0, {0.4, 0.2, 0.1, 0.05}, 5.0);
 }
 
 TEST(Radau5, TheContinuousExtensionIsAsAccurateAsTheSteps) {
-  test::Linear system(oscillator());
+  test::Linear system(test::oscillator());
   const VecX y0 = Eigen::Vector2d(1.0, 0.0);
   const double rtol = 1e-8;
-  Radau5 method(tolerances(rtol, rtol));
+  Radau5 method(test::tolerances(rtol, rtol));
   method.start(system, 0.0, y0, 10.0);
   VecX y(2);
   double worst = 0.0;
@@ -179,7 +126,7 @@ TEST(Radau5, TheContinuousExtensionIsAsAccurateAsTheSteps) {
 TEST(Radau5, LandsOnTheStopAndRestartsFromANewState) {
   test::Linear system(stiff_spring());
   const VecX y0 = Eigen::Vector2d(1e-3, 0.0);
-  Radau5 method(tolerances(1e-8, 1e-14));
+  Radau5 method(test::tolerances(1e-8, 1e-14));
   method.start(system, 0.0, y0, 1e-2);
   while (method.t() < 1e-3) ASSERT_EQ(method.step(1e-3), StepOutcome::Ok);
   EXPECT_EQ(method.t(), 1e-3);
@@ -195,49 +142,22 @@ TEST(Radau5, LandsOnTheStopAndRestartsFromANewState) {
 }
 
 TEST(Radau5, ACloneAndASavedCopyGoOnExactlyAsTheOriginal) {
-  test::Linear system(two_rates());
-  const VecX y0 = Eigen::Vector2d(1.0, 0.5);
-  Radau5 method(tolerances(1e-8, 1e-10));
-  method.start(system, 0.0, y0, 10.0);
-  for (int i = 0; i < 12; ++i) ASSERT_EQ(method.step(10.0), StepOutcome::Ok);
-  std::unique_ptr<Integrator> clone = method.clone_onto(system);
-  TextArchiveWriter writer;
-  method.archive_memory(writer);
-  Radau5 loaded(tolerances(1e-8, 1e-10));
-  loaded.start(system, 0.0, y0, 10.0);
-  TextArchiveReader reader(writer.written(), "saved");
-  loaded.archive_memory(reader);
-  EXPECT_TRUE(reader.at_end());
-  while (method.t() < 10.0) {
-    ASSERT_EQ(method.step(10.0), StepOutcome::Ok);
-    ASSERT_EQ(clone->step(10.0), StepOutcome::Ok);
-    ASSERT_EQ(loaded.step(10.0), StepOutcome::Ok);
-    ASSERT_EQ(clone->t(), method.t());
-    ASSERT_EQ(loaded.t(), method.t());
-    ASSERT_EQ(clone->y(), method.y());
-    ASSERT_EQ(loaded.y(), method.y());
-  }
+  test::Linear system(test::two_rates());
+  Radau5 method(test::tolerances(1e-8, 1e-10));
+  Radau5 loaded(test::tolerances(1e-8, 1e-10));
+  test::expect_copies_go_on_as_the_original(method, loaded, system, Eigen::Vector2d(1.0, 0.5), 10.0,
+                                            12);
 }
 
 TEST(Radau5, AStepAllocatesNothing) {
-  test::Linear system(two_rates());
-  const VecX y0 = Eigen::Vector2d(1.0, 0.5);
-  Radau5 method(tolerances(1e-8, 1e-10));
-  method.start(system, 0.0, y0, 10.0);
-  VecX y(2);
-  test::AllocationCounter counter;
-  for (int i = 0; i < 50 && method.t() < 10.0; ++i) {
-    method.step(10.0);
-    method.dense_output(0.5 * (method.t() + method.t_previous()), y);
-  }
-  method.restart(method.t(), method.y());
-  method.step(10.0);
-  EXPECT_EQ(counter.count(), 0);
+  test::Linear system(test::two_rates());
+  Radau5 method(test::tolerances(1e-8, 1e-10));
+  EXPECT_EQ(test::allocations_in_steps(method, system, Eigen::Vector2d(1.0, 0.5), 10.0), 0);
 }
 
 TEST(Radau5, RefusesASystemWithoutAJacobian) {
   NoJacobian system;
-  Radau5 method(tolerances(1e-6, 1e-8));
+  Radau5 method(test::tolerances(1e-6, 1e-8));
   const VecX y0 = VecX::Ones(1);
   EXPECT_THROW(method.start(system, 0.0, y0, 1.0), std::invalid_argument);
 }

@@ -766,7 +766,7 @@ TEST(ScenarioError, AnUnknownIntegratorListsTheIntegrators) {
   expect_load_error(kHead + kSphere + "simulate: {duration: 1, integrator: ode45}\n",
                     {4, 37, "simulate.integrator",
                      "unknown integrator 'ode45' (the integrators are dopri5, dop853, rk4, rkmk4, "
-                     "radau5, auto, exact)"});
+                     "radau5, trbdf2, auto, exact)"});
   expect_load_error(kHead + kSphere + "simulate: {duration: 1, integrator: dopri45}\n",
                     {4, 37, "simulate.integrator", "did you mean 'dopri5'?"});
 }

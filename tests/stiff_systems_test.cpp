@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "prism_reference.hpp"
 #include "scenario_run.hpp"
@@ -187,6 +188,33 @@ TEST(AutoRuns, TheStiffMountIsDop853UntilItsStabilityHoldsTheStepsThenRadau5) {
   EXPECT_GT(dop853.result.report.stats.accepted_steps, 1600);
 }
 
+TEST(TrBdf2Runs, TheStiffMountFollowsItsClosedFormAtEngineeringTolerances) {
+  // examples/stiff_mount.yaml through trbdf2 (order 2, L-stable) at rtol 1e-4 and 1e-6, atol
+  // 1e-4 rtol x0 (the example's ratio): every row within 10 rtol x0 of the closed form (the
+  // steps' errors, each held to the tolerance, add up over a hundred steps or so before the slow
+  // mode's decay damps them), in a tenth (rtol 1e-4: 130 steps) and a third (1e-6: 570; an
+  // order-2 method's steps grow as rtol^(-1/3)) of dop853's, which its stability holds at about
+  // 1,570 whatever the tolerance.
+  for (const auto& [rtol, most_steps] : {std::pair{1e-4, 157L}, std::pair{1e-6, 785L}}) {
+    Scenario scenario = load_scenario(test::example("stiff_mount.yaml"), {});
+    scenario.simulate.integrator = "trbdf2";
+    scenario.simulate.rtol = rtol;
+    scenario.simulate.atol = 1e-4 * rtol * 1e-3;
+    const test::ScenarioRun run = test::run_scenario(scenario);
+    const double m = 1.0, k = 1e9, c = 1e6, x0 = 1e-3;
+    const double root = std::sqrt(c * c - 4.0 * k * m);
+    const double r1 = (-c + root) / (2.0 * m), r2 = (-c - root) / (2.0 * m);
+    const double b = -r1 * x0 / (r2 - r1), a = x0 - b;
+    double worst = 0.0;
+    for (const test::Row& row : run.rows) {
+      const double exact = a * std::exp(r1 * row.t) + b * std::exp(r2 * row.t);
+      worst = std::max(worst, std::abs(row.states[0].r_G.x() - exact));
+    }
+    EXPECT_LT(worst, 10.0 * rtol * x0) << rtol;
+    EXPECT_LT(run.result.report.stats.accepted_steps, most_steps) << rtol;
+  }
+}
+
 TEST(Radau5Runs, OverASecondTheStepsAreTheSlowModesOnly) {
   // A thousand of the slow mode's time constants: 150,000 steps at least by stability alone.
   const test::ScenarioRun run = test::run_inline_scenario(kMount, "mount");
@@ -204,6 +232,8 @@ contacts:
 simulate: {duration: 1, integrator: radau5}
 )";
   test::expect_error(ball, 6, 37, "simulate.integrator", "not yet with contacts");
+  test::expect_error(test::replaced(ball, "integrator: radau5", "integrator: trbdf2"), 6, 37,
+                     "simulate.integrator", "trbdf2, an implicit method for stiff systems");
 }
 
 TEST(Radau5Runs, TheChaptersPrismAgainstItsFortyDigitReference) {

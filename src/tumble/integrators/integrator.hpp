@@ -123,7 +123,7 @@ class Integrator {
   mutable IntegratorStats stats_;
 };
 
-// The methods by their scenario names: dopri5, dop853, rk4, rkmk4, radau5, auto. Throws
+// The methods by their scenario names: dopri5, dop853, rk4, rkmk4, radau5, trbdf2, auto. Throws
 // std::invalid_argument for an unknown name or a control that does not fit the method (e.g. rk4
 // without a step).
 std::unique_ptr<Integrator> make_integrator(std::string_view name, const StepControl& control);

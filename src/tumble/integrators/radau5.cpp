@@ -20,12 +20,9 @@ constexpr int kMostIterations = 7;
 // kept for the next step (RADAU5's 0.001).
 constexpr double kDiverging = 0.99;
 constexpr double kKeepJacobian = 0.001;
-// Bounds on h_new / h, and the growth below which a step keeps its size (and factorisations).
+// Bounds on h_new / h; the step-size safety factor.
 constexpr double kMostGrowth = 8.0, kMostShrink = 5.0;
-constexpr double kKeepSizeBelow = 1.2;
 constexpr double kSafety = 0.9;
-// A step within 10 % of the stop is stretched onto it, as the explicit methods do.
-constexpr double kLandingStretch = 1.1;
 
 // Radau IIA's coefficients, derived from their definitions (the class comment).
 struct Tableau {
@@ -164,34 +161,19 @@ double balanced_radius_bound(const MatX& J, VecX& d) {
   return bound;
 }
 
-// The RMS norm of v / sk.
-double rms(const VecX& v, const VecX& sk) {
-  return std::sqrt((v.array() / sk.array()).square().sum() / static_cast<double>(v.size()));
-}
-
 }  // namespace
 
-Radau5::Radau5(const StepControl& control) : control_(control) {
-  step_control::validate_adaptive(name(), control_);
-}
+Radau5::Radau5(const StepControl& control) : ImplicitMethod("radau5", control) {}
 
 void Radau5::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
-  step_control::validate_start(name(), system, t0, y0, t_end);
+  start_implicit(system, t0, y0, t_end);
   const Eigen::Index n = y0.size();
-  jacobian_.setZero(n, n);
-  balance_.setOnes(n);
-  if (!system.jacobian(t0, y0, jacobian_)) {
-    throw std::invalid_argument(
-        "radau5: this system gives no Jacobian df/dy, which an implicit method needs");
-  }
-  system_ = &system;
   for (int k = 0; k < 3; ++k) {
     z_[k].setZero(n);
     w_[k].setZero(n);
     f_[k].setZero(n);
     extension_[k].setZero(n);
   }
-  f0_.setZero(n);
   stage_y_.setZero(n);
   residual_.setZero(n);
   delta_.setZero(n);
@@ -200,64 +182,21 @@ void Radau5::start(OdeSystem& system, double t0, const VecX& y0, double t_end) {
   complex_delta_.setZero(n);
   real_lu_ = Eigen::PartialPivLU<MatX>(n);
   complex_lu_ = Eigen::PartialPivLU<MatXc>(n);
-  direction_ = t_end > t0 ? 1.0 : -1.0;
-  const double span = std::abs(t_end - t0);
-  h_max_ = control_.max_step > 0.0 ? control_.max_step : span;
-  stats_ = IntegratorStats{};
-  jacobian_evaluations_ = factorisations_ = 0;
-
-  // The estimate is held to the tolerances asked (the class comment).
-  step_control::absolute_tolerances(system, y0, control_.atol, atol_);
-
-  t_ = t_previous_ = t0;
-  y_ = y0;
-  y_previous_ = y0;
-  system_->derivative(t_, y_, f0_);
-  ++stats_.rhs_evaluations;
-  ++jacobian_evaluations_;  // the one taken above, at (t0, y0)
-  bound_jacobian_radius();
-  jacobian_current_ = true;
-  need_jacobian_ = false;
-  factored_h_ = 0.0;
   have_extension_ = false;
   first_step_ = true;
-  faccon_ = theta_ = 1.0;
+  theta_ = 1.0;
   h_accepted_ = err_accepted_ = 0.0;
-  // The explicit methods' first step from the slope: on a stiff system it is short, and the
-  // controller lengthens it eight-fold a step.
-  h_ = control_.initial_step > 0.0
-           ? std::min(control_.initial_step, h_max_)
-           : step_control::ode45_initial_step(y_, f0_, control_.rtol, atol_, h_max_, span, t0);
 }
 
 void Radau5::restart(double t, const VecX& y) {
-  if (system_ == nullptr) throw std::logic_error("radau5: restart() before start()");
-  if (y.size() != y_.size()) throw std::invalid_argument("radau5: restart() with a wrong-size y");
-  t_ = t_previous_ = t;
-  y_ = y;
-  y_previous_ = y;
-  system_->derivative(t_, y_, f0_);
-  ++stats_.rhs_evaluations;
-  // The state jumped: the Jacobian and the last step's polynomial belong to what came before.
-  jacobian_current_ = false;
-  need_jacobian_ = true;
+  restart_implicit(t, y);
+  // The last step's polynomial belongs to what came before the jump.
   have_extension_ = false;
   first_step_ = true;
-  faccon_ = 1.0;
 }
 
-void Radau5::take_jacobian() {
-  if (!system_->jacobian(t_, y_, jacobian_)) {
-    throw std::logic_error("radau5: the system stopped giving a Jacobian");
-  }
-  ++jacobian_evaluations_;
-  bound_jacobian_radius();
-  jacobian_current_ = true;
-  need_jacobian_ = false;
-  factored_h_ = 0.0;
-}
-
-void Radau5::bound_jacobian_radius() {
+void Radau5::on_new_jacobian() {
+  if (balance_.size() != jacobian_.rows()) balance_.resize(jacobian_.rows());
   jacobian_radius_bound_ = balanced_radius_bound(jacobian_, balance_);
 }
 
@@ -293,9 +232,7 @@ Radau5::Newton Radau5::solve_stages(double h, double& shrink, int& iterations) {
     w_[k] = t.T_inv(k, 0) * z_[0] + t.T_inv(k, 1) * z_[1] + t.T_inv(k, 2) * z_[2];
   }
   scale_ = atol_.array() + control_.rtol * y_.array().abs();
-  // Newton stops once its predicted remaining error is this small against the tolerance.
-  const double enough =
-      std::max(10.0 * kEpsilon / control_.rtol, std::min(0.03, std::sqrt(control_.rtol)));
+  const double enough = newton_enough();
   faccon_ = std::pow(std::max(faccon_, kEpsilon), 0.8);
   // A Newton iteration that is done at its first correction has no rate: it keeps the Jacobian.
   theta_ = kKeepJacobian;
@@ -487,28 +424,11 @@ void Radau5::dense_output(double t, VecX& y_out) const {
 // Everything the next step depends on: the Jacobian it may keep, the factorisations' step (they
 // are made again from it), the last step's polynomial, Newton's and the controller's memory.
 void Radau5::archive_memory(StateArchive& archive) {
-  archive_common(archive);
-  archive_direction(archive, direction_);
-  archive.number("h_max", h_max_);
-  archive.require("h_max", h_max_ > 0.0, "the largest step, > 0");
-  archive_sized(archive, "atol", atol_);
-  VecX jacobian = jacobian_.reshaped();
-  archive_sized(archive, "jacobian", jacobian);
-  if (archive.loading()) {
-    archive.require("jacobian", jacobian.allFinite(), "finite numbers");
-    jacobian_ = jacobian.reshaped(jacobian_.rows(), jacobian_.cols());
-    bound_jacobian_radius();
-  }
-  archive.flag("jacobian_current", jacobian_current_);
-  archive.flag("need_jacobian", need_jacobian_);
-  archive.number("factored_h", factored_h_);
-  archive.require("factored_h", std::isfinite(factored_h_), "a finite step");
-  archive_sized(archive, "f0", f0_);
+  archive_implicit(archive);
   for (int k = 0; k < 3; ++k)
     archive_sized(archive, "extension" + std::to_string(k), extension_[k]);
   archive.flag("have_extension", have_extension_);
-  archive.number("faccon", faccon_);
-  archive.require("faccon", std::isfinite(faccon_) && faccon_ >= 0.0, "a factor, not negative");
+  archive_newton_factor(archive);
   archive.number("theta", theta_);
   archive.number("h_accepted", h_accepted_);
   archive.number("err_accepted", err_accepted_);

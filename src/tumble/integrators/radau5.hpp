@@ -52,11 +52,11 @@
 
 #include <Eigen/LU>
 
-#include "tumble/integrators/integrator.hpp"
+#include "tumble/integrators/implicit_method.hpp"
 
 namespace tumble {
 
-class Radau5 final : public Integrator {
+class Radau5 final : public ImplicitMethod {
  public:
   // Throws std::invalid_argument for tolerances or step bounds that make no sense;
   // StepControl::fixed_step is ignored. The largest step is the whole span unless max_step.
@@ -86,19 +86,13 @@ class Radau5 final : public Integrator {
     return std::abs(t_ - t_previous_) * jacobian_radius_bound_;
   }
 
-  // Jacobians taken and the two matrices factored, over the run (for reports and tests).
-  long jacobian_evaluations() const { return jacobian_evaluations_; }
-  long factorisations() const { return factorisations_; }
-
  private:
   using VecXc = Eigen::VectorXcd;
   using MatXc = Eigen::MatrixXcd;
   enum class Newton { Converged, Failed };
 
-  // J at (t_, y_) into jacobian_.
-  void take_jacobian();
   // jacobian_radius_bound_ from jacobian_.
-  void bound_jacobian_radius();
+  void on_new_jacobian() override;
   // Factors (gamma/h I - J) and ((alpha + i beta)/h I - J) for the signed step h.
   void factor(double h);
   // The Newton iteration for the stages of a step h from (t_, y_), from the starting values in
@@ -110,22 +104,11 @@ class Radau5 final : public Integrator {
   // The stages' starting values for a step h: the last step's polynomial extrapolated, or zero.
   void start_stages(double h);
 
-  StepControl control_;
-  OdeSystem* system_ = nullptr;
-  double direction_ = 1.0;  // +1 forward in time, -1 backward
-  double h_max_ = 0.0;      // s, bound on |h|
-  VecX atol_;               // the absolute tolerance per component
-
-  MatX jacobian_;                  // df/dy at the state it was taken at
-  bool jacobian_current_ = false;  // taken at (t_, y_)
-  bool need_jacobian_ = true;      // to be taken before the next try (else the last one serves)
-  double factored_h_ = 0.0;        // the signed step the factorisations are for; 0: none
   double jacobian_radius_bound_ = 0.0;  // 1/s, >= the spectral radius of jacobian_
   VecX balance_;                        // the diagonal of D (last_step_h_lambda)
   Eigen::PartialPivLU<MatX> real_lu_;
   Eigen::PartialPivLU<MatXc> complex_lu_;
 
-  VecX f0_;                        // f(t_, y_)
   std::array<VecX, 3> z_;          // the stages' increments of the step being tried
   std::array<VecX, 3> w_;          // the same in the transformed coordinates
   std::array<VecX, 3> f_;          // f at the stages
@@ -133,13 +116,10 @@ class Radau5 final : public Integrator {
   bool have_extension_ = false;    // a step accepted since the start or the last restart
   VecX stage_y_, residual_, delta_, scale_;
   VecXc complex_rhs_, complex_delta_;
-  double faccon_ = 1.0;      // Newton's predicted error factor, theta / (1 - theta)
   double theta_ = 1.0;       // the last Newton contraction rate
   double h_accepted_ = 0.0;  // Gustafsson's memory: the last accepted step's size and error
   double err_accepted_ = 0.0;
   bool first_step_ = true;  // no step accepted since the start or the last restart
-  long jacobian_evaluations_ = 0;
-  long factorisations_ = 0;
 };
 
 }  // namespace tumble

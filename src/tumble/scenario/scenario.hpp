@@ -174,7 +174,7 @@ struct ContactSpec {
 
 struct SimulateSpec {
   double duration = 0.0;              // s, > 0, required
-  std::string integrator = "dopri5";  // dopri5 | dop853 | radau5 | auto | rk4 | rkmk4 | exact
+  std::string integrator = "dopri5";  // ode45's; the others: simulate_reader.cpp, kIntegrators
   std::string formulation = "body";   // body (production) | textbook (the chapter's [R; omega])
   double rtol = tolerances::kDefaultRtol;  // integrators/tolerances.hpp: the valid range
   double atol = tolerances::kDefaultAtol;

@@ -10,7 +10,7 @@ namespace tumble::scenario_reading {
 namespace {
 
 const std::vector<std::string> kIntegrators = {"dopri5", "dop853", "rk4",  "rkmk4",
-                                               "radau5", "auto",   "exact"};
+                                               "radau5", "trbdf2", "auto", "exact"};
 const std::vector<std::string> kFormulations = {"body", "textbook"};
 
 std::string read_choice(const Reader& reader, const Field& field,

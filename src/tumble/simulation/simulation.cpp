@@ -113,7 +113,7 @@ namespace {
 
 // Whether the method is implicit: its runs need the equations' Jacobian.
 bool integrator_needs_jacobian(std::string_view name) {
-  return name == "radau5";
+  return name == "radau5" || name == "trbdf2";
 }
 
 // The scenario's integrator for one run. Throws std::invalid_argument for a control that does
@@ -158,9 +158,10 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
     }
     if (integrator_needs_jacobian(sim.integrator) && !m->formulation.gives_jacobian()) {
       throw std::invalid_argument(
-          "radau5, the implicit method for stiff systems, needs its equations' Jacobian, which "
-          "tumble takes for free bodies and bodies on joints, springs, dampers and loads "
-          "(formulation: body) but not yet with contacts");
+          sim.integrator +
+          ", an implicit method for stiff systems, needs its equations' Jacobian, which tumble "
+          "takes for free bodies and bodies on joints, springs, dampers and loads (formulation: "
+          "body) but not yet with contacts");
     }
     make_run_integrator(*m);  // refuses a control that does not fit, before any run
   } catch (const std::invalid_argument& e) {

@@ -7,11 +7,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <string>
 
 #include "allocation_counter.hpp"
 #include "linear_system.hpp"
 #include "method_checks.hpp"
 #include "tumble/integrators/auto_switching.hpp"
+#include "tumble/simulation/text_archive.hpp"
 
 namespace tumble {
 namespace {
@@ -135,6 +138,35 @@ TEST(AutoSwitching, ACloneAndASavedCopyGoOnExactlyAsTheOriginalAcrossTheSwitches
   EXPECT_EQ(loaded.switch_count(), 2);
   EXPECT_EQ(loaded.switches()[1].t, method.switches()[1].t);
   EXPECT_EQ(loaded.stats().rhs_evaluations, method.stats().rhs_evaluations);
+}
+
+TEST(AutoSwitching, ASavedStateThatWouldSwitchWithoutAJacobianIsRefused) {
+  // A crafted state (its fields changed by hand) that arms a switch to radau5, or says radau5 has
+  // started, on a system that gives no Jacobian: refused at the field, not taken into a step that
+  // could not start radau5.
+  FadingStiffness system(false);
+  const StepControl control = test::tolerances(1e-8, 1e-8);
+  AutoSwitching method(control);
+  method.start(system, 0.0, VecX::Ones(1), 1.0);
+  for (int i = 0; i < 3; ++i) ASSERT_EQ(method.step(1.0), StepOutcome::Ok);
+  TextArchiveWriter writer;
+  method.archive_memory(writer);
+  for (const std::string field : {"switch_armed", "implicit_started"}) {
+    std::string text = writer.written();
+    const std::size_t at = text.find(field + " 0\n");
+    ASSERT_NE(at, std::string::npos) << field;
+    text.replace(at, field.size() + 2, field + " 1");
+    AutoSwitching loaded(control);
+    loaded.start(system, 0.0, VecX::Ones(1), 1.0);
+    TextArchiveReader reader(text, "crafted");
+    try {
+      loaded.archive_memory(reader);
+      ADD_FAILURE() << field << " 1 was taken";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("no Jacobian"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(AutoSwitching, NoStepAllocatesOnceRadau5HasItsWorkspace) {

@@ -136,6 +136,8 @@ void AutoSwitching::archive_memory(StateArchive& archive) {
   archive.require("implicit_active", implicit_started_ || !implicit_active_,
                   "0 unless radau5 has started");
   archive.flag("switch_armed", switch_armed_);
+  archive.require("switch_armed", !switch_armed_ || implicit_active_ || implicit_available_,
+                  "0: this run's system gives no Jacobian for radau5 to switch to");
   archive.integer("stiff_steps", stiff_steps_);
   archive.require("stiff_steps", stiff_steps_ >= 0 && stiff_steps_ < kStiffSteps,
                   "a count below the stiff steps' 15");

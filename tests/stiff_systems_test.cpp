@@ -215,6 +215,53 @@ TEST(TrBdf2Runs, TheStiffMountFollowsItsClosedFormAtEngineeringTolerances) {
   }
 }
 
+// The largest distance, over the rows and the arms' and the slider's positions, between two runs
+// of the flyball governor (the same rows).
+double flyball_departure(const test::ScenarioRun& run, const test::ScenarioRun& reference) {
+  EXPECT_EQ(run.rows.size(), reference.rows.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < std::min(run.rows.size(), reference.rows.size()); ++i) {
+    for (std::size_t body = 1; body < 4; ++body) {  // arm1, arm2, slider
+      worst = std::max(worst, (run.rows[i].states[body].r_G - reference.rows[i].states[body].r_G)
+                                  .cwiseAbs()
+                                  .maxCoeff());
+    }
+  }
+  return worst;
+}
+
+TEST(AutoRuns, TheFlyballGovernorTakesATwentiethOfDopri5sStepsForABetterAnswer) {
+  // examples/flyball_governor.yaml (IFToMM A05's proportions: couplers of 8e5 N/m and 4e4 N s/m)
+  // over its first second, against dop853 at rtol 1e-12: auto (the example's rtol 1e-8) within
+  // 1e-8 m, rtol of the 1 m arms, at every row; dopri5 at rtol 1e-4, the loosest that still
+  // follows the swing, held to more than ten times auto's steps by its stability along the
+  // couplers' damping, and further off.
+  Scenario scenario = load_scenario(test::example("flyball_governor.yaml"), {});
+  scenario.simulate.duration = 1.0;
+  ASSERT_EQ(scenario.simulate.integrator, "auto");
+  const test::ScenarioRun automatic = test::run_scenario(scenario);
+  scenario.simulate.integrator = "dopri5";
+  scenario.simulate.rtol = 1e-4;
+  scenario.simulate.atol = 1e-6;
+  const test::ScenarioRun dopri5 = test::run_scenario(scenario);
+  scenario.simulate.integrator = "dop853";
+  scenario.simulate.rtol = 1e-12;
+  scenario.simulate.atol = 1e-14;
+  const test::ScenarioRun reference = test::run_scenario(scenario);
+
+  const double auto_error = flyball_departure(automatic, reference);
+  const double dopri5_error = flyball_departure(dopri5, reference);
+  EXPECT_LT(auto_error, 1e-8);
+  EXPECT_GT(dopri5_error, auto_error);
+  EXPECT_GT(dopri5.result.report.stats.accepted_steps,
+            10 * automatic.result.report.stats.accepted_steps);
+  // No torque about the shaft's axis: Lz is kept, to the tolerance's order.
+  const double lz0 = automatic.rows.front().quantities.angular_momentum_about_origin.z();
+  for (const test::Row& row : automatic.rows) {
+    EXPECT_NEAR(row.quantities.angular_momentum_about_origin.z(), lz0, 1e-7 * std::abs(lz0));
+  }
+}
+
 TEST(Radau5Runs, OverASecondTheStepsAreTheSlowModesOnly) {
   // A thousand of the slow mode's time constants: 150,000 steps at least by stability alone.
   const test::ScenarioRun run = test::run_inline_scenario(kMount, "mount");

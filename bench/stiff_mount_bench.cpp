@@ -49,13 +49,7 @@ double exact_stretch(double t) {
 // the rows, relative to x0.
 template <typename Exact>
 void time_against(benchmark::State& state, PreparedSimulation& simulation, const Exact& exact) {
-  const RowObserver ignore = [](double, std::span<const BodyState>, const SystemQuantities&) {};
-  SimulationResult result;
-  for (auto _ : state) {
-    result = run_simulation(simulation, ignore);
-    benchmark::DoNotOptimize(result.rows);
-  }
-  if (!result.report.completed) state.SkipWithError(result.report.failure.c_str());
+  const SimulationResult result = time_runs(state, simulation);
   double worst = 0.0;
   run_simulation(simulation,
                  [&](double t, std::span<const BodyState> states, const SystemQuantities&) {

@@ -10,6 +10,7 @@
 //    omega_n = sqrt((k - M g L/2) / (M L^2/3)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
@@ -111,6 +112,65 @@ simulate: {{duration: 1}}
     const std::complex<double> ratio = mode.shape(1) / mode.shape(0) + 1.0;
     EXPECT_NEAR(ratio.real(), -sign * std::sqrt(2.0), 1e-12);
     EXPECT_NEAR(ratio.imag(), 0.0, 1e-12);
+  }
+}
+
+// The zeros of the Laguerre polynomial L_n, from its recurrence
+// (k + 1) L_{k+1} = (2k + 1 - x) L_k - k L_{k-1}: all real, in (0, 4n + 2), a scan's sign changes
+// refined by bisection.
+std::vector<double> laguerre_zeros(int n) {
+  const auto L = [n](double x) {
+    double previous = 1.0, current = 1.0 - x;
+    for (int k = 1; k < n; ++k) {
+      const double next = ((2 * k + 1 - x) * current - k * previous) / (k + 1);
+      previous = current;
+      current = next;
+    }
+    return current;
+  };
+  std::vector<double> zeros;
+  const double step = 1e-3;
+  for (double a = 0.0; a < 4 * n + 2; a += step) {
+    double lo = a, hi = a + step;
+    if ((L(lo) > 0) == (L(hi) > 0)) continue;
+    for (int i = 0; i < 200 && lo < hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      ((L(mid) > 0) == (L(lo) > 0) ? lo : hi) = mid;
+    }
+    zeros.push_back(0.5 * (lo + hi));
+  }
+  return zeros;
+}
+
+// A chain of n equal point masses hanging on n massless links of equal length l: its modes have
+// omega^2 = (g / l) x_k, x_k the zeros of the Laguerre polynomial L_n (the double pendulum's
+// 2 -+ sqrt 2 are L_2's). Twenty links are forty coordinates, more than a dual number carries
+// (kDualSeeds): the Jacobian is taken in two evaluations, its columns seeded in turn.
+TEST(SlenderBody, AHangingChainOfTwentyPointsHasTheLaguerreZerosAsItsModes) {
+  constexpr int n = 20;
+  static_assert(2 * n > kDualSeeds);
+  const double l = 0.25, m = 0.4;
+  std::string yaml = fmt::format("tumble: 1\ngravity: [0, 0, -{}]\nbodies:\n", kG);
+  std::string joints = "joints:\n";
+  for (int i = 1; i <= n; ++i) {
+    yaml += fmt::format("  p{}: {{shape: point, mass: {}, position: [0, 0, {}]}}\n", i, m, -i * l);
+    joints +=
+        fmt::format("  j{}: {{type: hinge, bodies: [{}, p{}], at: [0, 0, {}], axis: [0, 1, 0]}}\n",
+                    i, i == 1 ? std::string("ground") : fmt::format("p{}", i - 1), i, -(i - 1) * l);
+  }
+  const ScenarioModes modes = modes_of_scenario(
+      test::load_inline_scenario(yaml + joints + "simulate: {duration: 1}\n", "hanging_chain"));
+  std::vector<double> omega_squared;
+  for (const Mode& mode : modes.analysis.modes) {
+    omega_squared.push_back(mode.natural_frequency * mode.natural_frequency);
+  }
+  std::sort(omega_squared.begin(), omega_squared.end());
+  const std::vector<double> x = laguerre_zeros(n);
+  ASSERT_EQ(x.size(), static_cast<std::size_t>(n));
+  ASSERT_EQ(omega_squared.size(), x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    EXPECT_NEAR(omega_squared[k], kG / l * x[k], 1e-10 * kG / l * x.back()) << "mode " << k;
   }
 }
 

@@ -54,13 +54,19 @@ inline Mat3 rotation_from_axis_angle(const Vec3& axis, double angle) {
   return rotation_from_axis_angle<double>(axis, angle);
 }
 
+// atan2 over the scalar. Eigen's for dual numbers gives its result heap-held derivatives of any
+// count (VectorXd): this one keeps the Dual's own (math/dual.cpp).
+inline double atan2_of(double y, double x) {
+  return std::atan2(y, x);
+}
+Dual atan2_of(const Dual& y, const Dual& x);
+
 // The rotation vector phi = theta n of R (theta in [0, pi]); the inverse of exp_so3.
 // Accurate to round-off near theta = 0 (series) and near theta = pi (axis from the symmetric
 // part). Near theta = 0 the series is taken without |sin(theta) n|, whose derivatives do not
 // exist at R = 1 (a spring at rest, where `tumble modes` differentiates it).
 template <typename S>
 Vec3Of<S> log_so3(const Mat3Of<S>& R) {
-  using std::atan2;
   using std::sqrt;
   // sin(theta) n = vee(skew part); cos(theta) = (trace - 1) / 2. atan2 of the two is accurate
   // everywhere except for the axis near pi, where the skew part vanishes.
@@ -71,11 +77,11 @@ Vec3Of<S> log_so3(const Mat3Of<S>& R) {
     // theta / sin(theta) = 1 + theta^2 / 6 + ...: 1 to round-off below sin(theta) = 1e-8.
     if (std::sqrt(value_of(sin_squared)) < 1e-8) return (S(1.0) + sin_squared / S(6.0)) * s_n;
     const S sin_theta = sqrt(sin_squared);
-    return atan2(sin_theta, cos_theta) / sin_theta * s_n;
+    return atan2_of(sin_theta, cos_theta) / sin_theta * s_n;
   }
   // Near pi: R + R^T = 2 cos I + 2 (1 - cos) n n^T, so n n^T from the symmetric part; take the
   // largest diagonal entry's column for accuracy, and the sign of n from the skew part.
-  const S theta = atan2(sqrt(sin_squared), cos_theta);
+  const S theta = atan2_of(S(sqrt(sin_squared)), cos_theta);
   const Mat3Of<S> B = S(0.5) * (R + R.transpose()) - cos_theta * Mat3Of<S>::Identity();
   Eigen::Index k = 0;
   for (Eigen::Index i = 1; i < 3; ++i) {

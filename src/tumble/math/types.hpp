@@ -31,8 +31,14 @@ using VecXOf = Eigen::Matrix<S, Eigen::Dynamic, 1>;
 template <typename S>
 using MatXOf = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;
 
-// A number with its derivatives (math/dual.hpp, which defines what it needs).
-using Dual = Eigen::AutoDiffScalar<Eigen::VectorXd>;
+// A number with its derivatives along up to kDualSeeds seeds at once (math/dual.hpp, which
+// defines what it needs). The derivatives live inside the number, not on the heap: every
+// operation on a dual number made a vector of derivatives, and allocating them was most of a
+// Jacobian's cost. A Jacobian of more columns is taken kDualSeeds columns at a time
+// (modes/linearisation.hpp, jacobian_at_zero).
+inline constexpr int kDualSeeds = 32;
+using DualDerivatives = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDualSeeds, 1>;
+using Dual = Eigen::AutoDiffScalar<DualDerivatives>;
 
 // The plain number of a scalar (itself for double; math/dual.hpp adds the dual numbers').
 inline double value_of(double x) {

@@ -167,14 +167,29 @@ MatX constraint_tangent(const ModalEquations& equations, const std::vector<Eigen
 
 MatX jacobian_at_zero(const std::function<VecXOf<Dual>(const VecXOf<Dual>&)>& f, Eigen::Index n,
                       VecX* value) {
+  MatX J;
   VecXOf<Dual> z(n);
-  for (Eigen::Index i = 0; i < n; ++i) z(i) = Dual(0.0, Eigen::VectorXd::Unit(n, i));
-  const VecXOf<Dual> out = f(z);
-  MatX J = MatX::Zero(out.size(), n);
-  if (value != nullptr) value->resize(out.size());
-  for (Eigen::Index i = 0; i < out.size(); ++i) {
-    if (value != nullptr) (*value)(i) = out(i).value();
-    if (out(i).derivatives().size() == n) J.row(i) = out(i).derivatives().transpose();
+  // At least one evaluation, for the value where nothing can move (n = 0).
+  for (Eigen::Index first = 0; first == 0 || first < n; first += kDualSeeds) {
+    const Eigen::Index seeds = std::min<Eigen::Index>(kDualSeeds, n - first);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const bool seeded = i >= first && i < first + seeds;
+      z(i) = seeded ? Dual(0.0, DualDerivatives::Unit(seeds, i - first)) : Dual(0.0);
+    }
+    const VecXOf<Dual> out = f(z);
+    if (first == 0) {
+      J.setZero(out.size(), n);
+      if (value != nullptr) {
+        value->resize(out.size());
+        for (Eigen::Index i = 0; i < out.size(); ++i) (*value)(i) = out(i).value();
+      }
+    }
+    for (Eigen::Index i = 0; i < out.size(); ++i) {
+      // A result that depends on none of these seeds keeps no derivatives.
+      if (out(i).derivatives().size() == seeds) {
+        J.block(i, first, 1, seeds) = out(i).derivatives().transpose();
+      }
+    }
   }
   return J;
 }

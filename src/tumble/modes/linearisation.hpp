@@ -63,7 +63,7 @@ struct Linearisation {
 Linearisation linearise(const ModalEquations& equations);
 
 // The Jacobian of a function of z at z = 0 by forward-mode automatic differentiation, and its
-// value.
+// value: kDualSeeds columns an evaluation, the other coordinates held as plain numbers.
 MatX jacobian_at_zero(const std::function<VecXOf<Dual>(const VecXOf<Dual>&)>& f, Eigen::Index n,
                       VecX* value = nullptr);
 

@@ -37,8 +37,8 @@ VecXOf<Dual> solve_mass(const MX<Dual>& M, const VecXOf<Dual>& b) {
     seeds = std::max(seeds, b(i).derivatives().size());
     for (Eigen::Index j = 0; j < n; ++j) seeds = std::max(seeds, M(i, j).derivatives().size());
   }
-  const auto derivatives = [seeds](const Dual& a) -> Eigen::VectorXd {
-    return a.derivatives().size() == 0 ? Eigen::VectorXd::Zero(seeds) : a.derivatives();
+  const auto derivatives = [seeds](const Dual& a) -> DualDerivatives {
+    return a.derivatives().size() == 0 ? DualDerivatives::Zero(seeds) : a.derivatives();
   };
   MatX M0(n, n);
   VecX b0(n);
@@ -50,7 +50,7 @@ VecXOf<Dual> solve_mass(const MX<Dual>& M, const VecXOf<Dual>& b) {
   const VecX x0 = factors.solve(b0);
   MatX rhs(n, seeds);  // column s: b' - M' x along seed s
   for (Eigen::Index i = 0; i < n; ++i) {
-    Eigen::VectorXd row = derivatives(b(i));
+    DualDerivatives row = derivatives(b(i));
     for (Eigen::Index j = 0; j < n; ++j) row -= derivatives(M(i, j)) * x0(j);
     rhs.row(i) = row.transpose();
   }

@@ -58,11 +58,31 @@ TEST(JacobiElliptic, AgreesWithBoost) {
       EXPECT_NEAR(v.sn, sn_boost, tol) << "k " << k << " u " << u;
       EXPECT_NEAR(v.cn, cn_boost, tol) << "k " << k << " u " << u;
       EXPECT_NEAR(v.dn, dn_boost, tol) << "k " << k << " u " << u;
+      // Bulirsch's Gauss transformation, the other algorithm, to the same bound.
+      const JacobiFunctions f = jac.calc_functions(u);
+      EXPECT_NEAR(f.sn, sn_boost, tol) << "k " << k << " u " << u;
+      EXPECT_NEAR(f.cn, cn_boost, tol) << "k " << k << " u " << u;
+      EXPECT_NEAR(f.dn, dn_boost, tol) << "k " << k << " u " << u;
       // am is the inverse of F: a round trip returns u to the same phase round-off.
       EXPECT_NEAR(jac.calc_inverse_amplitude(v.am), u, tol) << "k " << k << " u " << u;
       if (std::abs(v.am) < 1.5) {
         EXPECT_NEAR(jac.calc_inverse_amplitude(v.am), boost::math::ellint_1(k, v.am), tol);
       }
+    }
+  }
+}
+
+// Near a zero of sn the Gauss transformation works with cot(a_N u), which squared would overflow
+// for |u| below ~1e-154: there, and just above where it takes over, sn = u and cn = dn = 1 to
+// round-off (sn(u) = u - (1 + k^2) u^3 / 6 + ...).
+TEST(JacobiElliptic, TinyArgumentsGiveTheSeriesTerms) {
+  for (const double kp2 : {1.0, 0.3, 1e-12}) {
+    const JacobiElliptic jac(1.0 - kp2, kp2);
+    for (const double u : {1e-300, -1e-200, 1e-120, 2e-100, -1e-60, 1e-20}) {
+      const JacobiFunctions f = jac.calc_functions(u);
+      EXPECT_NEAR(f.sn, u, kEps * std::abs(u)) << "u " << u;
+      EXPECT_EQ(f.cn, 1.0) << "u " << u;
+      EXPECT_EQ(f.dn, 1.0) << "u " << u;
     }
   }
 }
@@ -94,6 +114,10 @@ TEST(JacobiElliptic, AccurateNearModulusOne) {
     EXPECT_NEAR(v.sn, r.sn, tol) << "u " << r.u;
     EXPECT_NEAR(v.cn, r.cn, tol) << "u " << r.u;
     EXPECT_NEAR(v.dn, r.dn, tol) << "u " << r.u;
+    const JacobiFunctions f = jac.calc_functions(r.u);
+    EXPECT_NEAR(f.sn, r.sn, tol) << "u " << r.u;
+    EXPECT_NEAR(f.cn, r.cn, tol) << "u " << r.u;
+    EXPECT_NEAR(f.dn, r.dn, tol) << "u " << r.u;
     // The inverse is ill-conditioned here (du = d(am) / dn, dn ~ 1e-9), but it is backward
     // stable: the functions at the recovered argument reproduce the values to round-off.
     const JacobiValues back = jac.calc(jac.calc_inverse_amplitude(v.am));
@@ -154,11 +178,11 @@ std::vector<RefCase> load_reference() {
 // Error budget: the state at time t depends on the phase lambda t + tau_0 and on the precession
 // angle psi(t) ~ |omega| t; each is formed to a relative round-off of a few eps, i.e. an absolute
 // phase error of about C eps |omega| t with |omega| ~ 1 rad/s here and C ~ 10 (the argument
-// reduction, the quadrature table sum, the AGM). R and omega move at rates <= |omega| ~ 1 per
-// unit phase, so |error| <~ 10 eps t = 2.2e-15 t, plus a floor of ~1e-15 from the evaluation
-// itself. Asserted: 2e-15 * max(t, 50), i.e. 1e-13, 4e-13 and 4e-12 at t = 20, 200 and 2000
-// (measured: 1.2e-15, 2.6e-14 and 6.8e-13 at worst, the tumbling case, whose saddle passages
-// amplify phase errors).
+// reduction, psi's series, the AGM). R and omega move at rates <= |omega| ~ 1 per unit phase, so
+// |error| <~ 10 eps t = 2.2e-15 t, plus a floor of ~1e-15 from the evaluation itself. Asserted:
+// 2e-15 * max(t, 50), i.e. 1e-13, 4e-13 and 4e-12 at t = 20, 200 and 2000 (measured: 2.3e-15,
+// 2.8e-14 and 4.8e-13 at worst, the last two the tumbling case, whose saddle passages amplify
+// phase errors; 1.2e-15, 2.6e-14 and 6.8e-13 when psi was a table and a quadrature).
 TEST(TorqueFreeMotion, MatchesFortyDigitReference) {
   std::printf("case        t      |d omega_B|   |d omega_W|   |d R|\n");
   for (const RefCase& c : load_reference()) {

@@ -8,6 +8,15 @@
 
 namespace tumble {
 
+namespace {
+
+// Bulirsch's means stop where they agree to this (its square is below round-off).
+constexpr double kGaussAgreement = 1e-9;
+// Below this |u| (after the reduction by periods), sn = u, cn = dn = 1 to round-off.
+constexpr double kTinyArgument = 1e-100;
+
+}  // namespace
+
 // AGM of 1 and k' (A&S 17.6.1-17.6.2):
 //   a_{n+1} = (a_n + b_n) / 2,  b_{n+1} = sqrt(a_n b_n),  c_{n+1} = (a_n - b_n) / 2,
 // with c_{n+1} evaluated as c_n^2 / (4 a_{n+1}) (equal in exact arithmetic, free of the
@@ -34,6 +43,19 @@ JacobiElliptic::JacobiElliptic(double k2, double kp2) : k2_(k2), kp2_(kp2) {
   for (int i = 0; i <= n; ++i) one_minus_ratio_[i] = b_[i] * b_[i] / (a_[i] * (a_[i] + c_[i]));
   steps_ = n;
   quarter_period_ = std::numbers::pi / (2.0 * a_[n]);
+  // Bulirsch's scale: the same means, stopped where they agree to sqrt(eps) (the step after would
+  // square that), each pair kept.
+  double a = 1.0, b_squared = kp2, mean = 1.0;
+  for (int i = 1; i <= kMaxSteps; ++i) {
+    gauss_steps_ = i;
+    gauss_a_[i] = a;
+    gauss_b_[i] = std::sqrt(b_squared);
+    mean = 0.5 * (a + gauss_b_[i]);
+    if (std::abs(a - gauss_b_[i]) <= kGaussAgreement * a) break;
+    b_squared = gauss_b_[i] * a;
+    a = mean;
+  }
+  gauss_scale_ = mean;
 }
 
 // Descending AGM scale (A&S 16.4.3): phi_N = 2^N a_N u, then for n = N, ..., 1
@@ -70,6 +92,38 @@ JacobiValues JacobiElliptic::calc(double u) const {
   v.dn = std::sqrt(kp2_ + k2_ * v.cn * v.cn);
   v.am = phi + 2.0 * std::numbers::pi * m;
   return v;
+}
+
+// Bulirsch's algorithm (his sncndn): with v = a_N u, s = sin v, c = cos v, it climbs back up the
+// means from the ratio c / s by Gauss's transformation, each step
+//   x <- x * r,  r <- r * dn,  dn <- (b_{i-1} + x) / (a_{i-1} + x),  x <- r / a_{i-1}
+// (x, r: Bulirsch's a and c), sums of positive terms that lose nothing as k -> 1 (where the
+// descending scale's arc sines near 1 need the care taken in calc), and ends with
+// sn = 1 / sqrt(r^2 + 1), cn = r sn.
+JacobiFunctions JacobiElliptic::calc_functions(double u) const {
+  const double period = 4.0 * quarter_period_;
+  const double u_reduced = u - std::nearbyint(u / period) * period;
+  // Near a zero of sn the ratio c / s squared would overflow: there sn = u, cn = dn = 1 to
+  // round-off.
+  if (std::abs(u_reduced) < kTinyArgument) return {u_reduced, 1.0, 1.0};
+  double r = gauss_scale_;
+  const double v = u_reduced * r;
+  const double s = std::sin(v);
+  const double c = std::cos(v);
+  JacobiFunctions f{s, c, 1.0};
+  if (s == 0.0) return f;
+  double x = c / s;
+  r *= x;
+  for (int i = gauss_steps_; i >= 1; --i) {
+    x *= r;
+    r *= f.dn;
+    f.dn = (gauss_b_[i] + x) / (gauss_a_[i] + x);
+    x = r / gauss_a_[i];
+  }
+  const double magnitude = 1.0 / std::sqrt(r * r + 1.0);
+  f.sn = s >= 0.0 ? magnitude : -magnitude;
+  f.cn = r * f.sn;
+  return f;
 }
 
 // Ascending Landen transformation (A&S 17.5.8 with 17.6; DLMF 19.8(i)): phi_0 = phi,

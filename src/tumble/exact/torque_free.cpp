@@ -42,11 +42,20 @@
 //    the minimal rotation one gets Landau's phi' = L (J_1 w_1^2 + J_2 w_2^2)/(J_1^2 w_1^2 +
 //    J_2^2 w_2^2), eq. 37.15; the two differ by the rate of atan2(l_1, l_2).) The test checks
 //    dR/dt = R [omega_B]x by finite differences.
-//    psi is integrated once: the integral G(tau) = int_0^tau psi' dtau is tabulated at panel
-//    boundaries over one period of psi' (adaptive Gauss-Kronrod, to round-off) and completed inside
-//    a panel by a 15-point Gauss-Legendre rule; psi(t) = (G(tau(t)) - G(tau_0)) / lambda. On the
-//    separatrix psi' tends to 2E/L as |tau| -> infinity (sech(44) < 2e-19), so the table covers
-//    |tau| <= 44 and is extended linearly.
+//    psi is integrated once, as a series: psi' is even in tau and of period 2K, so
+//      psi'(tau) = c_0 + sum_n c_n cos(n pi tau / K),  G(tau) = int_0^tau psi' dtau
+//                = c_0 tau + sum_n c_n K / (n pi) sin(n pi tau / K),
+//    and psi(t) = (G(tau(t)) - G(tau_0)) / lambda. The c_n are the trapezoidal rule's on M + 1
+//    samples over a half period (a cosine transform), which for a periodic analytic function is
+//    exact but for the aliasing of the coefficients beyond M; M doubles until the upper half of
+//    the c_n is at round-off, and that half is dropped, with the lower half's trailing terms at
+//    round-off. psi' is analytic in a strip about the real axis, so its c_n fall geometrically:
+//    65 samples and 21 terms for the chapter's prism, 257 and 82 for an orbit within round-off of
+//    the separatrix (where K grows as ln(4 / k')). Each evaluation is then one sum by Clenshaw's
+//    recurrence, not a quadrature. On the separatrix itself psi' is not periodic: it
+//    tends to 2E/L as |tau| -> infinity (sech(44) < 2e-19), and G is tabulated at panel
+//    boundaries over |tau| <= 44 (adaptive Gauss-Kronrod, to round-off), completed inside a panel
+//    by a 15-point Gauss-Legendre rule and extended linearly.
 #include "tumble/exact/torque_free.hpp"
 
 #include <algorithm>
@@ -55,6 +64,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -75,10 +85,16 @@ enum class TorqueFreeMotionKind {
 
 namespace {
 
-// Panel width (in tau) of the psi table. psi' is a rational function of dn(tau), analytic in a
-// strip about the real axis (dn has its poles at i K', K' >= pi/2), and varies on a scale >= 1
-// in tau (dn ~ sech near the separatrix), so a 15-point Gauss-Legendre rule on a panel of width
-// 0.5 is exact to round-off. Checked while writing this: against adaptive 61-point
+// The cosine series of psi' (periodic orbits): samples over a half period, at least and at most.
+constexpr int kLeastSamples = 32;
+constexpr int kMostSamples = 1 << 16;
+// A coefficient within this many round-offs of the largest sample is at the transform's noise.
+constexpr double kSeriesNoise = 8.0;
+
+// Panel width (in tau) of the psi table (the separatrix). psi' is a rational function of dn(tau),
+// analytic in a strip about the real axis (dn has its poles at i K', K' >= pi/2), and varies on a
+// scale >= 1 in tau (dn ~ sech near the separatrix), so a 15-point Gauss-Legendre rule on a panel
+// of width 0.5 is exact to round-off. Checked while writing this: against adaptive 61-point
 // Gauss-Kronrod the panel integrals differ by <= 2.2e-16 for k'^2 from 0.5 down to 1e-30 and
 // J_3 a_3 / L from 0.3 to 1 - 1e-6.
 constexpr double kPanelWidth = 0.5;
@@ -104,6 +120,21 @@ Mat3 rotation_about_z(double angle) {
       0.0, 0.0, 1.0;
   return Rz;
 }
+
+// Neumaier's compensated sum: the rounding of each addition is kept and added back at the end,
+// so that a sum of many terms is as accurate as its terms.
+class CompensatedSum {
+ public:
+  void add(double x) {
+    const double t = sum_ + x;
+    compensation_ += std::abs(sum_) >= std::abs(x) ? (sum_ - t) + x : (x - t) + sum_;
+    sum_ = t;
+  }
+  double value() const { return sum_ + compensation_; }
+
+ private:
+  double sum_ = 0, compensation_ = 0;
+};
 
 std::string format_matrix(const Mat3& M) {
   std::ostringstream os;
@@ -135,7 +166,11 @@ struct TorqueFreeMotion::Impl {
 
   Mat3 R_WL;  // fixed: R_WL e_3 = L_W / L
 
-  // psi table: G at tau = table_begin + j * panel_width, j = 0..panels.
+  // Periodic orbits: psi' = mean_psi_rate + sum_n c_n cos(n pi tau / K); G's periodic part
+  // sum_n psi_sine[n - 1] sin(n pi tau / K), psi_sine[n - 1] = c_n K / (n pi).
+  double mean_psi_rate = 0;
+  std::vector<double> psi_sine;
+  // The separatrix: G at tau = table_begin + j * panel_width, j = 0..panels.
   double table_begin = 0;
   double panel_width = 0;
   std::vector<double> G_table;
@@ -147,7 +182,7 @@ struct TorqueFreeMotion::Impl {
       const double sech = 1.0 / std::cosh(tau);
       return Vec3(amplitude.x() * sech, amplitude.y() * std::tanh(tau), amplitude.z() * sech);
     }
-    const JacobiValues v = jacobi->calc(tau);
+    const JacobiFunctions v = jacobi->calc_functions(tau);
     return Vec3(amplitude.x() * v.cn, amplitude.y() * v.sn, amplitude.z() * v.dn);
   }
 
@@ -155,22 +190,35 @@ struct TorqueFreeMotion::Impl {
   double calc_psi_rate(double tau) const {
     const double w3 = kind == TorqueFreeMotionKind::kSeparatrix
                           ? amplitude.z() / std::cosh(tau)
-                          : amplitude.z() * jacobi->calc(tau).dn;
+                          : amplitude.z() * jacobi->calc_functions(tau).dn;
     return (2.0 * energy_K + L_norm * w3) / (L_norm + J.z() * w3);
   }
 
-  // G(tau) = int_0^tau psi'(s) ds (periodic case) or int_{-44}^tau (separatrix), from the table.
+  // G(tau) = int_0^tau psi'(s) ds (periodic case: the series) or int_{-44}^tau (separatrix: the
+  // table).
   double calc_G(double tau) const {
+    if (kind == TorqueFreeMotionKind::kPeriodic) {
+      // tau = whole periods + r, r in [0, 2K): the mean rate carries the periods exactly, and the
+      // sines are taken at theta = pi r / K in [0, 2 pi).
+      const double K = jacobi->quarter_period();
+      const double turns = std::floor(tau / (2.0 * K));
+      const double r = tau - turns * 2.0 * K;
+      const double theta = std::numbers::pi * r / K;
+      // Clenshaw: u_n = b_n + 2 cos(theta) u_{n+1} - u_{n+2}; the sum is u_1 sin(theta).
+      const double two_cos = 2.0 * std::cos(theta);
+      double u1 = 0, u2 = 0;
+      for (auto b = psi_sine.rbegin(); b != psi_sine.rend(); ++b) {
+        const double u0 = *b + two_cos * u1 - u2;
+        u2 = u1;
+        u1 = u0;
+      }
+      return mean_psi_rate * (turns * 2.0 * K + r) + u1 * std::sin(theta);
+    }
     const int panels = static_cast<int>(G_table.size()) - 1;
     const double span = panel_width * panels;
     const auto rate = [this](double s) { return calc_psi_rate(s); };
-    double offset = 0;
     double r = tau - table_begin;
-    if (kind == TorqueFreeMotionKind::kPeriodic) {
-      const double turns = std::floor(r / span);
-      offset = turns * G_table.back();
-      r -= turns * span;
-    } else if (r <= 0.0 || r >= span) {
+    if (r <= 0.0 || r >= span) {
       // Beyond the table psi' = 2E/L to round-off.
       const double rate_far = 2.0 * energy_K / L_norm;
       return r <= 0.0 ? rate_far * r : G_table.back() + rate_far * (r - span);
@@ -178,9 +226,57 @@ struct TorqueFreeMotion::Impl {
     r = std::clamp(r, 0.0, span);
     const int j = std::min(static_cast<int>(r / panel_width), panels - 1);
     const double panel_start = table_begin + j * panel_width;
-    return offset + G_table[j] +
-           boost::math::quadrature::gauss<double, 15>::integrate(rate, panel_start,
-                                                                 table_begin + r);
+    return G_table[j] + boost::math::quadrature::gauss<double, 15>::integrate(rate, panel_start,
+                                                                              table_begin + r);
+  }
+
+  // The cosine series of psi' over the period 2K (module comment, 2.).
+  void build_psi_series() {
+    const double K = jacobi->quarter_period();
+    // samples[j] = psi'(j K / M), j = 0..M; each doubling adds the midpoints.
+    std::vector<double> samples = {calc_psi_rate(0.0), calc_psi_rate(K)};
+    std::vector<double> coefficients, cosines;
+    for (int M = 1; M < kMostSamples;) {
+      std::vector<double> finer(2 * static_cast<std::size_t>(M) + 1);
+      for (int j = 0; j <= M; ++j) finer[2 * j] = samples[j];
+      for (int j = 0; j < M; ++j) finer[2 * j + 1] = calc_psi_rate((2 * j + 1) * K / (2 * M));
+      samples = std::move(finer);
+      M *= 2;
+      if (M < kLeastSamples) continue;
+      // The trapezoidal rule over the whole period, folded onto the half (psi' is even):
+      //   c_n = (1 / M) (f_0 + (-1)^n f_M + 2 sum_{j=1}^{M-1} f_j cos(n pi j / M)),
+      // c_0 half of that; cos(n pi j / M) from a table of the 2M angles.
+      cosines.resize(2 * static_cast<std::size_t>(M));
+      for (int i = 0; i < 2 * M; ++i) cosines[i] = std::cos(std::numbers::pi * i / M);
+      coefficients.assign(static_cast<std::size_t>(M) + 1, 0.0);
+      double largest_sample = 0;
+      for (const double f : samples) largest_sample = std::max(largest_sample, std::abs(f));
+      for (int n = 0; n <= M; ++n) {
+        CompensatedSum sum;
+        sum.add(samples[0]);
+        sum.add(n % 2 == 0 ? samples[M] : -samples[M]);
+        for (int j = 1; j < M; ++j) {
+          sum.add(2.0 * samples[j] * cosines[static_cast<std::size_t>(n) * j % (2 * M)]);
+        }
+        coefficients[n] = sum.value() / M;
+      }
+      const double noise = kSeriesNoise * std::numeric_limits<double>::epsilon() * largest_sample;
+      double tail = 0;
+      for (int n = M / 2 + 1; n <= M; ++n) tail = std::max(tail, std::abs(coefficients[n]));
+      if (tail > noise) continue;
+      // The terms up to the last above the noise (each one costs every evaluation a step).
+      int terms = M / 2;
+      while (terms > 0 && std::abs(coefficients[terms]) <= noise) --terms;
+      mean_psi_rate = 0.5 * coefficients[0];
+      psi_sine.resize(static_cast<std::size_t>(terms));
+      for (int n = 1; n <= terms; ++n) {
+        psi_sine[n - 1] = coefficients[n] * K / (n * std::numbers::pi);
+      }
+      return;
+    }
+    throw std::logic_error("TorqueFreeMotion: psi's series did not converge in " +
+                           std::to_string(kMostSamples) +
+                           " samples (k'^2 = " + std::to_string(jacobi->kp2()) + ")");
   }
 
   void build_psi_table(double begin, double span) {
@@ -189,8 +285,7 @@ struct TorqueFreeMotion::Impl {
     panel_width = span / panels;
     G_table.assign(panels + 1, 0.0);
     const auto rate = [this](double s) { return calc_psi_rate(s); };
-    // Neumaier-compensated running sum of the panel integrals.
-    double sum = 0, compensation = 0;
+    CompensatedSum sum;
     for (int j = 0; j < panels; ++j) {
       const double a = begin + j * panel_width;
       // 31-point Kronrod on a panel is already at round-off (see kPanelWidth); Boost's error
@@ -203,10 +298,8 @@ struct TorqueFreeMotion::Impl {
         throw std::logic_error("TorqueFreeMotion: psi quadrature did not converge (panel error " +
                                std::to_string(error) + ", integral " + std::to_string(piece) + ")");
       }
-      const double t = sum + piece;
-      compensation += std::abs(sum) >= std::abs(piece) ? (sum - t) + piece : (piece - t) + sum;
-      sum = t;
-      G_table[j + 1] = sum + compensation;
+      sum.add(piece);
+      G_table[j + 1] = sum.value();
     }
   }
 
@@ -325,7 +418,7 @@ TorqueFreeMotion::TorqueFreeMotion(const Mat3& I_G_B, const Mat3& R_WB0, const V
     impl->tau0 = impl->jacobi->calc_inverse_amplitude(std::atan2(w.y() / a2, w.x() / a1));
     const double K = impl->jacobi->quarter_period();
     impl->period = 4.0 * K / impl->lambda;
-    impl->build_psi_table(0.0, 2.0 * K);
+    impl->build_psi_series();
   }
   impl->G_tau0 = impl->calc_G(impl->tau0);
 
@@ -343,16 +436,30 @@ Vec3 TorqueFreeMotion::omega_B(double t) const {
 }
 
 Mat3 TorqueFreeMotion::R_WB(double t) const {
-  const Impl& m = *impl_;
-  if (m.kind == TorqueFreeMotionKind::kSteady) return exp_so3(t * m.omega_W0) * m.R_WB0;
-  const Vec3 L_K = m.J.cwiseProduct(m.calc_omega_K(m.tau0 + m.lambda * t));
-  return m.R_WL * rotation_about_z(m.calc_psi(t)) * rotation_to_e3(L_K.normalized()) * m.S_KB;
+  Mat3 R;
+  Vec3 omega;
+  calc_rotation(t, R, omega);
+  return R;
 }
 
 Vec3 TorqueFreeMotion::omega_W(double t) const {
+  Mat3 R;
+  Vec3 omega;
+  calc_rotation(t, R, omega);
+  return omega;
+}
+
+void TorqueFreeMotion::calc_rotation(double t, Mat3& R_WB_out, Vec3& omega_W_out) const {
   const Impl& m = *impl_;
-  if (m.kind == TorqueFreeMotionKind::kSteady) return m.omega_W0;
-  return R_WB(t) * omega_B(t);
+  if (m.kind == TorqueFreeMotionKind::kSteady) {
+    R_WB_out = exp_so3(t * m.omega_W0) * m.R_WB0;
+    omega_W_out = m.omega_W0;
+    return;
+  }
+  const Vec3 omega_K = m.calc_omega_K(m.tau0 + m.lambda * t);
+  const Vec3 L_K = m.J.cwiseProduct(omega_K);
+  R_WB_out = m.R_WL * rotation_about_z(m.calc_psi(t)) * rotation_to_e3(L_K.normalized()) * m.S_KB;
+  omega_W_out = R_WB_out * (m.S_KB.transpose() * omega_K);
 }
 
 Vec3 TorqueFreeMotion::angular_momentum_W() const {

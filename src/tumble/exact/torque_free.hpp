@@ -1,6 +1,7 @@
 #pragma once
 // The exact motion of a torque-free rigid body (Euler-Poinsot): body-frame angular velocity from
-// Jacobi elliptic functions, orientation from the fixed angular momentum by a quadrature.
+// Jacobi elliptic functions, orientation from the fixed angular momentum by a series (a
+// quadrature on the separatrix itself).
 // Reference solution for tests and the `integrator: exact` of free bodies.
 #include <memory>
 
@@ -18,6 +19,9 @@ class TorqueFreeMotion {
   Vec3 omega_B(double t) const;  // angular velocity, body axes
   Mat3 R_WB(double t) const;     // orientation, body axes -> world
   Vec3 omega_W(double t) const;  // angular velocity, world
+  // The orientation and the world angular velocity at t from one evaluation of the elliptic
+  // functions (what R_WB and omega_W give, bit for bit, at a third of their cost together).
+  void calc_rotation(double t, Mat3& R_WB_out, Vec3& omega_W_out) const;
 
   Vec3 angular_momentum_W() const;  // about the COM, world; constant
   double kinetic_energy() const;    // rotational, constant

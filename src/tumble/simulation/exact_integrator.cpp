@@ -106,8 +106,7 @@ void ExactIntegrator::dense_output(double t, VecX& y_out) const {
     BodyState& s = scratch_states_[i];
     s.r_G = s0.r_G + s0.v_G * tau + 0.5 * g * tau * tau;
     s.v_G = s0.v_G + g * tau;
-    s.R_WB = rotations_[i].R_WB(tau);
-    s.omega_W = rotations_[i].omega_W(tau);
+    rotations_[i].calc_rotation(tau, s.R_WB, s.omega_W);
   }
   formulation_->pack(scratch_states_, y_out);
 }

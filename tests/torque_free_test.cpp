@@ -354,6 +354,19 @@ TEST(TorqueFreeMotion, RandomBodiesSatisfyEulerAndKinematics) {
   EXPECT_GT(on_each_side[1], 3);
 }
 
+// The chapter's prism spun about its intermediate axis with a tilt of 1e-160 rad/s about its
+// largest: k'^2 ~ 1e-320, a subnormal number, yet not zero, so the orbit is a periodic one with
+// K ~ 370 (a period of 2,460 s). Its precession's series then takes 4,097 samples and 1,192
+// terms: the extreme the transform must carry, exactly (Euler's equations, the kinematics and the
+// invariants, as for any body).
+TEST(TorqueFreeMotion, AnOrbitWhoseModulusUnderflowsIsStillExact) {
+  const Mat3 I = Vec3(5.0, 20.0, 17.0).asDiagonal();
+  const TorqueFreeMotion motion(I, Mat3::Identity(), Vec3(0.0, 1e-160, 1.0));
+  EXPECT_TRUE(std::isfinite(motion.period()));
+  EXPECT_GT(motion.period(), 2000.0);
+  check_properties({"k'^2 underflowing", I, Mat3::Identity(), Vec3(0.0, 1e-160, 1.0)});
+}
+
 // 2 E I_mid / |L|^2 = 1 +- 1e-6 (k'^2 ~ 1e-6, K ~ 8): the orbit lingers near the saddle.
 TEST(TorqueFreeMotion, NearSeparatrix) {
   std::mt19937_64 rng(99);

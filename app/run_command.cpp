@@ -79,7 +79,8 @@ void print_method_switches(const Integrator& integrator) {
     if (automatic->stiff_without_jacobian_at() >= 0.0) {
       fmt::print(
           "; stiff from t = {:.6g} s (dop853's steps held by its stability), but radau5 needs the "
-          "equations' Jacobian, which tumble does not take with contacts: dop853 went on\n",
+          "equations' Jacobian, which tumble does not take while a contact is held on more than "
+          "one point (an edge, a face, a side's line): dop853 went on\n",
           automatic->stiff_without_jacobian_at());
     } else {
       fmt::print(" (no stiffness: dop853 throughout)\n");
@@ -94,6 +95,11 @@ void print_method_switches(const Integrator& integrator) {
           "stability, |h lambda| > {:g}; the last {:.3g})\n",
           change.t, AutoSwitching::kStiffSteps, AutoSwitching::kExplicitStabilityEdge,
           change.h_lambda);
+    } else if (change.modes_without_jacobian()) {
+      fmt::print(
+          "  switch         to dop853 at t = {:.6g} s: a contact is now held on more than one "
+          "point (an edge, a face, a side's line), where radau5 has no Jacobian\n",
+          change.t);
     } else {
       fmt::print(
           "  switch         to dop853 at t = {:.6g} s: no longer stiff ({} of radau5's steps "

@@ -23,7 +23,8 @@ namespace {
 // - sin t, lambda(t) = -1e5 e^(-4 t). From y(0) = 1 the solution is cos t whatever lambda is,
 // and a step's error is pulled back onto it at the rate |lambda|: stiff while |lambda| is far
 // above 1/h (t below about 1.5 s for these tolerances), not stiff after. Its Jacobian is
-// lambda(t); `with_jacobian` false hides it, as a system with contacts has none.
+// lambda(t); `with_jacobian` false hides it, as a free body under gravity alone has none, and
+// `modes_give_jacobian` false hides it in the modes of the moment, as a contact on an edge does.
 class FadingStiffness : public OdeSystem {
  public:
   explicit FadingStiffness(bool with_jacobian = true) : with_jacobian_(with_jacobian) {}
@@ -32,12 +33,16 @@ class FadingStiffness : public OdeSystem {
   void derivative(double t, const VecX& y, VecX& dydt) const override {
     dydt[0] = lambda(t) * (y[0] - std::cos(t)) - std::sin(t);
   }
-  bool jacobian(double t, const VecX& /*y*/, MatX& dfdy) const override {
-    if (!with_jacobian_) return false;
+  bool jacobian(double t, const VecX& y, MatX& dfdy) const override {
+    if (!gives_jacobian_at(t, y)) return false;
     dfdy(0, 0) = lambda(t);
     return true;
   }
   bool gives_jacobian() const override { return with_jacobian_; }
+  bool gives_jacobian_at(double /*t*/, const VecX& /*y*/) const override {
+    return with_jacobian_ && modes_give_jacobian;
+  }
+  bool modes_give_jacobian = true;
 
  private:
   bool with_jacobian_;
@@ -117,6 +122,45 @@ TEST(AutoSwitching, WithoutAJacobianItSaysWhereItWasStiffAndGoesOnWithDop853) {
   EXPECT_EQ(automatic.switch_count(), 0);
   EXPECT_GT(automatic.stiff_without_jacobian_at(), 0.0);
   EXPECT_LT(automatic.stiff_without_jacobian_at(), 5e-3);
+}
+
+TEST(AutoSwitching, AJumpIntoModesWithoutAJacobianHandsTheRunBackToDop853) {
+  FadingStiffness system;
+  const double rtol = 1e-8;
+  AutoSwitching method(test::tolerances(rtol, rtol));
+  method.start(system, 0.0, VecX::Ones(1), kEnd);
+  while (method.method_in_use() != "radau5" || method.implicit_steps() < 5) {
+    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+  }
+  // A jump (nothing moves) into modes that give no Jacobian: DOP853 takes over there at once.
+  const double t_jump = method.t();
+  system.modes_give_jacobian = false;
+  method.restart(t_jump, method.y());
+  ASSERT_EQ(method.switch_count(), 2);
+  EXPECT_FALSE(method.switches()[1].to_implicit);
+  EXPECT_TRUE(method.switches()[1].modes_without_jacobian());
+  EXPECT_EQ(method.switches()[1].t, t_jump);
+  EXPECT_EQ(method.method_in_use(), "dop853");
+  // Still stiff (|lambda| above 1e4 here): DOP853 finds it so again, says where, and keeps the
+  // run.
+  const long radau5_steps = method.implicit_steps();
+  while (method.t() < t_jump + 0.1) ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+  EXPECT_EQ(method.switch_count(), 2);
+  EXPECT_EQ(method.implicit_steps(), radau5_steps);
+  EXPECT_EQ(method.method_in_use(), "dop853");
+  EXPECT_GT(method.stiff_without_jacobian_at(), t_jump);
+  // Back in modes with one, the next stiffness goes to radau5 again; cos t throughout.
+  system.modes_give_jacobian = true;
+  method.restart(method.t(), method.y());
+  double worst = 0.0;
+  while (method.t() < t_jump + 0.3) {
+    ASSERT_EQ(method.step(kEnd), StepOutcome::Ok);
+    worst = std::max(worst, std::abs(method.y()[0] - std::cos(method.t())));
+  }
+  EXPECT_EQ(method.switch_count(), 3);
+  EXPECT_TRUE(method.switches()[2].to_implicit);
+  EXPECT_GT(method.implicit_steps(), radau5_steps);
+  EXPECT_LT(worst, 10.0 * rtol) << worst;
 }
 
 TEST(AutoSwitching, ACloneAndASavedCopyGoOnExactlyAsTheOriginalAcrossTheSwitches) {

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "jacobian_checks.hpp"
 #include "prism_reference.hpp"
 #include "scenario_run.hpp"
 #include "test_files.hpp"
@@ -85,40 +86,6 @@ forces:
 simulate: {duration: 0.1, integrator: radau5, rtol: 1e-8, atol: 1e-10}
 )";
 
-// The largest departure, over the modal directions d_i = E e_i, of P J d_i (the Jacobian's
-// motion along d_i, read in the modal coordinates) from P (f(y + eps d_i) - f(y - eps d_i)) /
-// (2 eps), the run's own equations by central differences, against the largest of them.
-double largest_jacobian_departure(const std::string& yaml, const std::string& name) {
-  const Scenario scenario = test::load_inline_scenario(yaml, name);
-  const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
-  std::unique_ptr<Formulation> run = model->formulation.new_run();
-  const VecX& y = model->y0;
-  run->begin(0.0, y);
-  const Eigen::Index n = y.size();
-  MatX J(n, n);
-  EXPECT_TRUE(run->jacobian(0.0, y, J)) << name;
-  const auto& articulated = dynamic_cast<const ArticulatedFormulation&>(*run);
-  const ArticulatedModel& tree = *articulated.shared_articulated_model();
-  const ModalLayout layout = make_modal_layout(tree, 0.0);
-  MatX E, P;
-  calc_modal_tangent(tree, layout, y, E, P);
-  EXPECT_TRUE((P * E - MatX::Identity(layout.size(), layout.size())).isZero(1e-14)) << name;
-  double departure = 0.0, largest = 0.0;
-  VecX f_plus(n), f_minus(n);
-  for (Eigen::Index i = 0; i < layout.size(); ++i) {
-    const VecX d = E.col(i);
-    // Central differences: truncation about eps^2 of the scale, round-off about 1e-16 / eps.
-    const double eps = 1e-6;
-    run->derivative(0.0, y + eps * d, f_plus);
-    run->derivative(0.0, y - eps * d, f_minus);
-    const VecX by_differences = P * (f_plus - f_minus) / (2.0 * eps);
-    const VecX by_jacobian = P * J * d;
-    departure = std::max(departure, (by_differences - by_jacobian).cwiseAbs().maxCoeff());
-    largest = std::max(largest, by_jacobian.cwiseAbs().maxCoeff());
-  }
-  return departure / largest;
-}
-
 // A chain of twenty points on hinges, bent into a zigzag: forty modal coordinates, more than a
 // dual number carries (kDualSeeds), so its Jacobian is taken in two evaluations.
 std::string zigzag_chain() {
@@ -142,12 +109,13 @@ std::string zigzag_chain() {
 TEST(StateJacobian, IsTheRunsOwnAlongEveryModalDirection) {
   // Wrong by a term (a sign, a coupling, a frame) would be wrong by O(1) of some column; central
   // differences agree with the exact derivative to about 1e-9 of the largest entry here.
-  EXPECT_LT(largest_jacobian_departure(test::replaced(kMount, "v0: 0", "v0: 0.3"), "mount"), 1e-7);
-  EXPECT_LT(largest_jacobian_departure(kDoublePendulum, "double_pendulum"), 1e-7);
-  EXPECT_LT(largest_jacobian_departure(kTop, "top"), 1e-7);
-  EXPECT_LT(largest_jacobian_departure(kHung, "hung"), 1e-7);
+  EXPECT_LT(test::largest_jacobian_departure(test::replaced(kMount, "v0: 0", "v0: 0.3"), "mount"),
+            1e-7);
+  EXPECT_LT(test::largest_jacobian_departure(kDoublePendulum, "double_pendulum"), 1e-7);
+  EXPECT_LT(test::largest_jacobian_departure(kTop, "top"), 1e-7);
+  EXPECT_LT(test::largest_jacobian_departure(kHung, "hung"), 1e-7);
   static_assert(40 > kDualSeeds);
-  EXPECT_LT(largest_jacobian_departure(zigzag_chain(), "zigzag_chain"), 1e-7);
+  EXPECT_LT(test::largest_jacobian_departure(zigzag_chain(), "zigzag_chain"), 1e-7);
 }
 
 TEST(Radau5Runs, TheStiffMountFollowsItsClosedFormInAFewHundredSteps) {

@@ -128,7 +128,7 @@ void ContactSystem::calc_contact_points() const {
   }
 }
 
-Vec3 ContactSystem::slide_direction(std::size_t c) const {
+Vec3 ContactSystem::slide_direction(std::size_t c, bool* follows_slip) const {
   const ContactStatus& status = s_.contacts[c];
   const Vec3& slip_W = d_.now[c].slip_W;
   const double slip = slip_W.norm();
@@ -137,10 +137,37 @@ Vec3 ContactSystem::slide_direction(std::size_t c) const {
   // right-hand side runs on smoothly through the stop that the slip-stop event locates.
   const bool followed = slip > status.slip_zero || (status.slip_grown && slip > status.slip_floor &&
                                                     slip_W.dot(status.slide_direction_W) > 0.0);
+  if (follows_slip != nullptr) *follows_slip = followed;
   if (followed) return slip_W / slip;
   if (status.slide_turn_W.isZero(0.0)) return status.slide_direction_W;
   const double since = d_.time_now - status.slide_start_t;
   return (status.slide_direction_W + since * status.slide_turn_W).normalized();
+}
+
+void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> holds) const {
+  set_time(t);
+  dynamics_.calc_motion(y, true);
+  calc_contact_points();
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const ContactStatus& status = s_.contacts[c];
+    const ContactNow& now = d_.now[c];
+    ContactHold& hold = holds[c];
+    hold = ContactHold{};
+    if (status.mode == ContactMode::Apart) continue;
+    if (now.normal_point_count != 1 || now.spin_radius != 0.0) {
+      hold.kind = ContactHold::Kind::Features;
+      continue;
+    }
+    if (status.mode == ContactMode::Rolling) {
+      hold.kind = ContactHold::Kind::Point;
+      continue;
+    }
+    hold.kind = ContactHold::Kind::Normal;
+    hold.friction = contacts_[c].friction;
+    const Vec3& n = contacts_[c].normal_W;
+    const Vec3 slide_W = slide_direction(c, &hold.follows_slip);
+    hold.slide_W = slide_W - n * n.dot(slide_W);
+  }
 }
 
 Vec3 ContactSystem::moving_point_acceleration_W(const BodyMotion& w, const Vec3& p_B,

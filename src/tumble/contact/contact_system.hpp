@@ -26,6 +26,7 @@
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/contact/contact_data.hpp"
 #include "tumble/contact/contact_dynamics.hpp"
+#include "tumble/contact/contact_hold.hpp"
 #include "tumble/contact/contact_pair.hpp"
 #include "tumble/contact/contact_status.hpp"
 #include "tumble/contact/plane_contact.hpp"
@@ -86,6 +87,9 @@ class ContactSystem {
   // While a contact is apart: no step so long that a point of its surface could dip through the
   // plane and back unseen (landing_bound.hpp).
   double step_limit(double t, const VecX& y) const;
+  // How each contact holds its body at (t, y) in its current mode, into `holds` (one per
+  // contact): what the Jacobian of the run's equations takes of it.
+  void calc_holds(double t, const VecX& y, std::span<ContactHold> holds) const;
 
  private:
   // Every body's motion at y under its loads and the contacts' forces in their current modes,
@@ -132,8 +136,9 @@ class ContactSystem {
   // project()'s position step when a polyhedron, a round body or a held body touches (after
   // calc_contact_points).
   void project_feature_positions(VecX& y) const;
-  // The current slip direction of a sliding contact (at d_.time_now).
-  Vec3 slide_direction(std::size_t contact) const;
+  // The current slip direction of a sliding contact (at d_.time_now); `follows_slip` (where
+  // given): whether it is the slip's own direction rather than one the slip is held to.
+  Vec3 slide_direction(std::size_t contact, bool* follows_slip = nullptr) const;
   // The slip direction of a contact that must slide with no slip yet: the way it is pushed,
   // against the friction sticking needs (from d_.now).
   Vec3 pushed_direction(std::size_t contact) const;

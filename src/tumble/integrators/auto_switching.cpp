@@ -25,8 +25,12 @@ void AutoSwitching::start(OdeSystem& system, double t0, const VecX& y0, double t
 
 void AutoSwitching::restart(double t, const VecX& y) {
   if (system_ == nullptr) throw std::logic_error("auto: restart() before start()");
+  if (implicit_active_ && !switch_armed_ && !system_->gives_jacobian_at(t, y)) {
+    switch_armed_ = true;  // the jump left radau5 without a Jacobian: DOP853 takes over
+    armed_h_lambda_ = MethodSwitch::kModesWithoutJacobian;
+  }
   if (switch_armed_) {
-    take_switch(t, y);
+    take_switch(t, y, true);
   } else {
     active().restart(t, y);
     // The jump's state is new: the tests count from it.
@@ -45,7 +49,7 @@ std::unique_ptr<Integrator> AutoSwitching::clone_onto(OdeSystem& system) const {
 
 StepOutcome AutoSwitching::step(double t_stop) {
   if (system_ == nullptr) throw std::logic_error("auto: step() before start()");
-  if (switch_armed_) take_switch(t_, y_);
+  if (switch_armed_) take_switch(t_, y_, false);
   Integrator& method = active();
   method.bound_next_step(step_bound_);
   const StepOutcome outcome = method.step(t_stop);
@@ -62,7 +66,7 @@ void AutoSwitching::watch_stiffness() {
       calm_steps_ = 0;
       if (++stiff_steps_ < kStiffSteps) return;
       stiff_steps_ = 0;
-      if (implicit_available_) {
+      if (implicit_available_ && system_->gives_jacobian_at(explicit_.t(), explicit_.y())) {
         switch_armed_ = true;
         armed_h_lambda_ = h_lambda;
       } else if (stiff_without_jacobian_at_ < 0.0) {
@@ -83,11 +87,17 @@ void AutoSwitching::watch_stiffness() {
   }
 }
 
-void AutoSwitching::take_switch(double t, const VecX& y) {
+void AutoSwitching::take_switch(double t, const VecX& y, bool after_jump) {
   switch_armed_ = false;
   stiff_steps_ = calm_steps_ = 0;
   if (t == t_end_) {  // a restart at the run's end (an event there): no step is left to switch
     active().restart(t, y);
+    return;
+  }
+  if (!implicit_active_ && !system_->gives_jacobian_at(t, y)) {
+    // A jump since the test fired put a contact on more than one point: DOP853 goes on.
+    if (stiff_without_jacobian_at_ < 0.0) stiff_without_jacobian_at_ = t;
+    if (after_jump) explicit_.restart(t, y);
     return;
   }
   if (switch_count_ < kKeptSwitches) {

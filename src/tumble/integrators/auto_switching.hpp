@@ -17,8 +17,11 @@
 // first): the step just taken keeps its continuous extension for the driver's rows and events.
 // The method switched to restarts from the state there, as after a jump (radau5 starts the first
 // time with its own first step; DOP853 goes on from its last step size).
-// Where the system gives no Jacobian (contacts; free bodies under gravity alone, which are never
-// stiff), auto is DOP853 throughout, and a stiffness it detects is reported, once, as not taken.
+// Where the system gives no Jacobian (free bodies under gravity alone, which are never stiff),
+// auto is DOP853 throughout, and a stiffness it detects is reported, once, as not taken. Where
+// it gives none only in some modes (a contact held on more than one point: an edge, a face, a
+// side's line), auto does not switch to radau5 in them, and a jump into one while radau5 runs
+// hands the run back to DOP853 (a switch with h_lambda kModesWithoutJacobian).
 //
 // No allocation in a step: the switches are kept in a fixed array (the first kKeptSwitches of
 // them, and the count of all).
@@ -34,7 +37,10 @@ namespace tumble {
 struct MethodSwitch {
   double t = 0.0;  // s, where the next method takes over
   bool to_implicit = false;
-  double h_lambda = 0.0;  // the |h| |lambda| of the step that decided it
+  double h_lambda = 0.0;  // the |h| |lambda| of the step that decided it, or:
+  // a jump into modes in which the system gives no Jacobian decided it (back to DOP853)
+  static constexpr double kModesWithoutJacobian = -1.0;
+  bool modes_without_jacobian() const { return h_lambda == kModesWithoutJacobian; }
 };
 
 class AutoSwitching final : public Integrator {
@@ -64,7 +70,8 @@ class AutoSwitching final : public Integrator {
     return {switches_.data(), std::min<std::size_t>(switch_count_, kKeptSwitches)};
   }
   long switch_count() const { return static_cast<long>(switch_count_); }
-  // Where DOP853 found the problem stiff but the system gives no Jacobian (negative: never).
+  // Where DOP853 first found the problem stiff but the system gave no Jacobian there (negative:
+  // never).
   double stiff_without_jacobian_at() const { return stiff_without_jacobian_at_; }
   // Accepted steps taken by each method.
   long explicit_steps() const { return explicit_.stats().accepted_steps; }
@@ -85,8 +92,9 @@ class AutoSwitching final : public Integrator {
   }
   // Reads the last step's |h lambda| and arms a switch when a test fires.
   void watch_stiffness();
-  // Hands the run to the other method at (t, y).
-  void take_switch(double t, const VecX& y);
+  // Hands the run to the other method at (t, y) (after a jump: the active method restarts there
+  // if it keeps the run); DOP853 keeps it where the system gives no Jacobian at (t, y).
+  void take_switch(double t, const VecX& y, bool after_jump);
   // The active method's t, y, step and bound, mirrored into this one's (Integrator's accessors).
   void mirror_active();
 

@@ -59,8 +59,11 @@ class OdeSystem {
   // needs a new Jacobian (a method keeps one while its Newton iteration converges fast), never
   // inside a step's stages; it may allocate.
   virtual bool jacobian(double t, const VecX& y, MatX& dfdy) const;
-  // Whether jacobian() gives one at all (what `auto` asks before it would switch to radau5).
+  // Whether jacobian() gives one at all, in some modes at least (what `auto` asks at its start).
   virtual bool gives_jacobian() const { return false; }
+  // Whether it gives one at (t, y) in the system's current modes (what `auto` asks before it
+  // switches to radau5, and after each jump while radau5 runs); the default: gives_jacobian().
+  virtual bool gives_jacobian_at(double /*t*/, const VecX& /*y*/) const { return gives_jacobian(); }
 
   // Put y back onto the manifold and the constraints after every accepted step and after every
   // jump. The default normalises the unit quaternions.

@@ -9,30 +9,64 @@
 
 namespace tumble {
 
+namespace {
+
+// Where contact c touches at one point, its body turned by R_WB (per body) and `lowest` its
+// support point; throws NotSteady where it rests on more.
+ModalContact point_contact(const Model& model, std::size_t c, const std::vector<Mat3>& R_WB,
+                           const SupportPoint& lowest) {
+  const PlaneContact& contact = model.contacts[c];
+  const Mat3& R = R_WB[contact.body];
+  // The height over the plane of a point of the body (body axes, from the COM).
+  const auto height_of = [&](const Vec3& p_B) {
+    return lowest.height + (p_B - lowest.p_GC_B).dot(R.transpose() * contact.normal_W);
+  };
+  ModalContact held;
+  held.contact = c;
+  const std::string why =
+      contact_pair(contact.surface.kind)
+          .resting_point(contact.surface, R.transpose() * contact.normal_W, lowest,
+                         touching_height(contact.surface), height_of, held.point);
+  if (!why.empty()) throw NotSteady(fmt::format("contact {}: {}", contact.name, why));
+  return held;
+}
+
+}  // namespace
+
 std::vector<ModalContact> touching_contacts(const Model& model, const std::vector<Vec3>& r_G_W,
                                             const std::vector<Mat3>& R_WB) {
   std::vector<ModalContact> touching;
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     const PlaneContact& contact = model.contacts[c];
-    const Mat3& R = R_WB[contact.body];
-    const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R);
-    const double within = touching_height(contact.surface);
-    if (lowest.height > within) continue;  // apart: no force, and none from a small change
-    const std::string& name = contact.name;
-    // The height over the plane of a point of the body (body axes, from the COM).
-    const auto height_of = [&](const Vec3& p_B) {
-      return lowest.height + (p_B - lowest.p_GC_B).dot(R.transpose() * contact.normal_W);
-    };
-    ModalContact held;
-    held.contact = c;
+    const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);
+    if (lowest.height > touching_height(contact.surface)) {
+      continue;  // apart: no force, and none from a small change
+    }
+    ModalContact held = point_contact(model, c, R_WB, lowest);
     held.rolls = contact.friction > 0.0;
-    const std::string why = contact_pair(contact.surface.kind)
-                                .resting_point(contact.surface, R.transpose() * contact.normal_W,
-                                               lowest, within, height_of, held.point);
-    if (!why.empty()) throw NotSteady(fmt::format("contact {}: {}", name, why));
     touching.push_back(held);
   }
   return touching;
+}
+
+std::vector<ModalContact> held_contacts(const Model& model, std::span<const ContactHold> holds,
+                                        const std::vector<Vec3>& r_G_W,
+                                        const std::vector<Mat3>& R_WB) {
+  std::vector<ModalContact> held;
+  for (std::size_t c = 0; c < model.contacts.size(); ++c) {
+    const ContactHold& hold = holds[c];
+    if (hold.kind == ContactHold::Kind::Apart) continue;
+    const PlaneContact& contact = model.contacts[c];
+    if (hold.kind == ContactHold::Kind::Features) {
+      throw NotSteady(fmt::format("contact {}: held on more than one point", contact.name));
+    }
+    const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);
+    ModalContact point = point_contact(model, c, R_WB, lowest);
+    point.rolls = hold.kind == ContactHold::Kind::Point;
+    if (!point.rolls) point.sliding = hold;
+    held.push_back(point);
+  }
+  return held;
 }
 
 }  // namespace tumble

@@ -6,10 +6,13 @@
 // resting on an edge, a face or a line of its side is refused: a small tilt moves its force to
 // one edge or the other, and the motion has no linearisation there. What touches is decided by
 // the run's touching height (contact/plane_contact.hpp) and where the point is by the contact's
-// geometry (contact/contact_point.hpp).
+// geometry (contact/contact_point.hpp). The run's Jacobian (state_jacobian.hpp) holds a run's
+// contacts instead, in their modes, a sliding one with its friction.
+#include <span>
 #include <string>
 #include <vector>
 
+#include "tumble/contact/contact_hold.hpp"
 #include "tumble/contact/contact_point.hpp"
 #include "tumble/dynamics/model.hpp"
 
@@ -18,7 +21,11 @@ namespace tumble {
 struct ModalContact {
   std::size_t contact = 0;  // in the model's contacts
   ContactPoint point;       // where it touches
-  bool rolls = true;        // with friction: the point's whole motion held; without: the normal
+  // Rolling or sticking (with friction): the point's whole motion held (three rows); otherwise
+  // only its normal motion (one row), frictionless or, in a run's sliding mode, with Coulomb's
+  // friction mu N along the slip (ContactHold's friction, follows_slip and slide_W).
+  bool rolls = true;
+  ContactHold sliding;
   int rows() const { return rolls ? 3 : 1; }
 };
 
@@ -26,5 +33,10 @@ struct ModalContact {
 // for one resting on an edge, a face or a line.
 std::vector<ModalContact> touching_contacts(const Model& model, const std::vector<Vec3>& r_G_W,
                                             const std::vector<Mat3>& R_WB);
+// The contacts as a run's modes hold them (`holds`, one per contact: contact_hold.hpp), with the
+// bodies at r_G_W, R_WB. Throws NotSteady for a hold on more than one point.
+std::vector<ModalContact> held_contacts(const Model& model, std::span<const ContactHold> holds,
+                                        const std::vector<Vec3>& r_G_W,
+                                        const std::vector<Mat3>& R_WB);
 
 }  // namespace tumble

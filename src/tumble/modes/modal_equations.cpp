@@ -24,13 +24,18 @@ using MX = MatXOf<S>;
 template <typename S>
 using M3X = Eigen::Matrix<S, 3, Eigen::Dynamic>;
 
-// The solution of M x = b, M symmetric positive definite (the mass matrix).
+// The solution of M x = b, M symmetric positive definite (the mass matrix), and of A x = b for
+// a general A (with a sliding contact's friction, the complement is not symmetric).
 VecX solve_mass(const MatX& M, const VecX& b) {
   return M.ldlt().solve(b);
 }
+VecX solve_general(const MatX& A, const VecX& b) {
+  return A.partialPivLu().solve(b);
+}
 // With derivatives: x = M^-1 b, and along each seed x' = M^-1 (b' - M' x), so the factorisation is
-// of plain numbers.
-VecXOf<Dual> solve_mass(const MX<Dual>& M, const VecXOf<Dual>& b) {
+// of plain numbers (Factors: Eigen's LDLT or PartialPivLU).
+template <typename Factors>
+VecXOf<Dual> solve_factored(const MX<Dual>& M, const VecXOf<Dual>& b) {
   const Eigen::Index n = b.size();
   Eigen::Index seeds = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -46,7 +51,7 @@ VecXOf<Dual> solve_mass(const MX<Dual>& M, const VecXOf<Dual>& b) {
     b0(i) = b(i).value();
     for (Eigen::Index j = 0; j < n; ++j) M0(i, j) = M(i, j).value();
   }
-  const Eigen::LDLT<MatX> factors(M0);
+  const Factors factors(M0);
   const VecX x0 = factors.solve(b0);
   MatX rhs(n, seeds);  // column s: b' - M' x along seed s
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -58,6 +63,12 @@ VecXOf<Dual> solve_mass(const MX<Dual>& M, const VecXOf<Dual>& b) {
   VecXOf<Dual> x(n);
   for (Eigen::Index i = 0; i < n; ++i) x(i) = Dual(x0(i), dx.row(i).transpose());
   return x;
+}
+VecXOf<Dual> solve_mass(const MX<Dual>& M, const VecXOf<Dual>& b) {
+  return solve_factored<Eigen::LDLT<MatX>>(M, b);
+}
+VecXOf<Dual> solve_general(const MX<Dual>& A, const VecXOf<Dual>& b) {
+  return solve_factored<Eigen::PartialPivLU<MatX>>(A, b);
 }
 
 // The values of a matrix without their derivatives.
@@ -83,6 +94,16 @@ struct ModalKinematics {
 ModalEquations::ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout,
                                VecX y0, double t0)
     : model_(std::move(model)), layout_(std::move(layout)), y0_(std::move(y0)), t0_(t0) {
+  set_up(nullptr);
+}
+
+ModalEquations::ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout,
+                               VecX y0, double t0, std::span<const ContactHold> holds)
+    : model_(std::move(model)), layout_(std::move(layout)), y0_(std::move(y0)), t0_(t0) {
+  set_up(&holds);
+}
+
+void ModalEquations::set_up(const std::span<const ContactHold>* holds) {
   const std::size_t n = model_->tree.size();
   // Unknown accelerations: the speeds of the joints that are neither held nor driven.
   unknown_.assign(n, -1);
@@ -100,7 +121,8 @@ ModalEquations::ModalEquations(std::shared_ptr<const ArticulatedModel> model, Mo
       r_G_W[model_->tree[k].child] = kin[k].r_G;
       R_WB[model_->tree[k].child] = kin[k].R_WC;
     }
-    contacts_ = touching_contacts(model_->model, r_G_W, R_WB);
+    contacts_ = holds != nullptr ? held_contacts(model_->model, *holds, r_G_W, R_WB)
+                                 : touching_contacts(model_->model, r_G_W, R_WB);
   }
   for (const JointModel& joint : model_->model.joints) {
     if (joint.closes_loop) loops_.push_back(loop_shape_of(joint));
@@ -384,11 +406,18 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
   // G M^-1 G^T lambda = -kappa - G M^-1 Q.
   // The loops' rows are held the same way, those independent at t0 (the others follow).
   Eigen::Index rows = static_cast<Eigen::Index>(loop_rows_held_.size());
-  for (const ModalContact& contact : contacts_) rows += contact.rows();
+  bool slides = false;  // with friction on a sliding contact's push: D differs from G
+  for (const ModalContact& contact : contacts_) {
+    rows += contact.rows();
+    slides = slides || (!contact.rolls && contact.sliding.friction > 0.0);
+  }
   if (rows > 0) {
     MX<S> G = MX<S>::Zero(rows, unknowns);
+    MX<S> D = MX<S>::Zero(slides ? rows : 0, unknowns);  // the forces' directions (G^T's, D^T)
+    std::vector<Vec3> push_W(contacts_.size());          // per contact: a unit push's force, world
     VecXOf<S> kappa(rows);
     Eigen::Index row = 0;
+    std::size_t index = 0;
     for (const ModalContact& held : contacts_) {
       const PlaneContact& contact = model.contacts[held.contact];
       const auto kb = static_cast<std::size_t>(m.slot_of_body[contact.body]);
@@ -402,12 +431,29 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
       if (held.rolls) {
         G.middleRows(row, 3) = J_P;
         kappa.template segment<3>(row) = a_P0;
+        if (slides) D.middleRows(row, 3) = J_P;
       } else {
         const V3<S> n_W = contact.normal_W.cast<S>();
         G.row(row) = n_W.transpose() * J_P;
         kappa(row) = n_W.dot(a_P0);
+        V3<S> push = n_W;
+        if (held.sliding.friction > 0.0) {
+          // Coulomb's friction rides on the push: -mu N along the slip of the body's point
+          // there, or along the direction a slip not yet grown is held to.
+          V3<S> slide = held.sliding.slide_W.cast<S>();
+          if (held.sliding.follows_slip) {
+            using std::sqrt;
+            const V3<S> v_P = c.v_G + c.omega.cross(p_GP_W);
+            const V3<S> slip = v_P - n_W * n_W.dot(v_P);
+            slide = slip / sqrt(slip.squaredNorm());
+          }
+          push -= held.sliding.friction * slide;
+        }
+        if (slides) D.row(row) = push.transpose() * J_P;
+        push_W[index] = push.unaryExpr([](const S& x) { return value_of(x); });
       }
       row += held.rows();
+      ++index;
     }
     if (!loop_rows_held_.empty()) {
       MX<S> G_loops(loop_rows_, unknowns);
@@ -415,16 +461,23 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
       calc_loop_rows<S>(kin, J_v, J_w, G_loops, kappa_loops);
       for (const Eigen::Index held : loop_rows_held_) {
         G.row(row) = G_loops.row(held);
+        if (slides) D.row(row) = G_loops.row(held);
         kappa(row++) = kappa_loops(held);
       }
     }
-    MX<S> response(unknowns, rows);  // M^-1 G^T
+    const MX<S>& forces = slides ? D : G;
+    MX<S> response(unknowns, rows);  // M^-1 D^T
     for (Eigen::Index j = 0; j < rows; ++j) {
-      response.col(j) = solve_mass(mass, VecXOf<S>(G.row(j).transpose()));
+      response.col(j) = solve_mass(mass, VecXOf<S>(forces.row(j).transpose()));
     }
     const MX<S> schur = G * response;
-    // Rows the joints already hold (a point on a hinge's axis) leave it singular.
-    const Eigen::SelfAdjointEigenSolver<MatX> definite(values_of(schur));
+    // Rows the joints already hold (a point on a hinge's axis) leave G M^-1 G^T singular.
+    MatX held_rows = values_of(schur);
+    if (slides) {
+      const MatX G0 = values_of(G);
+      held_rows = G0 * values_of(mass).ldlt().solve(MatX(G0.transpose()));
+    }
+    const Eigen::SelfAdjointEigenSolver<MatX> definite(held_rows);
     if (definite.eigenvalues()(0) <= 1e-12 * definite.eigenvalues()(rows - 1)) {
       if (!loops_.empty()) {
         throw NotSteady(
@@ -435,17 +488,18 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
           "contacts: a touching point's motion is already held by the joints (or by another "
           "contact): its force is not determined, and a linearisation needs it");
     }
-    const VecXOf<S> lambda = solve_mass(schur, VecXOf<S>(-kappa - G * u_dot));
+    const VecXOf<S> rhs = -kappa - G * u_dot;
+    const VecXOf<S> lambda = slides ? solve_general(schur, rhs) : solve_mass(schur, rhs);
     u_dot += response * lambda;
     if (contact_forces_W != nullptr) {
       contact_forces_W->clear();
       row = 0;
-      for (const ModalContact& held : contacts_) {
-        const Vec3& n_W = model.contacts[held.contact].normal_W;
+      for (std::size_t i = 0; i < contacts_.size(); ++i) {
+        const ModalContact& held = contacts_[i];
         contact_forces_W->push_back(
             held.rolls
                 ? Vec3(value_of(lambda(row)), value_of(lambda(row + 1)), value_of(lambda(row + 2)))
-                : Vec3(value_of(lambda(row)) * n_W));
+                : Vec3(value_of(lambda(row)) * push_W[i]));
         row += held.rows();
       }
     }

@@ -25,7 +25,9 @@
 // dampers, the motors' efforts at t0; joints held or driven at t0 keep their speed. Contacts
 // touching at t0 hold their point (modal_contacts.hpp): rolling, or frictionless on the plane, by
 // the forces lambda that keep the constraints' accelerations zero (G u' + kappa = 0), found from
-// the Schur complement of the mass matrix, G M^-1 G^T lambda = -kappa - G M^-1 Q. The flow keeps
+// the Schur complement of the mass matrix, G M^-1 G^T lambda = -kappa - G M^-1 Q. (A run's sliding
+// contact holds its normal row with a force along n - mu s, s the slip's direction: its column of
+// G^T becomes that force's, D^T, and the complement G M^-1 D^T.) The flow keeps
 // the constraints, so the state stays on them; linearise() takes the modes on their tangent
 // space. Impulses and later schedule changes are not part of a linearisation about t0. Joints
 // that close loops are held the same way, by their rows (multibody/loop_rows.hpp, the run's):
@@ -64,6 +66,12 @@ class ModalEquations {
  public:
   ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout, VecX y0,
                  double t0);
+  // The same about a run's state, its contacts held as the run's modes hold them (`holds`, one
+  // per contact: contact/contact_hold.hpp) rather than those touching: a sliding contact keeps
+  // its normal row and carries Coulomb's friction (the run's Jacobian, state_jacobian.hpp).
+  // Throws NotSteady where a hold is on more than one point.
+  ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout, VecX y0,
+                 double t0, std::span<const ContactHold> holds);
 
   const ArticulatedModel& model() const { return *model_; }
   const std::shared_ptr<const ArticulatedModel>& shared_model() const { return model_; }
@@ -105,6 +113,9 @@ class ModalEquations {
   void calc_body_jacobians(const std::vector<ModalKinematics<Scalar>>& kin,
                            std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
                            std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_w) const;
+  // What both constructors do: the unknowns, the contacts (those touching, or as `holds` hold
+  // them where given) and the loops.
+  void set_up(const std::span<const ContactHold>* holds);
   // Of the loops' rows, the independent ones at z = 0, into loop_rows_held_.
   void select_loop_rows();
   // A body's pose and twist for the loops' rows (ground: at rest).

@@ -1,7 +1,11 @@
 #include "tumble/modes/state_jacobian.hpp"
 
+#include <optional>
+#include <stdexcept>
+
 #include "tumble/modes/linearisation.hpp"
 #include "tumble/modes/modal_equations.hpp"
+#include "tumble/modes/not_steady.hpp"
 
 namespace tumble {
 
@@ -16,15 +20,27 @@ void calc_modal_tangent(const ArticulatedModel& model, const ModalLayout& layout
 }
 
 bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, double t,
-                         const VecX& y, MatX& dfdy) {
-  if (!model->model.contacts.empty()) return false;
+                         const VecX& y, std::span<const ContactHold> holds, MatX& dfdy) {
+  if (holds.size() != model->model.contacts.size()) {
+    throw std::invalid_argument("calc_state_jacobian: one hold per contact");
+  }
+  for (const ContactHold& hold : holds) {
+    if (hold.kind == ContactHold::Kind::Features) return false;
+  }
   dfdy.setZero();
   ModalLayout layout = make_modal_layout(*model, t);
   const Eigen::Index n = layout.size();
   if (n == 0) return true;  // every joint held or driven: nothing depends on the state
   MatX E, P;
   calc_modal_tangent(*model, layout, y, E, P);
-  const ModalEquations equations(model, std::move(layout), y, t);
+  std::optional<ModalEquations> built;
+  try {
+    built.emplace(model, std::move(layout), y, t, holds);
+  } catch (const NotSteady&) {
+    dfdy.setZero();
+    return false;  // a point the run holds that the modal geometry puts on more than one
+  }
+  const ModalEquations& equations = *built;
   const MatX rates_jacobian =
       jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.rates<Dual>(z); }, n);
   dfdy.noalias() = E * rates_jacobian * P;

@@ -6,16 +6,21 @@
 // coordinates joint by joint (JointKind::add_modal_tangent):
 //     df/dy = E (dz'/dz) P,   E = dy/dz, P = dz/dy (P E = I).
 // So it has what the modal equations hold: gravity, the loads and motors in force at t, springs
-// and dampers, the loops' constraints (the motion on their manifold). Joints held or driven at t
+// and dampers, the loops' constraints (the motion on their manifold), the contacts in their
+// modes. Joints held or driven at t
 // have no modal coordinates: their rows and columns are zero, as are the work ledger's (nothing
 // depends on the books). A quaternion's direction off the unit sphere, which the projection
-// removes, has none either. Differences from the exact df/dy there only slow Newton's
-// convergence; they do not change what the method converges to.
+// removes, has none either. Nor has the curvature of the coordinates, (dP/dy) f: a free body's
+// speeds are kept in its own axes, and the terms of the size of its angular velocity and its
+// acceleration that turning those axes adds are left out. Differences from the exact df/dy there
+// only slow Newton's convergence; they do not change what the method converges to.
 //
 // Each call builds the modal equations about y (it allocates: an implicit method takes a
 // Jacobian at the start of a step, and keeps it while Newton converges fast).
 #include <memory>
+#include <span>
 
+#include "tumble/contact/contact_hold.hpp"
 #include "tumble/math/types.hpp"
 #include "tumble/modes/modal_coordinates.hpp"
 #include "tumble/multibody/articulated_model.hpp"
@@ -28,10 +33,14 @@ void calc_modal_tangent(const ArticulatedModel& model, const ModalLayout& layout
                         MatX& E, MatX& P);
 
 // df/dy at (t, y) into dfdy (sized to y's dimension by the caller); t is the schedule's time
-// (which loads, motors and holds are in force). Returns false, writing nothing, for a model with
-// contacts: their modes have no Jacobian yet. ArticulatedFormulation::set_state_jacobian takes
-// it (the simulation layer hands it over: the formulation does not depend on this layer).
+// (which loads, motors and holds are in force), `holds` how the contacts hold their bodies in
+// the run's modes (one per contact: contact/contact_hold.hpp; empty without contacts): rolling or
+// sticking at a point, or sliding at one with Coulomb's friction, whose direction the slip's
+// velocity turns (the stiff part of a slip just grown from none). Returns false, writing
+// nothing, where a contact is held on more than one point (an edge, a face, a side's line): those
+// modes have no Jacobian yet. ArticulatedFormulation::set_state_jacobian takes it (the
+// simulation layer hands it over: the formulation does not depend on this layer).
 bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, double t,
-                         const VecX& y, MatX& dfdy);
+                         const VecX& y, std::span<const ContactHold> holds, MatX& dfdy);
 
 }  // namespace tumble

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -360,13 +361,25 @@ void ArticulatedFormulation::write_joint_powers(const VecX& y, VecX& rates,
   for (; entry < rates.size(); ++entry) rates(entry) = 0.0;
 }
 
-bool ArticulatedFormulation::jacobian(double /*t*/, const VecX& y, MatX& dfdy) const {
-  return state_jacobian_ != nullptr &&
-         state_jacobian_(shared_articulated_, s_.schedule_time, y, dfdy);
+bool ArticulatedFormulation::jacobian(double t, const VecX& y, MatX& dfdy) const {
+  if (state_jacobian_ == nullptr) return false;
+  holds_.resize(contacts_.size());
+  if (!contacts_.empty()) contacts_.calc_holds(t, y, holds_);
+  return state_jacobian_(shared_articulated_, s_.schedule_time, y, holds_, dfdy);
 }
 
 bool ArticulatedFormulation::gives_jacobian() const {
-  return state_jacobian_ != nullptr && shared_articulated_->model.contacts.empty();
+  return state_jacobian_ != nullptr;
+}
+
+bool ArticulatedFormulation::gives_jacobian_at(double t, const VecX& y) const {
+  if (state_jacobian_ == nullptr) return false;
+  if (contacts_.empty()) return true;
+  holds_.resize(contacts_.size());
+  contacts_.calc_holds(t, y, holds_);
+  return std::none_of(holds_.begin(), holds_.end(), [](const ContactHold& hold) {
+    return hold.kind == ContactHold::Kind::Features;
+  });
 }
 
 void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) const {

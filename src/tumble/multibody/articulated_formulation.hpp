@@ -76,16 +76,17 @@ class ArticulatedFormulation final : public Formulation {
   std::span<const EventSpec> events() const override { return m_.event_specs; }
   void event_functions(double t, const VecX& y, VecX& g) const override;
   EventAction on_event(std::size_t event_index, double t, VecX& y) override;
-  // df/dy at the schedule's mode, from the function set_state_jacobian gave (false without one,
-  // or where it has none).
+  // df/dy at the schedule's mode and the contacts' modes, from the function set_state_jacobian
+  // gave (false without one, or where it has none: a contact held on more than one point).
   bool jacobian(double t, const VecX& y, MatX& dfdy) const override;
-  // With a source and without contacts (whose modes it does not differentiate).
+  // With a source; at (t, y) where no contact is held on more than one point (ContactHold).
   bool gives_jacobian() const override;
+  bool gives_jacobian_at(double t, const VecX& y) const override;
   // The Jacobian's source: automatic differentiation of the one physics
   // (modes/state_jacobian.hpp), which this layer does not depend on; the simulation layer hands
   // it over (FormulationModel::new_run).
   using StateJacobian = bool (*)(const std::shared_ptr<const ArticulatedModel>& model, double t,
-                                 const VecX& y, MatX& dfdy);
+                                 const VecX& y, std::span<const ContactHold> holds, MatX& dfdy);
   void set_state_jacobian(StateJacobian source) { state_jacobian_ = source; }
   // Normalises the quaternions, then puts each touching contact back on the plane and its
   // velocity on the mode's constraints (no normal velocity; rolling: no slip), and closes the
@@ -182,6 +183,8 @@ class ArticulatedFormulation final : public Formulation {
   };
 
   StateJacobian state_jacobian_ = nullptr;
+  // How each contact holds its body, for the Jacobian (refreshed at each one asked for).
+  mutable std::vector<ContactHold> holds_;
   std::shared_ptr<const ArticulatedModel> shared_articulated_;
   const ArticulatedModel& m_;  // *shared_articulated_: constant, shared by every run
   // This run's scratch, written by const evaluations (derivative, event functions, rows): a

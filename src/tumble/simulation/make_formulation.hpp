@@ -41,8 +41,9 @@ class FormulationModel {
   bool keeps_work_ledger() const { return keeps_work_ledger_; }
   Eigen::Index dimension() const { return dimension_; }
   bool has_unit_quaternions() const { return has_unit_quaternions_; }
-  // Whether its runs give their Jacobian df/dy (an implicit method's need): the articulated
-  // form's, without contacts (modes/state_jacobian.hpp).
+  // Whether its runs give their Jacobian df/dy in every mode (an implicit method's need): the
+  // articulated form's, without contacts (modes/state_jacobian.hpp; with them, only while each is
+  // held at one point, which `auto` asks of a run as it goes).
   bool gives_jacobian() const;
 
  private:

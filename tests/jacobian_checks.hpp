@@ -14,19 +14,11 @@
 
 namespace tumble::test {
 
-// Which modal directions a check takes: all, or the speeds alone. E (dz'/dz) P leaves out the
-// term the coordinates' own curvature adds, (dP/dy) f: a free body's speeds are kept in its
-// axes, so where it turns (omega != 0) or accelerates (f's speeds != 0) the directions that turn
-// it or move its speeds carry terms of the size of omega and of its acceleration. They slow
-// Newton no more than a Jacobian a step old would; a state at omega = 0 leaves the speeds'
-// directions exact, where a contact's stiff friction is.
-enum class JacobianColumns { All, Speeds };
-
 // The largest departure, over the modal directions d_i = E e_i, of P J d_i (the Jacobian's
 // motion along d_i, read in the modal coordinates) from P (f(y + eps d_i) - f(y - eps d_i)) /
 // (2 eps), the run's own equations by central differences, against the largest of them.
+// Central differences: truncation about eps^2 of the scale, round-off about 1e-16 / eps.
 inline double largest_jacobian_departure(const std::string& yaml, const std::string& name,
-                                         JacobianColumns columns = JacobianColumns::All,
                                          double eps = 1e-6) {
   const Scenario scenario = load_inline_scenario(yaml, name);
   const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
@@ -44,10 +36,8 @@ inline double largest_jacobian_departure(const std::string& yaml, const std::str
   EXPECT_TRUE((P * E - MatX::Identity(layout.size(), layout.size())).isZero(1e-14)) << name;
   double departure = 0.0, largest = 0.0;
   VecX f_plus(n), f_minus(n);
-  const Eigen::Index first = columns == JacobianColumns::Speeds ? layout.position_count : 0;
-  for (Eigen::Index i = first; i < layout.size(); ++i) {
+  for (Eigen::Index i = 0; i < layout.size(); ++i) {
     const VecX d = E.col(i);
-    // Central differences: truncation about eps^2 of the scale, round-off about 1e-16 / eps.
     run->derivative(0.0, y + eps * d, f_plus);
     run->derivative(0.0, y - eps * d, f_minus);
     const VecX by_differences = P * (f_plus - f_minus) / (2.0 * eps);

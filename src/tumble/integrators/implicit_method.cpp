@@ -68,7 +68,8 @@ void ImplicitMethod::restart_implicit(double t, const VecX& y) {
 
 void ImplicitMethod::take_jacobian() {
   if (!system_->jacobian(t_, y_, jacobian_)) {
-    throw std::logic_error(fmt::format("{}: the system stopped giving a Jacobian", name_));
+    // The run fails here with the rows so far (the driver's runtime_error), not the program.
+    throw std::runtime_error(fmt::format("{}: the system stopped giving a Jacobian", name_));
   }
   ++jacobian_evaluations_;
   on_new_jacobian();

@@ -11,24 +11,20 @@ namespace tumble {
 
 namespace {
 
-// Where contact c touches at one point, its body turned by R_WB (per body) and `lowest` its
-// support point; throws NotSteady where it rests on more.
-ModalContact point_contact(const Model& model, std::size_t c, const std::vector<Mat3>& R_WB,
-                           const SupportPoint& lowest) {
+// Where contact c touches at one point, into `held`, its body turned by R_WB (per body) and
+// `lowest` its support point; why not where it rests on more (empty if it does not).
+std::string point_contact(const Model& model, std::size_t c, const std::vector<Mat3>& R_WB,
+                          const SupportPoint& lowest, ModalContact& held) {
   const PlaneContact& contact = model.contacts[c];
   const Mat3& R = R_WB[contact.body];
   // The height over the plane of a point of the body (body axes, from the COM).
   const auto height_of = [&](const Vec3& p_B) {
     return lowest.height + (p_B - lowest.p_GC_B).dot(R.transpose() * contact.normal_W);
   };
-  ModalContact held;
   held.contact = c;
-  const std::string why =
-      contact_pair(contact.surface.kind)
-          .resting_point(contact.surface, R.transpose() * contact.normal_W, lowest,
-                         touching_height(contact.surface), height_of, held.point);
-  if (!why.empty()) throw NotSteady(fmt::format("contact {}: {}", contact.name, why));
-  return held;
+  return contact_pair(contact.surface.kind)
+      .resting_point(contact.surface, R.transpose() * contact.normal_W, lowest,
+                     touching_height(contact.surface), height_of, held.point);
 }
 
 }  // namespace
@@ -42,7 +38,9 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
     if (lowest.height > touching_height(contact.surface)) {
       continue;  // apart: no force, and none from a small change
     }
-    ModalContact held = point_contact(model, c, R_WB, lowest);
+    ModalContact held;
+    const std::string why = point_contact(model, c, R_WB, lowest, held);
+    if (!why.empty()) throw NotSteady(fmt::format("contact {}: {}", contact.name, why));
     held.rolls = contact.friction > 0.0;
     touching.push_back(held);
   }
@@ -61,7 +59,14 @@ std::vector<ModalContact> held_contacts(const Model& model, std::span<const Cont
       throw NotSteady(fmt::format("contact {}: held on more than one point", contact.name));
     }
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);
-    ModalContact point = point_contact(model, c, R_WB, lowest);
+    ModalContact point;
+    if (!point_contact(model, c, R_WB, lowest, point).empty()) {
+      // The run holds it at one point where another of its points is within the touching
+      // height too (a cylinder on one rim, its other rim just above the plane): the support
+      // point, as a point of the body. A Jacobian without that point's motion over the body
+      // costs Newton a little, not the answer.
+      point.point = ContactPoint{ContactPoint::Kind::Material, lowest.p_GC_B, 0.0};
+    }
     point.rolls = hold.kind == ContactHold::Kind::Point;
     if (!point.rolls) point.sliding = hold;
     held.push_back(point);

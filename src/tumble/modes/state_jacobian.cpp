@@ -1,11 +1,9 @@
 #include "tumble/modes/state_jacobian.hpp"
 
-#include <optional>
 #include <stdexcept>
 
 #include "tumble/modes/linearisation.hpp"
 #include "tumble/modes/modal_equations.hpp"
-#include "tumble/modes/not_steady.hpp"
 
 namespace tumble {
 
@@ -33,17 +31,18 @@ bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, d
   if (n == 0) return true;  // every joint held or driven: nothing depends on the state
   MatX E, P;
   calc_modal_tangent(*model, layout, y, E, P);
-  std::optional<ModalEquations> built;
-  try {
-    built.emplace(model, std::move(layout), y, t, holds);
-  } catch (const NotSteady&) {
-    dfdy.setZero();
-    return false;  // a point the run holds that the modal geometry puts on more than one
-  }
-  const ModalEquations& equations = *built;
+  const ModalEquations equations(model, std::move(layout), y, t, holds);
   const MatX rates_jacobian =
       jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.rates<Dual>(z); }, n);
-  dfdy.noalias() = E * rates_jacobian * P;
+  // E (dz'/dz), and where y is curved in z, (d^2 y / dz^2)[., z'] (JointKind::add_modal_curvature).
+  MatX tangent = E * rates_jacobian;
+  const VecX z_rate = equations.rates<double>(VecX::Zero(n));
+  const ModalLayout& modal = equations.layout();
+  for (std::size_t k = 0; k < model->tree.size(); ++k) {
+    model->tree[k].kind->add_modal_curvature(model->tree[k], y, modal.position_offset[k],
+                                             modal.speed_offset[k], z_rate, tangent);
+  }
+  dfdy.noalias() = tangent * P;
   return true;
 }
 

@@ -3,17 +3,16 @@
 // implicit methods (integrators/radau5.hpp), by automatic differentiation of the one physics:
 // the same equations `tumble modes` linearises (ModalEquations::rates over Dual), written about
 // the state y in the modal coordinates z (modal_coordinates.hpp), then taken to the state's own
-// coordinates joint by joint (JointKind::add_modal_tangent):
-//     df/dy = E (dz'/dz) P,   E = dy/dz, P = dz/dy (P E = I).
+// coordinates joint by joint (JointKind::add_modal_tangent, add_modal_curvature):
+//     df/dy = (E (dz'/dz) + C) P,   E = dy/dz, P = dz/dy (P E = I), C = (d^2 y / dz^2)[., z'],
+// C from f = E(z) z' differentiated: a free body's speeds are kept in its turning axes.
 // So it has what the modal equations hold: gravity, the loads and motors in force at t, springs
 // and dampers, the loops' constraints (the motion on their manifold), the contacts in their
 // modes. Joints held or driven at t
 // have no modal coordinates: their rows and columns are zero, as are the work ledger's (nothing
 // depends on the books). A quaternion's direction off the unit sphere, which the projection
-// removes, has none either. Nor has the curvature of the coordinates, (dP/dy) f: a free body's
-// speeds are kept in its own axes, and the terms of the size of its angular velocity and its
-// acceleration that turning those axes adds are left out. Differences from the exact df/dy there
-// only slow Newton's convergence; they do not change what the method converges to.
+// removes, has none either. Differences from the exact df/dy there only slow Newton's
+// convergence; they do not change what the method converges to.
 //
 // Each call builds the modal equations about y (it allocates: an implicit method takes a
 // Jacobian at the start of a step, and keeps it while Newton converges fast).

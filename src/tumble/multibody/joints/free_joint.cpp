@@ -93,6 +93,22 @@ void FreeJoint::add_modal_tangent(const TreeJoint& joint, const VecX& y, double 
   }
 }
 
+void FreeJoint::add_modal_curvature(const TreeJoint& joint, const VecX& y,
+                                    Eigen::Index position_offset, Eigen::Index speed_offset,
+                                    const VecX& z_rate, MatX& C) const {
+  if (position_offset < 0 || speed_offset < 0) return;
+  const Mat3 R0 = rotation_at(y, joint.q + 3);
+  const Vec3 v_C = y.segment<3>(joint.v + 3);
+  const Vec3 turn_rate = z_rate.segment<3>(position_offset + 3);  // omega_C at z = 0
+  const Vec3 a_G_W = z_rate.segment<3>(speed_offset);
+  // With exp(-[r]x) = I - [r]x + [r]x^2 / 2 + ...: along (dr, w), the turn twice gives
+  // ([dr]x [w]x + [w]x [dr]x) v_C / 2, the turn and the speed -[dr]x R0^T a - [w]x R0^T ddv.
+  C.block<3, 3>(joint.v + 3, position_offset + 3) +=
+      -0.5 * (hat(Vec3(turn_rate.cross(v_C))) + hat(turn_rate) * hat(v_C)) +
+      hat(Vec3(R0.transpose() * a_G_W));
+  C.block<3, 3>(joint.v + 3, speed_offset) += -hat(turn_rate) * R0.transpose();
+}
+
 template <typename S>
 void FreeJoint::modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                              JointMotionOf<S>& motion) const {

@@ -38,6 +38,9 @@ class FreeJoint final : public JointKindOf<FreeJoint> {
   void add_modal_tangent(const TreeJoint& joint, const VecX& y, double sign,
                          Eigen::Index position_offset, Eigen::Index speed_offset, MatX& E,
                          MatX& P) const override;
+  // v_C = exp(-[r]x) R0^T (v_G0 + dv): curved in the turn r and in r with dv.
+  void add_modal_curvature(const TreeJoint& joint, const VecX& y, Eigen::Index position_offset,
+                           Eigen::Index speed_offset, const VecX& z_rate, MatX& C) const override;
   template <typename S>
   void modal_motion(const TreeJoint& joint, const ModalJointPoint<S>& at,
                     JointMotionOf<S>& motion) const;

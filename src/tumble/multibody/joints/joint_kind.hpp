@@ -160,11 +160,20 @@ class JointKind {
   // How its part of the state y moves with its modal coordinates at z = 0, and back: the columns
   // of dy/dz of its positions (from position_offset in z; -1: none) and speeds (speed_offset)
   // into E, the rows of dz/dy into P (P E = I; a quaternion's direction off the unit sphere has
-  // no z). The state's Jacobian is E (dz'/dz) P (modes/state_jacobian.hpp). The default: its
+  // no z). The state's Jacobian is (E dz'/dz + C) P (modes/state_jacobian.hpp). The default: its
   // coordinates and speeds are numbers, y = y0 + sign z (hinge, slider, cylindrical, Hooke).
   virtual void add_modal_tangent(const TreeJoint& joint, const VecX& y, double sign,
                                  Eigen::Index position_offset, Eigen::Index speed_offset, MatX& E,
                                  MatX& P) const;
+  // Where its part of y is not linear in z: the second derivative of y(z) at z = 0 along z_rate
+  // (the modal equations' dz/dt there), (d^2 y / dz^2)[., z_rate], added into C's rows of y and
+  // columns of z. f = (dy/dz) z' gives df/dy = (E dz'/dz + C) P: without C, a free body's speeds
+  // in its turning axes would miss terms of the size of omega and of its acceleration. The
+  // default: none (y linear in z; a quaternion's second derivative is along the quaternion,
+  // off the tangent).
+  virtual void add_modal_curvature(const TreeJoint& /*joint*/, const VecX& /*y*/,
+                                   Eigen::Index /*position_offset*/, Eigen::Index /*speed_offset*/,
+                                   const VecX& /*z_rate*/, MatX& /*C*/) const {}
 };
 
 // The one place that makes the kinds: each JointType's of the tree (a distance joint has none:

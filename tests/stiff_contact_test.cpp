@@ -157,7 +157,9 @@ TEST(StiffContact, ARingJustBelowItsCriticalFrictionSlidesAsTheClosedFormInUnder
   const double v_end = kG * (std::sin(theta) - mu * std::cos(theta)) * 1.5;
   EXPECT_LT(worst_speed, rtol * v_end);
   EXPECT_LT(worst_slip, 2 * rtol * v_end);
-  EXPECT_LT(worst_across, rtol * v_end);
+  // Across the slope the slip is zero by symmetry, and friction pulls any round-off there back
+  // at once: it stays at the speeds' round-off (measured 1.7e-15 m/s).
+  EXPECT_LT(worst_across, 1e-13 * v_end);
   // DOP853 takes 2,076,683 steps: stability, not accuracy, holds them. (Measured: 1,701.)
   EXPECT_LT(run.result.report.stats.accepted_steps, 2000);
 }

@@ -34,15 +34,16 @@ bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, d
   const ModalEquations equations(model, std::move(layout), y, t, holds);
   const MatX rates_jacobian =
       jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.rates<Dual>(z); }, n);
-  // E (dz'/dz), and where y is curved in z, (d^2 y / dz^2)[., z'] (JointKind::add_modal_curvature).
-  MatX tangent = E * rates_jacobian;
+  // dy'/dz: E (dz'/dz), and where y is curved in z, (d^2 y / dz^2)[., z']
+  // (JointKind::add_modal_curvature).
+  MatX y_rate_by_z = E * rates_jacobian;
   const VecX z_rate = equations.rates<double>(VecX::Zero(n));
   const ModalLayout& modal = equations.layout();
   for (std::size_t k = 0; k < model->tree.size(); ++k) {
     model->tree[k].kind->add_modal_curvature(model->tree[k], y, modal.position_offset[k],
-                                             modal.speed_offset[k], z_rate, tangent);
+                                             modal.speed_offset[k], z_rate, y_rate_by_z);
   }
-  dfdy.noalias() = tangent * P;
+  dfdy.noalias() = y_rate_by_z * P;
   return true;
 }
 

@@ -39,6 +39,13 @@ class Linear : public OdeSystem {
   MatX a_;
 };
 
+// y' = -y without its Jacobian: an explicit method's system, which the implicit methods refuse.
+class DecayWithoutJacobian : public OdeSystem {
+ public:
+  Eigen::Index dimension() const override { return 1; }
+  void derivative(double /*t*/, const VecX& y, VecX& dydt) const override { dydt[0] = -y[0]; }
+};
+
 // Two modes, rates -1 and -1e6 s^-1, coupled in the state's axes: A = P diag(-1, -1e6) P^-1.
 inline MatX two_rates() {
   Eigen::Matrix2d p;

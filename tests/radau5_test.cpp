@@ -15,13 +15,6 @@
 namespace tumble {
 namespace {
 
-// The same without a Jacobian: an explicit method's system.
-class NoJacobian : public OdeSystem {
- public:
-  Eigen::Index dimension() const override { return 1; }
-  void derivative(double /*t*/, const VecX& y, VecX& dydt) const override { dydt[0] = -y[0]; }
-};
-
 // A body of 1 kg on a spring k = 1e9 N/m with a damper c = 1e6 N s/m, as (x, v): overdamped,
 // its modes at -k/c (about -1000 s^-1) and -c/m (about -1e6 s^-1).
 MatX stiff_spring() {
@@ -156,7 +149,7 @@ TEST(Radau5, AStepAllocatesNothing) {
 }
 
 TEST(Radau5, RefusesASystemWithoutAJacobian) {
-  NoJacobian system;
+  test::DecayWithoutJacobian system;
   Radau5 method(test::tolerances(1e-6, 1e-8));
   const VecX y0 = VecX::Ones(1);
   EXPECT_THROW(method.start(system, 0.0, y0, 1.0), std::invalid_argument);

@@ -100,11 +100,7 @@ TEST(TrBdf2, AStepAllocatesNothing) {
 }
 
 TEST(TrBdf2, RefusesASystemWithoutAJacobian) {
-  class NoJacobian : public OdeSystem {
-   public:
-    Eigen::Index dimension() const override { return 1; }
-    void derivative(double /*t*/, const VecX& y, VecX& dydt) const override { dydt[0] = -y[0]; }
-  } system;
+  test::DecayWithoutJacobian system;
   TrBdf2 method(test::tolerances(1e-6, 1e-8));
   const VecX y0 = VecX::Ones(1);
   EXPECT_THROW(method.start(system, 0.0, y0, 1.0), std::invalid_argument);

@@ -65,6 +65,9 @@ class SolutionPiece {
   // Whether it starts where the last piece ended with nothing between: false for the run's first
   // piece and for one after a jump, an event that changed the state, or a change of modes.
   bool continues() const { return continues_; }
+  // Whether t is the last step's end, where state_at gives the step's own state (that of the
+  // run's row there, if it made one).
+  bool is_step_end(double t) const { return t == integrator_.t(); }
   // The state at t in [t_begin, t_end] from the continuous extension, put back on the
   // constraints as a row's is (at a step's end, the step's state): at a row's time, the row's.
   void state_at(double t, VecX& y) const {

@@ -47,6 +47,7 @@ class PieceRows {
   double t_end() const { return piece_->t_end(); }
   // Whether the piece starts where the last one ended, with nothing between (SolutionPiece).
   bool continues() const { return piece_->continues(); }
+  bool is_step_end(double t) const { return piece_->is_step_end(t); }
 
   // The row at t in [t_begin, t_end] (StateRows::row_of). Valid until the next call.
   OutputRow row_at(double t, bool with_extras, bool with_quantities);

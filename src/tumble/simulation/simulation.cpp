@@ -273,15 +273,24 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     }
     const double E0 = base.E0, L0 = base.L0;
     ConservationReport& c = result.conservation;
-    double work = -(gravity_potential - base.gravity_potential0);
-    for (const ElementWork& e : extras.elements) work += e.work;
-    // The contacts' entries are the ledger's last (ArticulatedModel::element_names).
-    const std::size_t contacts = std::min(model.contacts.size(), extras.elements.size());
-    for (std::size_t i = extras.elements.size() - contacts; i < extras.elements.size(); ++i) {
-      c.max_contact_work = std::max(c.max_contact_work, std::abs(extras.elements[i].work));
+    if (!simulation.drifts_only) {
+      double work = -(gravity_potential - base.gravity_potential0);
+      for (const ElementWork& e : extras.elements) work += e.work;
+      // The contacts' entries are the ledger's last (ArticulatedModel::element_names).
+      const std::size_t contacts = std::min(model.contacts.size(), extras.elements.size());
+      for (std::size_t i = extras.elements.size() - contacts; i < extras.elements.size(); ++i) {
+        c.max_contact_work = std::max(c.max_contact_work, std::abs(extras.elements[i].work));
+      }
+      c.max_work_energy_residual =
+          std::max(c.max_work_energy_residual, std::abs(q.kinetic_energy - base.KE0 - work));
+      c.max_loop_error.gap = std::max(c.max_loop_error.gap, extras.loops.gap);
+      c.max_loop_error.turn = std::max(c.max_loop_error.turn, extras.loops.turn);
+      c.max_loop_error.speed = std::max(c.max_loop_error.speed, extras.loops.speed);
+      for (const BodyState& s : states) {
+        c.max_orthonormality_error =
+            std::max(c.max_orthonormality_error, orthonormality_error(s.R_WB));
+      }
     }
-    c.max_work_energy_residual =
-        std::max(c.max_work_energy_residual, std::abs(q.kinetic_energy - base.KE0 - work));
     c.max_kinetic_energy = std::max(c.max_kinetic_energy, q.kinetic_energy);
     c.initial_energy = E0;
     c.initial_angular_momentum = L0;
@@ -295,13 +304,6 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
     if (L0 != 0.0) {
       c.max_relative_angular_momentum_drift =
           std::max(c.max_relative_angular_momentum_drift, std::abs(L - L0) / L0);
-    }
-    c.max_loop_error.gap = std::max(c.max_loop_error.gap, extras.loops.gap);
-    c.max_loop_error.turn = std::max(c.max_loop_error.turn, extras.loops.turn);
-    c.max_loop_error.speed = std::max(c.max_loop_error.speed, extras.loops.speed);
-    for (const BodyState& s : states) {
-      c.max_orthonormality_error =
-          std::max(c.max_orthonormality_error, orthonormality_error(s.R_WB));
     }
     ++result.rows;
     observe(t, states, q, extras);

@@ -34,6 +34,9 @@ struct PreparedSimulation {
   double t0 = 0.0;
   double t_end = 0.0;
   bool planar = false;  // the rows carry each body's angle about z (RowExtras::planar_angles)
+  // Whether the rows serve the conservation report's energy and momentum drifts alone (a sweep
+  // that reads no row): its other checks (orthonormality, loops, the work ledger) are not kept.
+  bool drifts_only = false;
   // Where set, handed the row of the state just after each event, jump or change of the
   // contacts' modes (DriverOptions::on_event_state), as run_simulation's rows are: what a sweep's
   // after(EVENT, X) reads. Several may come at one instant; the last is the state the run goes

@@ -210,8 +210,10 @@ void RunRecorder::start(const Scenario& scenario) {
 }
 
 void RunRecorder::observe(const OutputRow& row) {
-  if (!reads_rows_) return;  // final() alone reads rows
+  if (!reads_rows_ && !reads_pieces_) return;
   row_.take(row);
+  run_row_t_ = row.t;
+  if (!reads_rows_) return;  // final() alone reads rows
   for (const auto& reduction : reductions_) {
     if (!reduction->reads_pieces()) reduction->observe_row();
   }
@@ -220,7 +222,12 @@ void RunRecorder::observe(const OutputRow& row) {
 void RunRecorder::observe_piece(PieceRows& piece) {
   if (!reads_pieces_) return;
   const bool extras = row_.reads_extras(), quantities = row_.reads_quantities();
-  const auto load = [&](double t) { row_.take(piece.row_at(t, extras, quantities)); };
+  const auto load = [&](double t) {
+    // A run's row has every column; at a step's end it is the state the piece gives there.
+    const bool holds_row = run_row_t_ == t && piece.is_step_end(t);
+    run_row_t_.reset();
+    if (!holds_row) row_.take(piece.row_at(t, extras, quantities));
+  };
   const PieceSamples samples =
       PieceSamples::on(piece.t_begin(), piece.t_end(), !piece.continues(), piece_samples_);
   for (int k = samples.fresh_start ? 0 : 1; k < samples.count; ++k) {
@@ -237,6 +244,7 @@ void RunRecorder::observe_piece(PieceRows& piece) {
 void RunRecorder::observe_event_state(const OutputRow& row) {
   if (after_events_.empty()) return;
   row_.take(row);
+  run_row_t_.reset();
   for (const auto& after : after_events_)
     after->samples.emplace_back(row.t, after->value.evaluate());
 }

@@ -6,6 +6,7 @@
 // then, and reused for each run of a sweep on its thread.
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -65,6 +66,9 @@ class RunRecorder {
   RowVariables row_;  // the columns the reductions read, and the run's parameters
   std::vector<std::unique_ptr<RunReduction>> reductions_;
   bool reads_rows_ = false, reads_pieces_ = false;
+  // The time of the run's row that row_ holds, if it holds one: at a step's end that row is the
+  // piece's sample there, which observe_piece then takes without computing it again.
+  std::optional<double> run_row_t_;
   PieceSamples::Need piece_samples_ = PieceSamples::Need::Ends;
   std::vector<std::unique_ptr<AfterEvent>> after_events_;
   // Per outcome: its expression over its reductions' values, and where each value comes from

@@ -161,6 +161,7 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     // kept, so the scenario's max_rows, a bound on the disk they would fill, does not apply.
     simulation.options.output_every = 0.0;
     simulation.options.max_rows = std::numeric_limits<long>::max();
+    simulation.drifts_only = true;
   }
   if (!reads_run_) {  // the modes alone: no integration (0 steps)
     record.values = recorder_->finish({}, {}, {}, modes ? &*modes : nullptr);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <stdexcept>
 
@@ -253,6 +254,52 @@ TEST(SweepReductions, AConditionAJumpTurnsIsAtItsInstantAndTheSwingPeaksBetweenR
   // rtol 1e-8 on the swing: the peak angle to 1e-7 (rows 1 ms apart alone: 2e-6 rad off).
   EXPECT_NEAR(rec.values[1], theta_max, 1e-7 * theta_max);
   EXPECT_GT(rec.values[2], 0.1);
+}
+
+// The bat whirling over its knob in the plane, its angle counted on past each turn: it first
+// passes 20 rad (some three turns on) at t = integral of d(theta) / w(theta) from energy,
+// w^2 = w0^2 - (2 M g L / I_O)(1 - cos theta), theta from hanging (the angle column starts at
+// pi/2 there). Just over the top (w0 = 8.5 rad/s; 8.37 would stop there), its rate swings from
+// 8.5 to 1.5 rad/s each turn: the angle where the condition turns must be counted on from the
+// sample just before, not from one turns earlier (a rate's trapezoid over a few steps misses it
+// by more than half a turn).
+TEST(SweepReductions, AWhirlingPendulumsCountedAngleIsReadWhereItPassesAValue) {
+  const double M = 0.9, length = 0.84, r = 0.03, L = length / 2, g = 9.81, w0 = 8.5;
+  const double I_O = M * (3 * r * r + length * length) / 12 + M * L * L;
+  const double theta_end = 20.0 - std::numbers::pi / 2;
+  // Simpson's rule on a smooth integrand: its error falls as the step^4, far below 1e-12 here.
+  const int n = 200000;
+  const double h = theta_end / n;
+  double sum = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const double theta = i * h;
+    const double f = 1.0 / std::sqrt(w0 * w0 - 2 * M * g * L / I_O * (1 - std::cos(theta)));
+    sum += (i == 0 || i == n ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0)) * f;
+  }
+  const double t_passes = sum * h / 3;
+  const char* const text = R"(tumble: 1
+planar: true
+parameters: {M: 0.9, length: 0.84, r: 0.03, L: length/2, g: 9.81, w0: 8.5}
+gravity: [0, -g]
+bodies:
+  bat:
+    shape: rod
+    length: length
+    mass: M
+    inertia: [M*r^2/2, M*(3*r^2 + length^2)/12, M*(3*r^2 + length^2)/12]
+    position: [0, -L]
+    angle: 90 deg
+    angular_velocity: w0
+joints:
+  knob: {type: hinge, body: bat, at: [0, 0]}
+simulate: {duration: 6, integrator: dop853, rtol: 1e-11, atol: 1e-13, output_every: 0.5}
+)";
+  const SweepSpec spec = spec_for(text, {"w0"}, {"at=first(bat.angle > 20)"});
+  SweepRunner runner(spec);
+  const RunRecord rec = runner.run(std::vector<double>{w0});
+  ASSERT_EQ(rec.status, RunStatus::Ok) << rec.message;
+  // rtol 1e-11 over some 180 steps: the time to 1e-9 of itself.
+  EXPECT_NEAR(rec.values[0], t_passes, 1e-9 * t_passes);
 }
 
 TEST(SweepReductions, AfterAnEventReadsTheStateItLeaves) {

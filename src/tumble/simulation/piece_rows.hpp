@@ -26,6 +26,8 @@ class StateRows {
   // (extras) and the system's energies and momenta (quantities) only where asked, as they cost a
   // solve. Valid until the next call.
   OutputRow row_of(double t, const VecX& y, bool with_extras, bool with_quantities);
+  // Whether its rows count plane angles on from the last row it made.
+  bool planar() const { return planar_; }
 
  private:
   const Formulation& formulation_;
@@ -48,6 +50,9 @@ class PieceRows {
   // Whether the piece starts where the last one ended, with nothing between (SolutionPiece).
   bool continues() const { return piece_->continues(); }
   bool is_step_end(double t) const { return piece_->is_step_end(t); }
+  // Whether its rows count plane angles on from the last row made here: then no row may be
+  // skipped (taken from the run's rows instead), or the next would count on from an older one.
+  bool planar() const { return rows_.planar(); }
 
   // The row at t in [t_begin, t_end] (StateRows::row_of). Valid until the next call.
   OutputRow row_at(double t, bool with_extras, bool with_quantities);

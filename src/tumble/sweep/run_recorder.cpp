@@ -205,6 +205,7 @@ bool RunRecorder::fits(const ColumnLayout& layout, const Scenario& scenario) con
 
 void RunRecorder::start(const Scenario& scenario) {
   row_.set_parameters(scenario.parameters);
+  run_row_t_.reset();
   for (const auto& reduction : reductions_) reduction->start();
   for (const auto& after : after_events_) after->samples.clear();
 }
@@ -224,7 +225,7 @@ void RunRecorder::observe_piece(PieceRows& piece) {
   const bool extras = row_.reads_extras(), quantities = row_.reads_quantities();
   const auto load = [&](double t) {
     // A run's row has every column; at a step's end it is the state the piece gives there.
-    const bool holds_row = run_row_t_ == t && piece.is_step_end(t);
+    const bool holds_row = run_row_t_ == t && piece.is_step_end(t) && !piece.planar();
     run_row_t_.reset();
     if (!holds_row) row_.take(piece.row_at(t, extras, quantities));
   };

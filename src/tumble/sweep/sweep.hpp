@@ -82,6 +82,8 @@ class SweepRunner {
   // outlive them) decide once whether they can share a model; without one, a runner decides
   // for itself.
   explicit SweepRunner(const SweepSpec& spec, SweepModelShare* share = nullptr);
+  // It keeps a reference to the spec: a temporary one would be gone before the first run.
+  explicit SweepRunner(SweepSpec&& spec, SweepModelShare* share = nullptr) = delete;
   ~SweepRunner();
   SweepRunner(const SweepRunner&) = delete;
   SweepRunner& operator=(const SweepRunner&) = delete;

@@ -32,12 +32,12 @@ bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, d
   MatX E, P;
   calc_modal_tangent(*model, layout, y, E, P);
   const ModalEquations equations(model, std::move(layout), y, t, holds);
+  VecX z_rate;  // z' at z = 0, the value the dual numbers carry
   const MatX rates_jacobian =
-      jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.rates<Dual>(z); }, n);
+      jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.rates<Dual>(z); }, n, &z_rate);
   // dy'/dz: E (dz'/dz), and where y is curved in z, (d^2 y / dz^2)[., z']
   // (JointKind::add_modal_curvature).
   MatX y_rate_by_z = E * rates_jacobian;
-  const VecX z_rate = equations.rates<double>(VecX::Zero(n));
   const ModalLayout& modal = equations.layout();
   for (std::size_t k = 0; k < model->tree.size(); ++k) {
     model->tree[k].kind->add_modal_curvature(model->tree[k], y, modal.position_offset[k],

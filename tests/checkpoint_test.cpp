@@ -167,6 +167,8 @@ INSTANTIATE_TEST_SUITE_P(
         CheckpointCase{"cubli_falls_back", 0.3, "a held box in flight, before it lands"},
         CheckpointCase{"cubli_falls_back", 0.55, "between its first two bounces"},
         CheckpointCase{"rolling_coin", 1.0, "a coin rolling on its rim"},
+        CheckpointCase{"top_lands_on_its_side", 1.0,
+                       "a cone pivoting about its apex on its side, its rim sliding"},
         CheckpointCase{"planar/backspin_disk", 0.7,
                        "in the plane, before its event (it reverses at 1.02 s)"},
         CheckpointCase{"gyroscope", 0.5, "a fast spin by dop853, between rows"},

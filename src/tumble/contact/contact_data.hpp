@@ -36,11 +36,16 @@ struct ContactNow {
   // Slip: O's tangential velocity, and the spin about the normal times the feature's spin
   // radius as the component along the normal (a polyhedron's face or edge; 0 otherwise).
   Vec3 slip_W = Vec3::Zero();
+  // A two-point part: each end's slip, the tangential velocity of the body's point there.
+  std::array<Vec3, 2> end_slip_W = {Vec3::Zero(), Vec3::Zero()};
   Vec6 wrench_B = Vec6::Zero();          // the contact's (moment about the COM; force), body axes
   Vec3 force_W = Vec3::Zero();           // its force
   double normal_force = 0.0;             // force_W's component along the plane's normal
   Vec3 friction_W = Vec3::Zero();        // force_W's tangential part
   Vec3 moment_about_O_B = Vec3::Zero();  // its moment about O, body axes
+  // A two-point part: the normal force and the friction (world) at each end.
+  std::array<double, 2> end_normal_force = {0.0, 0.0};
+  std::array<Vec3, 2> end_friction_W = {Vec3::Zero(), Vec3::Zero()};
   // A polyhedron on a body a joint holds: the least normal force (or impulse) among the feature's
   // points whose rows the solve kept (the joint takes the rest of the load), and that point.
   double least_point_force = 0.0;
@@ -57,6 +62,7 @@ struct ContactUnknown {
   Vec3 angular_W = Vec3::Zero();
   bool normal = false;  // a row of the normal motion (restitution applies at impacts)
   int anchor = -1;      // a sticking polyhedron's row: the ContactStatus::anchor_W it holds
+  int end = -1;         // a two-point part's row: the end (0, 1) whose force it carries
   Vec6 wrench_B = Vec6::Zero();  // per unit of the unknown: (moment about the COM; force)
 };
 

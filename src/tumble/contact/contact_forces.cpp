@@ -120,6 +120,12 @@ void ContactSystem::calc_contact_points() const {
     now.velocity_W = w.R_WB * (v_G_B + omega_B.cross(now.reference_B));
     const double spin = (w.R_WB * omega_B).dot(n);
     now.slip_W = now.velocity_W - n * n.dot(now.velocity_W) + now.spin_radius * spin * n;
+    if (two_point(c)) {
+      for (std::size_t k = 0; k < 2; ++k) {
+        const Vec3 v_W = w.R_WB * (v_G_B + omega_B.cross(now.normal_points_B[k]));
+        now.end_slip_W[k] = v_W - n * n.dot(v_W);
+      }
+    }
     now.wrench_B.setZero();
     now.force_W.setZero();
     now.friction_W.setZero();
@@ -142,6 +148,38 @@ Vec3 ContactSystem::slide_direction(std::size_t c, bool* follows_slip) const {
   if (status.slide_turn_W.isZero(0.0)) return status.slide_direction_W;
   const double since = d_.time_now - status.slide_start_t;
   return (status.slide_direction_W + since * status.slide_turn_W).normalized();
+}
+
+bool ContactSystem::two_point(std::size_t c) const {
+  return d_.now[c].normal_point_count == 2 && !held_polyhedron_[c];
+}
+
+Vec3 ContactSystem::end_slide_direction(std::size_t c, int end, const Vec3& slide_W) const {
+  const ContactStatus& status = s_.contacts[c];
+  const ContactNow& now = d_.now[c];
+  const auto k = static_cast<std::size_t>(end);
+  const Vec3& slip_W = now.end_slip_W[k];
+  const Vec3& last_W = status.end_slide_direction_W[k];
+  const double slip = slip_W.norm();
+  // As the whole part's slip (slide_direction): followed while it is above slip_zero, or has
+  // grown and keeps to the way it went.
+  if (slip > status.slip_zero ||
+      (status.end_slip_grown[k] && slip > status.slip_floor && slip_W.dot(last_W) > 0.0)) {
+    return slip_W / slip;
+  }
+  if (!last_W.isZero(0.0)) return last_W;
+  // Neither grown nor pushed on its own: the part's slide direction in slip space (its
+  // tangential part, and rho times the spin about the normal) is a rigid motion of the part, and
+  // this end moves with it. (Where the part slides so, the ends' own slips are exactly this.)
+  const Vec3& n = contacts_[c].normal_W;
+  const Mat3& R = dynamics_.motion(contacts_[c].body).R_WB;
+  Vec3 u_W = slide_W - n * n.dot(slide_W);
+  if (now.spin_radius > 0.0) {
+    u_W += (n.dot(slide_W) / now.spin_radius) *
+           n.cross(R * (now.normal_points_B[k] - now.reference_B));
+  }
+  const double size = u_W.norm();
+  return size > 0.0 ? Vec3(u_W / size) : Vec3(slide_W - n * n.dot(slide_W));
 }
 
 void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> holds) const {
@@ -193,31 +231,67 @@ Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode m
   const Vec3& n = contact.normal_W;
   const Vec3 zero = Vec3::Zero();
   const bool held_at_anchor = anchored(c);
+  const bool two_points = two_point(c);
   const auto add = [&](const Vec3& p_B, const Vec3& rate_B, const Vec3& linear_W,
-                       const Vec3& angular_W, bool normal, const Vec6& wrench_B, int anchor) {
+                       const Vec3& angular_W, bool normal, const Vec6& wrench_B, int anchor,
+                       int end = -1) {
     d_.unknowns[static_cast<std::size_t>(count++)] = {
-        c, p_B, rate_B, linear_W, angular_W, normal, held_at_anchor ? anchor : -1, wrench_B};
+        c, p_B, rate_B, linear_W, angular_W, normal, held_at_anchor ? anchor : -1, end, wrench_B};
   };
   const bool points_only =
       mode == ContactMode::Sliding || (rows == ContactRows::Position && !held_at_anchor);
   if (mode == ContactMode::Apart) return count;
+  const double mu = rows == ContactRows::Motion ? contact.friction : 0.0;
+  const int pinned = s_.contacts[c].pinned_end;
+  if (two_points && mode == ContactMode::Sliding && rows != ContactRows::Position && pinned >= 0) {
+    // Pivoting: the pinned end's velocity is held (three rows); the other end slides, its
+    // normal force carrying Coulomb's friction against its own slip.
+    Vec3 t1, t2;
+    plane_basis(n, t1, t2);
+    const Vec3* lin[3] = {&n, &t1, &t2};
+    const auto k = static_cast<std::size_t>(pinned);
+    const std::size_t o = 1 - k;
+    const Vec3& P = now.normal_points_B[k];
+    for (int a = 0; a < 3; ++a) {
+      add(P, now.normal_point_rates_B[k], *lin[a], zero, a == 0, wrench_at(R, P, *lin[a], zero), -1,
+          pinned);
+    }
+    const Vec3& Q = now.normal_points_B[o];
+    const Vec3 slide_o = end_slide_direction(c, static_cast<int>(o), slide_W);
+    add(Q, now.normal_point_rates_B[o], n, zero, true, wrench_at(R, Q, n - mu * slide_o, zero), -1,
+        static_cast<int>(o));
+    return count;
+  }
+  if (two_points && points_only) {
+    // Sliding on two points: each normal force carries Coulomb's friction against its own end's
+    // slip (the part's spin about the normal makes the ends slip differently).
+    for (int k = 0; k < 2; ++k) {
+      const auto e = static_cast<std::size_t>(k);
+      const Vec3& p = now.normal_points_B[e];
+      const Vec3 slide_k = mu > 0.0 && mode == ContactMode::Sliding
+                               ? end_slide_direction(c, k, slide_W)
+                               : Vec3::Zero();
+      add(p, now.normal_point_rates_B[e], n, zero, true, wrench_at(R, p, n - mu * slide_k, zero),
+          -1, k);
+    }
+    return count;
+  }
   if (points_only) {
     // Coulomb: each normal force N carries -mu N along the slip's tangential part at O and, for
-    // a face or an edge, a moment -mu N rho along its spin part (an ellipsoidal limit surface:
-    // exact for sliding without spin).
-    const bool with_friction = rows == ContactRows::Motion && mode == ContactMode::Sliding;
-    const double mu = with_friction ? contact.friction : 0.0;
+    // a face (or an edge on a body a joint holds), a moment -mu N rho along its spin part (an
+    // ellipsoidal limit surface: exact for sliding without spin).
+    const double mu_slide = mode == ContactMode::Sliding ? mu : 0.0;
     const Vec3 slide_tangential_W = slide_W - n * n.dot(slide_W);
-    const Vec3 spin_moment_W = -mu * now.spin_radius * n.dot(slide_W) * n;
+    const Vec3 spin_moment_W = -mu_slide * now.spin_radius * n.dot(slide_W) * n;
     for (int k = 0; k < now.normal_point_count; ++k) {
       const Vec3& p = now.normal_points_B[static_cast<std::size_t>(k)];
       const Vec3& rate = now.normal_point_rates_B[static_cast<std::size_t>(k)];
       // One point (a curved surface, a vertex) is its own reference point: one wrench.
       const Vec6 wrench =
           now.normal_point_count == 1
-              ? wrench_at(R, p, n - mu * slide_tangential_W, spin_moment_W)
+              ? wrench_at(R, p, n - mu_slide * slide_tangential_W, spin_moment_W)
               : Vec6(wrench_at(R, p, n, zero) +
-                     wrench_at(R, now.reference_B, -mu * slide_tangential_W, spin_moment_W));
+                     wrench_at(R, now.reference_B, -mu_slide * slide_tangential_W, spin_moment_W));
       add(p, rate, n, zero, true, wrench, -1);
     }
     return count;
@@ -252,11 +326,11 @@ Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode m
     const Vec3& A_rate = now.normal_point_rates_B[0];
     const Vec3& B_rate = now.normal_point_rates_B[1];
     for (int a = 0; a < 3; ++a) {
-      add(A, A_rate, *lin[a], zero, a == 0, wrench_at(R, A, *lin[a], zero), 0);
+      add(A, A_rate, *lin[a], zero, a == 0, wrench_at(R, A, *lin[a], zero), 0, 0);
     }
     const Vec3 across_W = n.cross(R * (B - A)).normalized();
-    add(B, B_rate, n, zero, true, wrench_at(R, B, n, zero), 1);
-    add(B, B_rate, across_W, zero, false, wrench_at(R, B, across_W, zero), 1);
+    add(B, B_rate, n, zero, true, wrench_at(R, B, n, zero), 1, 1);
+    add(B, B_rate, across_W, zero, false, wrench_at(R, B, across_W, zero), 1, 1);
     return count;
   }
   for (int a = 0; a < 3; ++a) {
@@ -374,10 +448,22 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
 }
 
 void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) const {
-  for (ContactNow& now : d_.now) now.wrench_B.setZero();
+  for (ContactNow& now : d_.now) {
+    now.wrench_B.setZero();
+    now.end_normal_force = {0.0, 0.0};
+    now.end_friction_W = {Vec3::Zero(), Vec3::Zero()};
+  }
   for (Eigen::Index j = 0; j < count; ++j) {
     const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
-    d_.now[u.contact].wrench_B += x(j) * u.wrench_B;
+    ContactNow& now = d_.now[u.contact];
+    now.wrench_B += x(j) * u.wrench_B;
+    if (u.end >= 0) {
+      const auto k = static_cast<std::size_t>(u.end);
+      const Vec3& n = contacts_[u.contact].normal_W;
+      const Vec3 F_W = dynamics_.motion(contacts_[u.contact].body).R_WB * u.wrench_B.tail<3>();
+      now.end_normal_force[k] += x(j) * n.dot(F_W);
+      now.end_friction_W[k] += x(j) * (F_W - n * n.dot(F_W));
+    }
   }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     ContactNow& now = d_.now[c];

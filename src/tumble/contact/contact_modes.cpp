@@ -99,6 +99,34 @@ Vec3 ContactSystem::friction_demand(std::size_t c) const {
   return now.friction_W + (now.moment_about_O_B.dot(now.n_B) / rho) * n;
 }
 
+double ContactSystem::stick_margin(std::size_t c, double edge) const {
+  const ContactNow& now = d_.now[c];
+  const double mu = edge * contacts_[c].friction;
+  if (!two_point(c)) return mu * now.normal_force - friction_demand(c).norm();
+  // Two points, each holding what its own cone holds: the friction across the part at each end
+  // is what the rows found there, and the friction along it (all at the first end's rows) may
+  // be shared between the ends as they can take it.
+  const Vec3 along_W = part_direction_W(c);
+  double along = 0.0, margin = std::numeric_limits<double>::infinity(), room = 0.0;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Vec3& F_W = now.end_friction_W[k];
+    const double cap = mu * now.end_normal_force[k];
+    const double across = (F_W - along_W * along_W.dot(F_W)).norm();
+    along += along_W.dot(F_W);
+    margin = std::min(margin, cap - across);
+    room += std::sqrt(std::max(0.0, cap * cap - across * across));
+  }
+  return std::min(margin, room - std::abs(along));
+}
+
+Vec3 ContactSystem::part_direction_W(std::size_t c) const {
+  const ContactNow& now = d_.now[c];
+  const Vec3& n = contacts_[c].normal_W;
+  const Vec3 d_W =
+      dynamics_.motion(contacts_[c].body).R_WB * (now.normal_points_B[1] - now.normal_points_B[0]);
+  return (d_W - n * n.dot(d_W)).normalized();
+}
+
 double ContactSystem::watched_height(std::size_t c, double height, double normal_speed) const {
   // The height, but kept positive while the point is at the plane (within the landing height)
   // and not moving into it: a bounce may rise and land again within one step (its flight is a
@@ -163,7 +191,17 @@ void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
     int side = -1;
     g(base + 1) = support_margin_of(c, side);
     if (status.mode == ContactMode::Sliding) {
-      if (contact.friction > 0.0) {
+      double end_value = 0.0;
+      const bool ends_watched = two_point(c) && stopping_end(c, end_value) >= 0;
+      if (contact.friction > 0.0 && two_point(c) && status.pinned_end >= 0) {
+        // Pivoting: the pinned end's friction reaches the cone's edge, or the other end's slip
+        // stops.
+        g(base + 2) = pinned_friction_margin(c);
+        if (ends_watched) g(base + 2) = std::min(g(base + 2), end_value);
+      } else if (contact.friction > 0.0 && ends_watched) {
+        // A two-point part whose ends slide on their own: either end's slip stops.
+        g(base + 2) = end_value;
+      } else if (contact.friction > 0.0) {
         // The slip stops where its component along the direction it had at the start of the
         // step vanishes; a grown slip that a step leaves below slip_zero (where it may turn, or
         // hover, instead of crossing zero along any one direction) has stopped, an instant on.
@@ -173,10 +211,47 @@ void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
     } else {
       // The cone's edge as classification takes it (kFrictionEdge): at exactly the critical
       // friction the demand hovers at mu N to round-off, and must not leave it.
-      g(base + 2) =
-          (1.0 + kFrictionEdge) * contact.friction * now.normal_force - friction_demand(c).norm();
+      g(base + 2) = stick_margin(c, 1.0 + kFrictionEdge);
     }
   }
+}
+
+int ContactSystem::stopping_end(std::size_t c, double& value) const {
+  const ContactStatus& status = s_.contacts[c];
+  const ContactNow& now = d_.now[c];
+  int stopping = -1;
+  for (int k = 0; k < 2; ++k) {
+    const auto e = static_cast<std::size_t>(k);
+    if (k == status.pinned_end || status.end_slide_direction_W[e].isZero(0.0)) continue;
+    const double along = now.end_slip_W[e].dot(status.end_slide_direction_W[e]);
+    if (stopping < 0 || along < value) {
+      stopping = k;
+      value = along;
+    }
+  }
+  return stopping;
+}
+
+double ContactSystem::pinned_friction_margin(std::size_t c) const {
+  const auto k = static_cast<std::size_t>(s_.contacts[c].pinned_end);
+  const ContactNow& now = d_.now[c];
+  return (1.0 + kFrictionEdge) * contacts_[c].friction * now.end_normal_force[k] -
+         now.end_friction_W[k].norm();
+}
+
+void ContactSystem::pin_or_push_end(std::size_t c, int end, const VecX& y) {
+  ContactStatus& status = s_.contacts[c];
+  const auto k = static_cast<std::size_t>(end);
+  status.pinned_end = end;
+  status.end_slide_direction_W[k].setZero();
+  status.end_slip_grown[k] = false;
+  calc_accelerations(y);
+  if (d_.now[c].end_normal_force[k] > 0.0 && pinned_friction_margin(c) >= 0.0) return;
+  // It cannot hold: it slides from rest against the friction it would need.
+  const Vec3 needed_W = d_.now[c].end_friction_W[k];
+  status.pinned_end = -1;
+  if (needed_W.norm() > 0.0) status.end_slide_direction_W[k] = -needed_W.normalized();
+  calc_accelerations(y);
 }
 
 bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
@@ -218,6 +293,16 @@ bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
         in_band || hovers ||
         (status.slip_stop_armed && sliding && status.slip_left_near && slip <= near);
     status.slip_last_step = sliding ? slip : 0.0;
+    if (sliding && two_point(c)) {
+      // Each end's slip, followed once it has grown (its stop is watched from then on).
+      for (int k = 0; k < 2; ++k) {
+        const auto e = static_cast<std::size_t>(k);
+        const double end_slip = d_.now[c].end_slip_W[e].norm();
+        if (k == status.pinned_end || !(end_slip > status.slip_zero)) continue;
+        status.end_slide_direction_W[e] = d_.now[c].end_slip_W[e] / end_slip;
+        status.end_slip_grown[e] = true;
+      }
+    }
     PairView v = view(c);
     if (pairs_[c]->follows_direction(v)) pairs_[c]->follow_direction(v);
   }
@@ -287,6 +372,7 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
     return true;
   };
   status.mode = ContactMode::Rolling;
+  status.clear_end_slips();  // a two-point part's ends: from their slips now
   // Where joints tie the contact's motions together, rolling may ask for accelerations no force
   // gives together: then it cannot roll or stick, and slides the way it is pushed.
   bool can_roll = true;
@@ -296,7 +382,33 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
     can_roll = false;
   }
   const double slip = now.slip_W.norm();
-  const Vec3 demand = friction_demand(c);
+  const bool end_moves[2] = {now.end_slip_W[0].norm() > status.slip_zero,
+                             now.end_slip_W[1].norm() > status.slip_zero};
+  if (can_roll && contact.friction > 0.0 && two_point(c) && (end_moves[0] || end_moves[1])) {
+    // A two-point part with an end that slips: each end slides against its own slip, or, with
+    // one end at rest, it pivots there if the friction that needs fits in the cone.
+    status.mode = ContactMode::Sliding;
+    status.slide_direction_W = slip > 0.0 ? Vec3(now.slip_W / slip) : status.slide_direction_W;
+    status.slide_turn_W.setZero();
+    status.slip_grown = slip > status.slip_zero;
+    status.slip_left_near = false;
+    status.slip_stop_armed = false;
+    status.clear_end_slips();
+    for (std::size_t k = 0; k < 2; ++k) {
+      if (!end_moves[k]) continue;
+      status.end_slide_direction_W[k] = now.end_slip_W[k].normalized();
+      status.end_slip_grown[k] = true;
+    }
+    if (end_moves[0] != end_moves[1]) {
+      pin_or_push_end(c, end_moves[0] ? 1 : 0, y);
+    } else {
+      calc_accelerations(y);
+    }
+    if (!consistent()) return false;
+    // Pinned: what is left of its slip (below slip_zero) goes.
+    if (status.pinned_end >= 0) project(t, y);
+    return true;
+  }
   if (!can_roll) {
     if (!start_sliding(c, t, y)) return false;
   } else if (slip > status.slip_zero) {
@@ -308,7 +420,7 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
     status.slip_stop_armed = false;
     calc_accelerations(y);
   } else if (contact.friction > 0.0 && now.normal_force > 0.0 &&
-             demand.norm() <= (1.0 + kFrictionEdge) * contact.friction * now.normal_force) {
+             stick_margin(c, 1.0 + kFrictionEdge) >= 0.0) {
     if (!consistent()) return false;
     anchor_contact(c);
     project(t, y);  // no slip at all from here
@@ -319,22 +431,71 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
   return consistent();
 }
 
+bool ContactSystem::end_stop_watched(std::size_t c) const {
+  double value = 0.0;
+  return stopping_end(c, value) >= 0;
+}
+
+void ContactSystem::on_end_slip_event(std::size_t c, double t, VecX& y) {
+  ContactStatus& status = s_.contacts[c];
+  calc_accelerations(y);
+  double end_value = std::numeric_limits<double>::infinity();
+  const int stopping = stopping_end(c, end_value);
+  const PairView v = view(c);
+  if (status.pinned_end >= 0 && !(pinned_friction_margin(c) > end_value)) {
+    // The pinned end's friction reached the cone's edge first: it slides from rest, against the
+    // friction it needed.
+    const int k = status.pinned_end;
+    const char* end = pairs_[c]->end_name(v, k);
+    pin_or_push_end(c, k, y);
+    // (Still pinned: the friction fits after all, the event having been round-off.)
+    if (status.pinned_end < 0) {
+      note_contact(t, c,
+                   fmt::format("{} slides: the friction sticking needs leaves the cone", end));
+    }
+    return;
+  }
+  const auto e = static_cast<std::size_t>(stopping);
+  const double slip = d_.now[c].end_slip_W[e].norm();
+  if (slip > kSlipStoppedNear * status.slip_zero) {
+    // The end's slip turned away from the direction it had; it did not stop.
+    status.end_slide_direction_W[e] = d_.now[c].end_slip_W[e] / slip;
+    status.end_slip_grown[e] = true;
+    return;
+  }
+  note_contact(t, c, fmt::format("slip stops at {}", pairs_[c]->end_name(v, stopping)));
+  // What is left of its slip goes (the least kinetic-energy change that holds that end), so that
+  // the end counts as at rest: left at up to kSlipStoppedNear slip_zero, it would count as
+  // sliding, and stop again at once.
+  const int pinned = status.pinned_end;
+  status.pinned_end = stopping;
+  project(t, y);
+  status.pinned_end = pinned;
+  classify_contact(c, t, y);
+}
+
 void ContactSystem::classify_contact(std::size_t c, double t, VecX& y, bool always_note) {
   ContactStatus& status = s_.contacts[c];
   const ContactMode before = status.mode;
   const int size_before = status.feature.size();
   const RoundPart part_before = status.round_part;
+  const int pinned_before = status.pinned_end;
   const bool held = settle_on_candidates(c, t, y);
   if (!held) set_apart(c);
   const int size = status.feature.size();
-  const bool same =
-      status.mode == before && size == size_before && status.round_part == part_before;
+  const bool same = status.mode == before && size == size_before &&
+                    status.round_part == part_before && status.pinned_end == pinned_before;
   if (same && !always_note) return;
   std::string what = status.mode == ContactMode::Apart     ? "apart"
                      : status.mode == ContactMode::Sliding ? "slides"
                      : anchored(c) || held_polyhedron_[c]  ? "sticks"
                                                            : "rolls";
-  if (const char* part = pairs_[c]->part_name(view(c))) what += fmt::format(" on {}", part);
+  const PairView v = view(c);
+  if (const char* part = pairs_[c]->part_name(v)) what += fmt::format(" on {}", part);
+  if (status.mode == ContactMode::Sliding && status.pinned_end >= 0) {
+    what +=
+        fmt::format(", turning about {}, which sticks", pairs_[c]->end_name(v, status.pinned_end));
+  }
   note_contact(t, c, std::move(what));
 }
 
@@ -351,6 +512,7 @@ void ContactSystem::set_apart(std::size_t c) {
   status.mode = ContactMode::Apart;
   status.slide_turn_W.setZero();
   status.slip_stop_armed = false;
+  status.clear_end_slips();
   status.feature.polygon.clear();  // keeps its reserved room
   status.feature.inward_B.clear();
   status.feature.spin_radius = 0.0;
@@ -398,6 +560,7 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
   // from that landing part (an attempt may tip it).
   pair.find_touching_part(v, status.landing_height, false);
   d_.landing = status;
+  d_.landing.clear_end_slips();  // a sliding impulse's ends slide as the slip before it maps
 
   // Newton's restitution on the normal motion, Coulomb on the tangential impulse: the impulse
   // that leaves no slip if it lies in the cone, else a sliding impulse (normal impulses, each
@@ -441,7 +604,7 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
         } catch (const InconsistentConstraints&) {
           sticks = false;
         }
-        if (!sticks || !(friction_demand(c).norm() <= contact.friction * now.normal_force)) {
+        if (!sticks || !(stick_margin(c, 1.0) >= 0.0)) {
           const double slip = now.slip_W.norm();
           const Vec3 slide = slip > 0.0 ? Vec3(now.slip_W / slip) : pushed_direction(c);
           count = append_contact_unknowns(c, ContactMode::Sliding, ContactRows::Motion, slide, 0);
@@ -567,7 +730,10 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
       break;
     }
     default:
-      if (status.mode == ContactMode::Sliding) {
+      if (status.mode == ContactMode::Sliding && contacts_[c].friction > 0.0 && two_point(c) &&
+          (status.pinned_end >= 0 || end_stop_watched(c))) {
+        on_end_slip_event(c, t, y);
+      } else if (status.mode == ContactMode::Sliding) {
         dynamics_.calc_motion(y, true);
         calc_contact_points();
         const double slip = d_.now[c].slip_W.norm();
@@ -591,7 +757,16 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
       } else {
         calc_accelerations(y);
         if (start_sliding(c, t, y)) {
-          note_contact(t, c, "slides: the friction sticking needs leaves the cone");
+          const std::string what = "slides: the friction sticking needs leaves the cone";
+          const int pinned = status.pinned_end;
+          const PairView v = view(c);
+          note_contact(t, c,
+                       pinned < 0
+                           ? what
+                           : fmt::format("slides on {}, turning about {}, which sticks: the "
+                                         "friction sticking needs leaves the cone at {}",
+                                         pairs_[c]->part_name(v), pairs_[c]->end_name(v, pinned),
+                                         pairs_[c]->end_name(v, 1 - pinned)));
           break;
         }
         lift_off_or_hold_slide(c, t, y);

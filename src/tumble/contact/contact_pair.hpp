@@ -124,6 +124,12 @@ class ContactPair {
   // The part's name for the events ("a face", "its rim"), or nullptr where none is held.
   virtual const char* part_name(const PairView& v) const = 0;
 
+  // A two-point part's end (0: its first point, 1: its second) for the events ("its apex").
+  virtual const char* end_name(const PairView& v, int end) const {
+    (void)v;
+    return end == 0 ? "the edge's first end" : "the edge's second end";
+  }
+
   // The part that touches (into v.status): points within `within` of the plane that land with
   // the touchdown (PairView::lands_with; with `resting`, only those not moving away from it).
   // Without `resting` something always touches (a landing located to round-off is at the

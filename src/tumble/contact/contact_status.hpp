@@ -33,6 +33,22 @@ struct ContactStatus {
   bool slip_grown = false;      // the slip has been above slip_zero at the end of a step
   bool slip_left_near = false;  // ... and above kSlipStoppedNear slip_zero
   double slip_last_step = 0.0;  // m/s, sliding: the slip at the end of the last step
+  // A two-point part (an edge, a round body's side) slides with friction at each end against
+  // that end's own slip. Per end (0: the first point, A; 1: the second): the direction its slip
+  // had at the end of the last step once it has grown past slip_zero, or, where it starts from
+  // none while the other end slides, the way it is pushed; zero while it has not grown and the
+  // whole part's slide direction maps onto it (ContactSystem::end_slide_direction).
+  std::array<Vec3, 2> end_slide_direction_W = {Vec3::Zero(), Vec3::Zero()};
+  std::array<bool, 2> end_slip_grown = {false, false};
+  // Sliding on a two-point part: the end that sticks while the other slides (the part pivots
+  // about it: a cone on its side turning about its apex), or -1 where both slide.
+  int pinned_end = -1;
+  // Neither end's slip followed on its own, and neither pinned.
+  void clear_end_slips() {
+    end_slide_direction_W = {Vec3::Zero(), Vec3::Zero()};
+    end_slip_grown = {false, false};
+    pinned_end = -1;
+  }
   // A grown slip left below slip_zero by the last step stops at slip_stop_by (s).
   bool slip_stop_armed = false;
   double slip_stop_by = 0.0;

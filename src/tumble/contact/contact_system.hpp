@@ -139,6 +139,27 @@ class ContactSystem {
   // The current slip direction of a sliding contact (at d_.time_now); `follows_slip` (where
   // given): whether it is the slip's own direction rather than one the slip is held to.
   Vec3 slide_direction(std::size_t contact, bool* follows_slip = nullptr) const;
+  // Whether contact c's part is two points (an edge, a round body's side) on a free body, which
+  // slides with friction at each end against that end's own slip, and may pivot about one end
+  // (after calc_contact_points).
+  bool two_point(std::size_t contact) const;
+  // The direction of end `end`'s slip that its friction opposes: its own slip where that is
+  // followed (as slide_direction's), else the way it was pushed, else the part's slide
+  // direction slide_W (slip space: tangential, and rho times the spin about the normal) as the
+  // rigid motion it is, at this end.
+  Vec3 end_slide_direction(std::size_t contact, int end, const Vec3& slide_W) const;
+  // Sliding on a two-point part: the end that stops first among those whose slip is watched, and
+  // the value its stop watches (its slip along its direction); a pivot's pinned end, and the
+  // margin of its friction inside the cone. -1 where none.
+  int stopping_end(std::size_t contact, double& value) const;
+  double pinned_friction_margin(std::size_t contact) const;
+  // Sliding on a two-point part at y, slips of which only one end's is at rest: pinned there if
+  // its friction fits in the cone, else sliding from rest the way it is pushed (after a solve).
+  void pin_or_push_end(std::size_t contact, int end, const VecX& y);
+  bool end_stop_watched(std::size_t contact) const;
+  // The stick-slip event of a two-point part whose ends are watched: the pinned end lets go, or
+  // an end's slip stops (after which the contact is classified again).
+  void on_end_slip_event(std::size_t contact, double t, VecX& y);
   // The slip direction of a contact that must slide with no slip yet: the way it is pushed,
   // against the friction sticking needs (from d_.now).
   Vec3 pushed_direction(std::size_t contact) const;
@@ -148,6 +169,16 @@ class ContactSystem {
   // is, with the direction turning as it needs. False where friction would drive the slip back
   // (Painleve's case: friction high enough that it presses the contact on).
   bool start_sliding(std::size_t contact, double t, const VecX& y);
+  // start_sliding on a two-point part: it pivots about an end whose friction still fits, the
+  // other end sliding against its share of the friction, or both ends slide so.
+  bool start_sliding_on_two_points(std::size_t contact, double t, const VecX& y);
+  // How far the friction sticking needs is inside the cone (scaled by `edge`; >= 0: it sticks),
+  // after a rolling or sticking solve: mu N less its friction demand's size, or on a two-point
+  // part, the least room left at either end's cone with the friction along the part shared
+  // between them.
+  double stick_margin(std::size_t contact, double edge) const;
+  // A two-point part's direction along the plane, from its first end to its second (world).
+  Vec3 part_direction_W(std::size_t contact) const;
   // Where the rolling contact c cannot start sliding: it lifts off if, with no force, its points
   // (a round body's other end too, if it is at the plane) leave the plane; if not, no mode is
   // consistent, and it slides along the pushed direction.

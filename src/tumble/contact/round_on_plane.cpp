@@ -172,6 +172,10 @@ class RoundOnPlane final : public ContactPair {
     return part != RoundPart::None ? round_part_name(v.surface(), part) : nullptr;
   }
 
+  const char* end_name(const PairView& v, int end) const override {
+    return round_part_name(v.surface(), end == 0 ? RoundPart::EndA : RoundPart::EndB);
+  }
+
   bool find_touching_part(PairView& v, double within, bool resting) const override {
     ContactStatus& status = v.status;
     const RoundEnds ends = round_ends(v.surface());
@@ -257,11 +261,16 @@ class RoundOnPlane final : public ContactPair {
       }
       case RoundPart::EndA:
       case RoundPart::EndB: {
-        // The other end, if it is at the plane too, must not go into it.
+        // The other end, if it is at the plane too, must not go into it; if it would, the body
+        // lies on its side (a cone whose rim has landed while its apex, at the plane, comes
+        // down: on its rim alone no mode holds, and it would land again every nanosecond).
         SurfacePoint other;
         const bool at_plane =
             other_end_B(v, other) && v.height(other.p_B) <= status.touching_height;
-        return settle(at_plane ? one(other) : std::span<const SurfacePoint>());
+        if (settle(at_plane ? one(other) : std::span<const SurfacePoint>())) return true;
+        if (!at_plane) return false;
+        status.round_part = RoundPart::Side;
+        return settle({});
       }
       default:
         return settle({});

@@ -33,6 +33,10 @@ constexpr double kOnsetTurnStep = 1e-5;
 }  // namespace
 
 bool ContactSystem::start_sliding(std::size_t c, double t, const VecX& y) {
+  if (two_point(c) && contacts_[c].friction > 0.0 && start_sliding_on_two_points(c, t, y)) {
+    return true;
+  }
+  // (A two-point part none of whose ends can start so: as one slip, which maps onto its ends.)
   ContactStatus& status = s_.contacts[c];
   const Vec3 d0 = pushed_direction(c);  // from the rolling forces in d_.now
   status.mode = ContactMode::Sliding;
@@ -42,6 +46,7 @@ bool ContactSystem::start_sliding(std::size_t c, double t, const VecX& y) {
   status.slip_grown = false;
   status.slip_left_near = false;
   status.slip_stop_armed = false;
+  status.clear_end_slips();  // a two-point part's ends slide as the part's direction maps onto them
   const Vec3 a = slip_acceleration_at(c, y, d0);
   if (contacts_[c].friction == 0.0) return true;  // nothing can drive it back
   // Accelerations below this are round-off of zero (slip_zero over the time scale).
@@ -102,6 +107,68 @@ bool ContactSystem::turn_starting_slip(std::size_t c, double t, const VecX& y) {
     status.slide_turn_W += z(i) * basis[static_cast<std::size_t>(i + 1)];
   }
   return true;
+}
+
+bool ContactSystem::start_sliding_on_two_points(std::size_t c, double t, const VecX& y) {
+  ContactStatus& status = s_.contacts[c];
+  const ContactNow& now = d_.now[c];
+  const double mu = contacts_[c].friction;
+  // From the sticking forces (d_.now): the friction along the part shared between the ends as
+  // they can take it (stick_margin), and each end pushed against its share.
+  const Vec3 along_W = part_direction_W(c);
+  std::array<Vec3, 2> across_W, push_W;
+  std::array<double, 2> room{};
+  double along = 0.0;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Vec3& F_W = now.end_friction_W[k];
+    const double cap = mu * now.end_normal_force[k];
+    across_W[k] = F_W - along_W * along_W.dot(F_W);
+    along += along_W.dot(F_W);
+    room[k] = std::sqrt(std::max(0.0, cap * cap - across_W[k].squaredNorm()));
+  }
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double share = room[0] + room[1] > 0.0 ? room[k] / (room[0] + room[1]) : 0.5;
+    const Vec3 F_W = across_W[k] + share * along * along_W;
+    push_W[k] = F_W.norm() > 0.0 ? Vec3(-F_W.normalized()) : Vec3::Zero();
+  }
+  status.mode = ContactMode::Sliding;
+  status.slide_direction_W = pushed_direction(c);
+  status.slide_turn_W.setZero();
+  status.slide_start_t = t;
+  status.slip_grown = false;
+  status.slip_left_near = false;
+  status.slip_stop_armed = false;
+  // Accelerations below this are round-off of zero (slip_zero over the time scale).
+  const double zero = status.slip_zero / status.time_scale;
+  const BodyMotion w = dynamics_.motion(contacts_[c].body);
+  const Vec3& n = contacts_[c].normal_W;
+  // It pivots about one end, the other sliding, or both slide: the first whose pinned end's
+  // friction fits in its cone and whose sliding ends' slips are not driven back.
+  for (const int pinned : {0, 1, -1}) {
+    status.clear_end_slips();
+    status.pinned_end = pinned;
+    bool pushed = true;
+    for (int k = 0; k < 2; ++k) {
+      if (k == pinned) continue;
+      status.end_slide_direction_W[static_cast<std::size_t>(k)] =
+          push_W[static_cast<std::size_t>(k)];
+      pushed = pushed && !push_W[static_cast<std::size_t>(k)].isZero(0.0);
+    }
+    if (!pushed) continue;
+    calc_accelerations(y);
+    if (pinned >= 0 && !(pinned_friction_margin(c) >= 0.0)) continue;
+    bool grows = true;
+    for (int k = 0; k < 2; ++k) {
+      if (k == pinned) continue;
+      const auto e = static_cast<std::size_t>(k);
+      const Vec3 a_W = moving_point_acceleration_W(w, now.normal_points_B[e], Vec3::Zero());
+      grows = grows && (a_W - n * n.dot(a_W)).dot(push_W[e]) >= -zero;
+    }
+    if (grows) return true;
+  }
+  status.clear_end_slips();
+  calc_accelerations(y);
+  return false;
 }
 
 void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& y) {

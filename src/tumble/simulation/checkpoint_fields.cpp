@@ -73,6 +73,15 @@ void archive_status(StateArchive& a, ContactStatus& s) {
   a.flag("slip_grown", s.slip_grown);
   a.flag("slip_left_near", s.slip_left_near);
   a.number("slip_last_step", s.slip_last_step);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::string end = std::to_string(k);
+    a.vec3("end_slide_direction" + end + "_W", s.end_slide_direction_W[k]);
+    bool grown = s.end_slip_grown[k];
+    a.flag("end_slip_grown" + end, grown);
+    s.end_slip_grown[k] = grown;
+  }
+  a.integer("pinned_end", s.pinned_end);
+  a.require("pinned_end", s.pinned_end >= -1 && s.pinned_end <= 1, "-1, 0 or 1");
   a.flag("slip_stop_armed", s.slip_stop_armed);
   a.number("slip_stop_by", s.slip_stop_by);
   a.integer("cascade_landings", s.cascade_landings);

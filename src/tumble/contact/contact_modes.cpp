@@ -622,6 +622,10 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
           drop_point(c, now.least_point_B);
         } else if (!pair.tip_at_impact(v, side)) {
           break;
+        } else {
+          // An impulse that stops nothing of the point that landed is no impact: tipped onto a
+          // side without it (a box sticking on an edge whose face lands), it lands on that point.
+          pair.keep_landing_point(v, landing_B);
         }
         continue;
       }

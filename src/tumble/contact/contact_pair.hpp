@@ -152,6 +152,12 @@ class ContactPair {
   // is).
   virtual bool can_tip(const PairView& v) const = 0;
   virtual bool tip_at_impact(PairView& v, int side) const = 0;
+  // After tip_at_impact: a part that has lost the point p_B that landed becomes that point alone
+  // (a polyhedron's vertex), so that the impulse stops its approach.
+  virtual void keep_landing_point(PairView& v, const Vec3& p_B) const {
+    (void)v;
+    (void)p_B;
+  }
   // At the support event (the margin reached zero on `side`, with N and whether the plane still
   // presses by the subsystem's tolerance): tips onto the smaller part there, true; false if it
   // lifts off instead.

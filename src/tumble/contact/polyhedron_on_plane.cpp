@@ -179,6 +179,18 @@ class PolyhedronOnPlane final : public ContactPair {
     tip_onto_side(v.surface().vertices, side, v.now.n_B, v.status.feature);
     return true;
   }
+  void keep_landing_point(PairView& v, const Vec3& p_B) const override {
+    const ContactSurface& surface = v.surface();
+    for (const int i : v.status.feature.polygon) {
+      if (surface.vertices[static_cast<std::size_t>(i)] == p_B) return;
+    }
+    for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
+      if (surface.vertices[i] != p_B) continue;
+      const int vertex = static_cast<int>(i);
+      make_feature(surface.vertices, std::span<const int>(&vertex, 1), v.now.n_B, v.status.feature);
+      return;
+    }
+  }
   bool tip_on_support(PairView& v, int side, bool still_presses) const override {
     if (v.status.feature.size() < 2 || !still_presses) return false;
     tip_onto_side(v.surface().vertices, side, v.now.n_B, v.status.feature);

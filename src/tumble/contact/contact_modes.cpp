@@ -99,24 +99,34 @@ Vec3 ContactSystem::friction_demand(std::size_t c) const {
   return now.friction_W + (now.moment_about_O_B.dot(now.n_B) / rho) * n;
 }
 
-double ContactSystem::stick_margin(std::size_t c, double edge) const {
-  const ContactNow& now = d_.now[c];
-  const double mu = edge * contacts_[c].friction;
-  if (!two_point(c)) return mu * now.normal_force - friction_demand(c).norm();
+ContactSystem::EndFrictions ContactSystem::end_frictions(std::size_t c, double edge) const {
   // Two points, each holding what its own cone holds: the friction across the part at each end
   // is what the rows found there, and the friction along it (all at the first end's rows) may
   // be shared between the ends as they can take it.
-  const Vec3 along_W = part_direction_W(c);
-  double along = 0.0, margin = std::numeric_limits<double>::infinity(), room = 0.0;
+  const ContactNow& now = d_.now[c];
+  EndFrictions ends;
+  ends.along_direction_W = part_direction_W(c);
+  const Vec3& e = ends.along_direction_W;
   for (std::size_t k = 0; k < 2; ++k) {
     const Vec3& F_W = now.end_friction_W[k];
-    const double cap = mu * now.end_normal_force[k];
-    const double across = (F_W - along_W * along_W.dot(F_W)).norm();
-    along += along_W.dot(F_W);
-    margin = std::min(margin, cap - across);
-    room += std::sqrt(std::max(0.0, cap * cap - across * across));
+    ends.cap[k] = edge * contacts_[c].friction * now.end_normal_force[k];
+    ends.across_W[k] = F_W - e * e.dot(F_W);
+    ends.along += e.dot(F_W);
+    const double across = ends.across_W[k].norm();
+    ends.room[k] = std::sqrt(std::max(0.0, ends.cap[k] * ends.cap[k] - across * across));
   }
-  return std::min(margin, room - std::abs(along));
+  return ends;
+}
+
+double ContactSystem::stick_margin(std::size_t c, double edge) const {
+  if (!two_point(c)) {
+    return edge * contacts_[c].friction * d_.now[c].normal_force - friction_demand(c).norm();
+  }
+  const EndFrictions ends = end_frictions(c, edge);
+  double margin = ends.room[0] + ends.room[1] - std::abs(ends.along);
+  for (std::size_t k = 0; k < 2; ++k)
+    margin = std::min(margin, ends.cap[k] - ends.across_W[k].norm());
+  return margin;
 }
 
 Vec3 ContactSystem::part_direction_W(std::size_t c) const {
@@ -393,8 +403,7 @@ bool ContactSystem::settle_on_feature(std::size_t c, double t, VecX& y,
     status.slip_grown = slip > status.slip_zero;
     status.slip_left_near = false;
     status.slip_stop_armed = false;
-    status.clear_end_slips();
-    for (std::size_t k = 0; k < 2; ++k) {
+    for (std::size_t k = 0; k < 2; ++k) {  // (the ends were cleared above)
       if (!end_moves[k]) continue;
       status.end_slide_direction_W[k] = now.end_slip_W[k].normalized();
       status.end_slip_grown[k] = true;

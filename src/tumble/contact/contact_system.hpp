@@ -18,6 +18,7 @@
 // projection), contact_modes.cpp (events, modes, impacts), slip_onset.cpp and
 // contact_step_limit.cpp; what differs from one kind of surface to another is its contact pair's
 // (contact_pair.hpp), which this class asks and never tests the kind of.
+#include <array>
 #include <memory>
 #include <optional>
 #include <span>
@@ -177,6 +178,16 @@ class ContactSystem {
   // part, the least room left at either end's cone with the friction along the part shared
   // between them.
   double stick_margin(std::size_t contact, double edge) const;
+  // A two-point part's friction after a rolling or sticking solve, per end: mu N there (scaled by
+  // `edge`), the friction across the part, and the room left in its cone for friction along the
+  // part; and the part's direction (world, in the plane) and the friction along it, all told.
+  struct EndFrictions {
+    Vec3 along_direction_W = Vec3::Zero();
+    std::array<double, 2> cap{}, room{};
+    std::array<Vec3, 2> across_W = {Vec3::Zero(), Vec3::Zero()};
+    double along = 0.0;
+  };
+  EndFrictions end_frictions(std::size_t contact, double edge) const;
   // A two-point part's direction along the plane, from its first end to its second (world).
   Vec3 part_direction_W(std::size_t contact) const;
   // Where the rolling contact c cannot start sliding: it lifts off if, with no force, its points

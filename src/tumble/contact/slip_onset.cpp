@@ -112,23 +112,14 @@ bool ContactSystem::turn_starting_slip(std::size_t c, double t, const VecX& y) {
 bool ContactSystem::start_sliding_on_two_points(std::size_t c, double t, const VecX& y) {
   ContactStatus& status = s_.contacts[c];
   const ContactNow& now = d_.now[c];
-  const double mu = contacts_[c].friction;
   // From the sticking forces (d_.now): the friction along the part shared between the ends as
-  // they can take it (stick_margin), and each end pushed against its share.
-  const Vec3 along_W = part_direction_W(c);
-  std::array<Vec3, 2> across_W, push_W;
-  std::array<double, 2> room{};
-  double along = 0.0;
+  // they can take it (as stick_margin shares it), and each end pushed against its share.
+  const EndFrictions ends = end_frictions(c, 1.0);
+  const double room = ends.room[0] + ends.room[1];
+  std::array<Vec3, 2> push_W;
   for (std::size_t k = 0; k < 2; ++k) {
-    const Vec3& F_W = now.end_friction_W[k];
-    const double cap = mu * now.end_normal_force[k];
-    across_W[k] = F_W - along_W * along_W.dot(F_W);
-    along += along_W.dot(F_W);
-    room[k] = std::sqrt(std::max(0.0, cap * cap - across_W[k].squaredNorm()));
-  }
-  for (std::size_t k = 0; k < 2; ++k) {
-    const double share = room[0] + room[1] > 0.0 ? room[k] / (room[0] + room[1]) : 0.5;
-    const Vec3 F_W = across_W[k] + share * along * along_W;
+    const double share = room > 0.0 ? ends.room[k] / room : 0.5;
+    const Vec3 F_W = ends.across_W[k] + share * ends.along * ends.along_direction_W;
     push_W[k] = F_W.norm() > 0.0 ? Vec3(-F_W.normalized()) : Vec3::Zero();
   }
   status.mode = ContactMode::Sliding;

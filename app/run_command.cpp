@@ -92,9 +92,9 @@ void print_method_switches(const Integrator& integrator) {
     if (change.to_implicit) {
       fmt::print(
           "  switch         to radau5 at t = {:.6g} s: stiff ({} of dop853's steps held by its "
-          "stability, |h lambda| > {:g}; the last {:.3g})\n",
+          "stability, |h lambda| > {:g}, or > {:.3g} on a retried step; the last {:.3g})\n",
           change.t, AutoSwitching::kStiffSteps, AutoSwitching::kExplicitStabilityEdge,
-          change.h_lambda);
+          AutoSwitching::kNearEdge, change.h_lambda);
     } else if (change.modes_without_jacobian()) {
       fmt::print(
           "  switch         to dop853 at t = {:.6g} s: a contact is now held on more than one "

@@ -52,17 +52,20 @@ StepOutcome AutoSwitching::step(double t_stop) {
   if (switch_armed_) take_switch(t_, y_, false);
   Integrator& method = active();
   method.bound_next_step(step_bound_);
+  const long rejected_before = method.stats().rejected_steps;
   const StepOutcome outcome = method.step(t_stop);
-  if (outcome == StepOutcome::Ok) watch_stiffness();
+  if (outcome == StepOutcome::Ok) watch_stiffness(method.stats().rejected_steps > rejected_before);
   mirror_active();
   return outcome;
 }
 
-void AutoSwitching::watch_stiffness() {
+void AutoSwitching::watch_stiffness(bool retried) {
   const double h_lambda = active().last_step_h_lambda();
   if (!implicit_active_) {
-    // Hairer's counters (DOP853's IASTI and NONSTI).
-    if (h_lambda > kExplicitStabilityEdge) {
+    // Hairer's counters (DOP853's IASTI and NONSTI), with the band below the edge read as the
+    // header says.
+    const bool held = h_lambda > kExplicitStabilityEdge || (retried && h_lambda > kNearEdge);
+    if (held) {
       calm_steps_ = 0;
       if (++stiff_steps_ < kStiffSteps) return;
       stiff_steps_ = 0;
@@ -72,7 +75,8 @@ void AutoSwitching::watch_stiffness() {
       } else if (stiff_without_jacobian_at_ < 0.0) {
         stiff_without_jacobian_at_ = explicit_.t();
       }
-    } else if (calm_steps_ < kCalmStepsForgive && ++calm_steps_ == kCalmStepsForgive) {
+    } else if (h_lambda <= kNearEdge && calm_steps_ < kCalmStepsForgive &&
+               ++calm_steps_ == kCalmStepsForgive) {
       stiff_steps_ = 0;
     }
     return;

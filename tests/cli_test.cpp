@@ -123,6 +123,31 @@ TEST(Cli, ARunPastItsRowBudgetStopsWithTheRowsSoFar) {
   EXPECT_EQ(lines, 1 + 1000);  // the header and the budget's rows
 }
 
+// A scenario of format 2 that names no integrator runs `auto`: the stiff mount, its integrator
+// line left out, switches to radau5 within its first millisecond and says so; the same file as
+// format 1 runs dopri5, the contract's default, whose stability holds its steps.
+TEST(Cli, AFormatTwoScenarioWithoutAnIntegratorFindsItsStiffnessByItself) {
+  const fs::path dir = fresh_run_dir("format_two");
+  std::string text = read_file(example("stiff_mount.yaml"));
+  const std::size_t line = text.find("  integrator: radau5\n");
+  ASSERT_NE(line, std::string::npos);
+  text.erase(line, std::string("  integrator: radau5\n").size());
+  const std::size_t version = text.find("\ntumble: 1\n");
+  ASSERT_NE(version, std::string::npos);
+  write_file(dir, "one.yaml", text);
+  write_file(dir, "two.yaml", text.replace(version, 11, "\ntumble: 2\n"));
+  const CommandResult two =
+      run_tumble("run " + (dir / "two.yaml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(two.status, 0) << two.out;
+  EXPECT_NE(two.out.find("integrator     auto "), std::string::npos) << two.out;
+  EXPECT_NE(two.out.find("switch         to radau5 at t = 0.000140935 s: stiff"), std::string::npos)
+      << two.out;
+  const CommandResult one =
+      run_tumble("run " + (dir / "one.yaml").string() + " --out " + (dir / "out").string());
+  ASSERT_EQ(one.status, 0) << one.out;
+  EXPECT_NE(one.out.find("integrator     dopri5 "), std::string::npos) << one.out;
+}
+
 // A video of more than 100,000 frames is refused before the run (exit 2), not after it.
 TEST(Cli, AVideoOfTooManyFramesIsRefusedBeforeTheRun) {
   const fs::path dir = fresh_run_dir("frames");

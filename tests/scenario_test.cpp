@@ -139,6 +139,21 @@ output:
   EXPECT_EQ(s.output.trajectory, "prism.csv");
 }
 
+TEST(Scenario, FormatTwoTakesAutoWhereNoIntegratorIsGivenAndReadsAsFormatOneOtherwise) {
+  // Format 1's default is the contract's dopri5 (DefaultsComeFromTheStructsAndTheFileName).
+  const Scenario two = load_text("tumble: 2\n" + kSphere + kSimulate);
+  EXPECT_EQ(two.format_version, 2);
+  EXPECT_EQ(two.simulate.integrator, "auto");
+  EXPECT_EQ(two.simulate.rtol, 1e-3);
+  EXPECT_EQ(two.simulate.atol, 1e-6);
+  const Scenario chosen =
+      load_text("tumble: 2\n" + kSphere + "simulate: {duration: 1, integrator: dopri5}\n");
+  EXPECT_EQ(chosen.simulate.integrator, "dopri5");
+  const Scenario one = load_text(kHead + kSphere + kSimulate);
+  EXPECT_EQ(one.format_version, 1);
+  EXPECT_EQ(one.simulate.integrator, "dopri5");
+}
+
 TEST(Scenario, TheBoxFormulaGivesThePrismsInertiaWithoutAnOverride) {
   // The chapter's prism: a 4 x 1 x 2 box of 12 kg has I_G = M/12 (b^2 + c^2, ...) = diag(5, 20,
   // 17).
@@ -712,9 +727,11 @@ TEST(ScenarioError, AYamlSyntaxErrorIsReportedAtTheParsersMark) {
                     {4, 9, "", "YAML syntax error: end of map flow not found"});
 }
 
-TEST(ScenarioError, OnlyFormatVersionOneIsRead) {
-  expect_load_error("tumble: 2\n" + kSphere + kSimulate,
-                    {1, 9, "tumble", "unsupported format version 2; this tumble reads 1"});
+TEST(ScenarioError, OnlyFormatVersionsOneAndTwoAreRead) {
+  expect_load_error("tumble: 3\n" + kSphere + kSimulate,
+                    {1, 9, "tumble", "unsupported format version 3; this tumble reads 1 and 2"});
+  expect_load_error("tumble: 1.5\n" + kSphere + kSimulate,
+                    {1, 9, "tumble", "unsupported format version 1.5; this tumble reads 1 and 2"});
 }
 
 TEST(ScenarioError, AMissingFileCannotBeRead) {

@@ -89,9 +89,10 @@ std::string read_body_or_ground(const Reader& reader, const Field& field,
 std::vector<UserEventSpec> read_events(const Reader& reader, const Field& field,
                                        const Scenario& scenario);
 // `simulate:` and `output:` (simulate_reader.cpp).
-// has_forces: any load, force element or joint; has_system: joints, springs or impulses.
+// has_forces: any load, force element or joint; has_system: joints, springs or impulses;
+// format_version: the scenario's `tumble:` (which sets the default integrator).
 SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces,
-                           bool has_system);
+                           bool has_system, int format_version);
 OutputSpec read_output(const Reader& reader, const std::optional<Field>& field,
                        const std::string& file_stem);
 

@@ -187,12 +187,14 @@ YAML::Node parse_yaml(const std::string& text, const std::string& path) {
   return document;
 }
 
-void check_version(const Reader& reader, const MapReader& root) {
-  const Field version = root.require("tumble", "the format version: tumble: 1");
+// The format's version, 1 or 2 (docs/scenario.md, "Format versions").
+int read_version(const Reader& reader, const MapReader& root) {
+  const Field version = root.require("tumble", "the format version: tumble: 1 or tumble: 2");
   const std::string text = version.node.IsScalar() ? version.node.Scalar() : "?";
-  if (text != "1") {
-    reader.fail_at_value(version, "unsupported format version " + text + "; this tumble reads 1");
-  }
+  if (text == "1") return 1;
+  if (text == "2") return 2;
+  reader.fail_at_value(version,
+                       "unsupported format version " + text + "; this tumble reads 1 and 2");
 }
 
 // Each parameter in file order, with the --set values in place of the file's; a parameter may use
@@ -288,11 +290,12 @@ Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
   }
   const MapReader root(reader, Field{document, "", YAML::Mark()},
                        "a mapping of the scenario's keys (tumble: 1, bodies:, simulate:, ...)");
-  check_version(reader, root);
+  const int format_version = read_version(reader, root);
   root.allow_only(kTopLevelKeys, "a scenario");
 
   Scenario scenario;
   scenario.file = path;
+  scenario.format_version = format_version;
   scenario.parameters = read_parameters(reader, root.find("parameters"), overrides, expressions);
   const std::string stem = std::filesystem::path(path).stem().string();
   scenario.name = stem;
@@ -334,7 +337,7 @@ Scenario ScenarioDocument::read(const std::vector<ParameterOverride>& overrides,
   if (needs_simulate || root.has("simulate")) {
     scenario.simulate = scenario_reading::read_simulate(
         reader, root.require("simulate", "the run's settings, at least duration"),
-        has_system || !scenario.loads.empty(), has_system);
+        has_system || !scenario.loads.empty(), has_system, format_version);
   }
   scenario.output = scenario_reading::read_output(reader, root.find("output"), stem);
   scenario.warnings = std::move(warnings);

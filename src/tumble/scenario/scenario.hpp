@@ -173,9 +173,10 @@ struct ContactSpec {
 };
 
 struct SimulateSpec {
-  double duration = 0.0;              // s, > 0, required
-  std::string integrator = "dopri5";  // ode45's; the others: simulate_reader.cpp, kIntegrators
-  std::string formulation = "body";   // body (production) | textbook (the chapter's [R; omega])
+  double duration = 0.0;  // s, > 0, required
+  // ode45's (format 2's default is auto); the others: simulate_reader.cpp, kIntegrators
+  std::string integrator = "dopri5";
+  std::string formulation = "body";  // body (production) | textbook (the chapter's [R; omega])
   double rtol = tolerances::kDefaultRtol;  // integrators/tolerances.hpp: the valid range
   double atol = tolerances::kDefaultAtol;
   bool rtol_given = false;
@@ -231,6 +232,9 @@ struct UserEventSpec {
 struct Scenario {
   std::string file;  // as given on the command line
   std::string name;
+  // `tumble: 1` or `tumble: 2`. They read alike but for one default: format 2's integrator is
+  // `auto` (stiffness found and taken by itself), format 1's `dopri5`, as its contract says.
+  int format_version = 1;
   // `planar: true`: everything moves in the world's x-y plane (z out of it). The reader has
   // turned its 2D statement (points [x, y], angles and rates about z) into this 3D one; the
   // trajectory gets each body's angle and rate.

@@ -49,8 +49,9 @@ bool valid_atol(double x) {
 }  // namespace
 
 SimulateSpec read_simulate(const Reader& reader, const Field& field, bool has_forces,
-                           bool has_system) {
+                           bool has_system, int format_version) {
   SimulateSpec sim;
+  if (format_version >= 2) sim.integrator = "auto";
   const MapReader map(reader, field, "the run's settings {duration: s, integrator: ..., ...}");
   map.allow_only({"duration", "integrator", "formulation", "rtol", "atol", "step", "max_step",
                   "initial_step", "output_every", "max_steps", "max_rows"},

@@ -44,11 +44,15 @@ SystemQuantities calc_system_quantities(std::span<const RigidBody> bodies,
                                         std::span<const BodyState> states, const Vec3& gravity_W) {
   SystemQuantities q;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    q.kinetic_energy += calc_kinetic_energy(bodies[i], states[i]);
-    q.potential_energy += calc_gravity_potential(bodies[i], states[i], gravity_W);
-    q.linear_momentum += calc_linear_momentum(bodies[i], states[i]);
-    q.angular_momentum_about_origin +=
-        calc_angular_momentum_about_point_W(bodies[i], states[i], Vec3::Zero());
+    const RigidBody& body = bodies[i];
+    const BodyState& s = states[i];
+    // H_G once for the kinetic energy and the angular momentum: the same terms as
+    // calc_kinetic_energy's and calc_angular_momentum_about_point_W's, in the same order.
+    const Vec3 H_G_W = calc_angular_momentum_about_com_W(body, s);
+    q.kinetic_energy += 0.5 * body.mass * s.v_G.squaredNorm() + 0.5 * s.omega_W.dot(H_G_W);
+    q.potential_energy += calc_gravity_potential(body, s, gravity_W);
+    q.linear_momentum += calc_linear_momentum(body, s);
+    q.angular_momentum_about_origin += s.r_G.cross(body.mass * s.v_G) + H_G_W;
   }
   q.total_energy = q.kinetic_energy + q.potential_energy;
   return q;

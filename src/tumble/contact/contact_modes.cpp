@@ -715,33 +715,9 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
         impact(c, t, y);
       }
       break;
-    case 1: {  // support: lift-off, or the CoP at the feature's side
-      calc_accelerations(y);
-      int side = -1;
-      support_margin_of(c, side);
-      const ContactPair& pair = *pairs_[c];
-      PairView v = view(c);
-      if (held_polyhedron_[c] && pair.can_tip(v) && d_.now[c].normal_force > 0.0) {
-        drop_point(c, d_.now[c].least_point_B);
-        if (status.mode == ContactMode::Apart) {
-          note_contact(t, c, "lifts off");
-          break;
-        }
-        note_contact(t, c, fmt::format("tips onto {}", pair.part_name(v)));
-        classify_contact(c, t, y);
-        break;
-      }
-      const bool presses =
-          still_presses(d_.now[c].normal_force, bodies_[contacts_[c].body].mass, gravity_W_);
-      if (pair.tip_on_support(v, side, presses)) {
-        note_contact(t, c, fmt::format("tips onto {}", pair.part_name(v)));
-        classify_contact(c, t, y);
-        break;
-      }
-      set_apart(c);
-      note_contact(t, c, "lifts off");
+    case 1:  // support: lift-off, or the CoP at the feature's side
+      on_support_event(c, t, y);
       break;
-    }
     default:
       if (status.mode == ContactMode::Sliding && contacts_[c].friction > 0.0 && two_point(c) &&
           (status.pinned_end >= 0 || end_stop_watched(c))) {
@@ -786,8 +762,55 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
       }
       break;
   }
+  release_pulling_contacts(c, t, y);
   s_.last_event_t = t;
   note_event_numbers(first_new, y);
+}
+
+void ContactSystem::on_support_event(std::size_t c, double t, VecX& y) {
+  ContactStatus& status = s_.contacts[c];
+  calc_accelerations(y);
+  int side = -1;
+  support_margin_of(c, side);
+  const ContactPair& pair = *pairs_[c];
+  PairView v = view(c);
+  if (held_polyhedron_[c] && pair.can_tip(v) && d_.now[c].normal_force > 0.0) {
+    drop_point(c, d_.now[c].least_point_B);
+    if (status.mode == ContactMode::Apart) {
+      note_contact(t, c, "lifts off");
+      return;
+    }
+    note_contact(t, c, fmt::format("tips onto {}", pair.part_name(v)));
+    classify_contact(c, t, y);
+    return;
+  }
+  const bool presses =
+      still_presses(d_.now[c].normal_force, bodies_[contacts_[c].body].mass, gravity_W_);
+  if (pair.tip_on_support(v, side, presses)) {
+    note_contact(t, c, fmt::format("tips onto {}", pair.part_name(v)));
+    classify_contact(c, t, y);
+    return;
+  }
+  set_apart(c);
+  note_contact(t, c, "lifts off");
+}
+
+void ContactSystem::release_pulling_contacts(std::size_t handled, double t, VecX& y) {
+  if (contacts_.size() < 2) return;
+  // Each round releases one contact (or tips it onto a part that may need the next round).
+  for (std::size_t round = 0; round < contacts_.size(); ++round) {
+    calc_accelerations(y);
+    std::size_t pulling = contacts_.size();
+    for (std::size_t c = 0; c < contacts_.size() && pulling == contacts_.size(); ++c) {
+      if (c == handled || s_.contacts[c].mode == ContactMode::Apart) continue;
+      const double N = held_polyhedron_[c] ? d_.now[c].least_point_force : d_.now[c].normal_force;
+      if (-N > kSlipZero * bodies_[contacts_[c].body].mass * std::max(gravity_W_.norm(), 1.0)) {
+        pulling = c;
+      }
+    }
+    if (pulling == contacts_.size()) return;
+    on_support_event(pulling, t, y);
+  }
 }
 
 namespace {

@@ -194,6 +194,13 @@ class ContactSystem {
   // (a round body's other end too, if it is at the plane) leave the plane; if not, no mode is
   // consistent, and it slides along the pushed direction.
   void lift_off_or_hold_slide(std::size_t contact, double t, const VecX& y);
+  // The support event of a touching contact: it lifts off, or tips onto a smaller part.
+  void on_support_event(std::size_t contact, double t, VecX& y);
+  // After the event of contact `handled` changed its modes: every other touching contact that
+  // the change left pulling on its body (N below zero by more than the tolerance it is solved
+  // to) has had its support event at this instant (its function jumped across zero rather than
+  // crossing it within a step, where the event would have been located), and takes it.
+  void release_pulling_contacts(std::size_t handled, double t, VecX& y);
   // At the cone's edge: the rate the starting slip's direction turns at (into slide_turn_W);
   // false if no turn lets the slip grow.
   bool turn_starting_slip(std::size_t contact, double t, const VecX& y);

@@ -11,10 +11,20 @@
 // The example runs at rtol 1e-12: the tests allow 1e-10 of each closed-form value (the run's
 // error in the speed is ~1e-12 of it).
 // (A disk as a pendulum's bob striking a wall: contact_joint_test.cpp, with the sphere's.)
+//
+// And examples/edge_mill.yaml: a millstone on a bearing at the end of an axle that a ball joint
+// holds at the height of the stone's centre, rolling round the pivot. Steady at any turning rate
+// Omega: the stone spins about the axle at -Omega d / R, and the moment of momentum about the
+// pivot along the axle, I_a ws, turns with it; its rate Omega I_a ws across the axle is what the
+// weights' moments and the ground's N d leave, so that
+//     N = (m + m_a / 2) g + I_a Omega^2 / R,   I_a = m R^2 / 2,
+// with no friction (none is needed: the ball joint takes the centripetal force, and of the
+// forces the redundant rows leave open the solve takes those with the least friction).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "scenario_run.hpp"
 #include "test_files.hpp"
@@ -56,6 +66,32 @@ TEST(HeldWheels, ACartRollsDownARampAtTheClosedFormsAcceleration) {
   for (const ContactEventRecord& event : run.contact_events) {
     EXPECT_EQ(event.t, 0.0) << event.what;
     EXPECT_EQ(event.what, "rolls on its rim");
+  }
+}
+
+TEST(HeldWheels, AnEdgeMillsGroundPushesWithTheWeightsShareAndTheGyroscopicTerm) {
+  const double R = 0.5, m = 10.0, d = 1.0, m_axle = 2.0, g = 9.81, I_a = m * R * R / 2;
+  for (const double Omega : {2.0, 5.0}) {
+    const test::ScenarioRun run = test::run_scenario(
+        load_scenario(test::example("edge_mill.yaml"), {{"Omega", std::to_string(Omega)}}));
+    const double N = (m + m_axle / 2) * g + I_a * Omega * Omega / R;
+    const double spin = -Omega * d / R;
+    ASSERT_GT(run.rows.back().t, 10 * 2 * std::numbers::pi / Omega - 0.01);  // ten circuits
+    for (const test::Row& row : run.rows) {
+      const ContactOutput& ground = row.extras.contacts[0];
+      ASSERT_EQ(ground.mode, 2) << row.t;
+      // The run's tolerance (rtol 1e-12) on forces of ~100 N and speeds of ~Omega d: 1e-9.
+      EXPECT_NEAR(ground.normal_force, N, 1e-9 * N) << "Omega " << Omega << ", t " << row.t;
+      EXPECT_LT(ground.friction_W.norm(), 1e-9 * N) << "Omega " << Omega << ", t " << row.t;
+      // Steady: the stone's centre d from the pivot at its height, turning at Omega about the
+      // vertical, spinning at -Omega d / R about the axle.
+      const BodyState& stone = row.states[1];
+      const Vec3 from_pivot = stone.r_G - Vec3(0.0, 0.0, R);
+      EXPECT_NEAR(from_pivot.z(), 0.0, 1e-9 * d) << row.t;
+      EXPECT_NEAR(from_pivot.norm(), d, 1e-9 * d) << row.t;
+      EXPECT_NEAR(stone.omega_W.z(), Omega, 1e-9 * Omega) << row.t;
+      EXPECT_NEAR(stone.omega_W.dot(from_pivot / d), spin, 1e-9 * Omega) << row.t;
+    }
   }
 }
 

@@ -22,6 +22,8 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
   x.resize(rows);
   solve_scratch = ConstraintSolveScratch(rows);
   row_scales.resize(rows);
+  saved_matrix.resize(rows, rows);
+  saved_rhs.resize(rows);
   impact_y.resize(dimension);
   onset_y.resize(dimension);
   onset_dydt.resize(dimension);

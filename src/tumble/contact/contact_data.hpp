@@ -76,6 +76,8 @@ struct ContactData {
   VecX rhs, x;
   ConstraintSolveScratch solve_scratch;  // for rows that joints or other contacts make redundant
   VecX row_scales;                       // per row, for those: normal rows carry the load first
+  MatX saved_matrix;                     // the rows before a solve, and its right-hand side, for
+  VecX saved_rhs;                        // the second solve of redundant rows
   std::vector<BodyWrench> wrenches;      // as many: forces or impulses on bodies
   std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                         // impact()'s

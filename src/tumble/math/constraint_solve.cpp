@@ -136,7 +136,7 @@ ConstraintSolveScratch::ConstraintSolveScratch(Eigen::Index largest)
   column_of.reserve(static_cast<std::size_t>(largest));
 }
 
-void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch,
+bool solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch,
                                 double zero, const VecX* scales) {
   double scale = 0.0;
   for (Eigen::Index c = 0; c < n; ++c) {
@@ -156,7 +156,7 @@ void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolv
       b.head(n) = scratch.b.head(n);
       if (scales == nullptr) {
         solve_with_redundant_rows(A, b, n, scale, zero, scratch);
-        return;
+        return true;
       }
       // x = S x' with S = diag(scales): the least-norm x' of (A S) x' = b is the x of least
       // sum (x_i / scales_i)^2.
@@ -167,7 +167,7 @@ void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolv
       }
       solve_with_redundant_rows(A, b, n, scaled, zero, scratch);
       b.head(n).array() *= scales->head(n).array();
-      return;
+      return true;
     }
     if (pivot != col) {
       for (Eigen::Index c = col; c < n; ++c) std::swap(A(pivot, c), A(col, c));
@@ -184,6 +184,7 @@ void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolv
     for (Eigen::Index c = r + 1; c < n; ++c) sum -= A(r, c) * b(c);
     b(r) = sum / A(r, r);
   }
+  return false;
 }
 
 }  // namespace tumble

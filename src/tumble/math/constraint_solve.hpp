@@ -38,8 +38,9 @@ struct ConstraintSolveScratch {
 
 // With `scales` (n entries, > 0), the solution taken where rows are redundant is the least in
 // sum (x_i / scales_i)^2 instead: unknowns of a large scale carry the load before the others.
-// (Independent rows have one solution: the scales are not read.)
-void solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch,
+// (Independent rows have one solution: the scales are not read.) Returns whether the rows were
+// redundant (and the least-norm solution taken).
+bool solve_constraints_in_place(MatX& A, VecX& b, Eigen::Index n, ConstraintSolveScratch& scratch,
                                 double zero = 0.0, const VecX* scales = nullptr);
 
 }  // namespace tumble

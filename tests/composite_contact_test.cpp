@@ -8,7 +8,9 @@
 //  - a block of a turned box and a sphere above it rests on its box's face: the floor carries the
 //    whole weight, M g, and nothing moves. The box's corners are the part's, turned by the part's
 //    orientation and placed about the body's COM: were they not turned, the block would start a
-//    twentieth of a metre above the floor and fall.
+//    twentieth of a metre above the floor and fall;
+//  - a block of a turned tetrahedron (a mesh part) and a sphere rests on the tetrahedron's face,
+//    placed and turned as a box part's corners are.
 // And the reader: a composite names the touching part where it has more than one that can touch;
 // a part that cannot (a rod), a part it lacks, and `part:` on a body of one shape are refused at
 // the key.
@@ -45,6 +47,35 @@ simulate: {{duration: 0.6, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_
                      e);
 }
 
+// A block of two parts, `base` (named base) touching the floor, the body's frame `z` up.
+std::string block_on_the_floor(const std::string& base, const std::string& knob, double z) {
+  return fmt::format(R"(tumble: 1
+gravity: [0, 0, -{}]
+bodies:
+  block:
+    parts:
+      - {}
+      - {}
+    position: [0, 0, {}]
+contacts:
+  - {{name: floor, type: plane, body: block, part: base,
+     plane: {{point: [0, 0, 0], normal: [0, 0, 1]}}, friction: 0.5}}
+simulate: {{duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.05}}
+)",
+                     test::kG, base, knob, z);
+}
+
+// A body of mass M at rest on its first contact: sticking, the floor carrying M g, nothing moving.
+void expect_resting_on_the_floor(const test::ScenarioRun& run, double M) {
+  const Vec3 r0 = run.rows.front().states[0].r_G;
+  for (const test::Row& row : run.rows) {
+    EXPECT_EQ(row.extras.contacts[0].mode, 2) << "t " << row.t;
+    EXPECT_NEAR(row.extras.contacts[0].normal_force, M * test::kG, 1e-12 * M * test::kG)
+        << "t " << row.t;
+    EXPECT_NEAR((row.states[0].r_G - r0).norm(), 0.0, 1e-12) << "t " << row.t;
+  }
+}
+
 TEST(CompositeContact, AHammersHeadStrikesAnAnvilAndReboundsAtEOfItsRate) {
   const double L = 0.6, h = 0.3, w0 = 2.0;
   const double t_strike = std::asin(h / L) / w0;
@@ -67,31 +98,34 @@ TEST(CompositeContact, AHammersHeadStrikesAnAnvilAndReboundsAtEOfItsRate) {
 }
 
 TEST(CompositeContact, ABlockRestsOnItsTurnedBoxPartWithTheFloorCarryingItsWeight) {
-  const test::ScenarioRun run = test::run_inline_scenario(fmt::format(R"(tumble: 1
-gravity: [0, 0, -{}]
-bodies:
-  block:
-    parts:
-      # 0.4 x 0.2 x 0.1 turned a quarter about x: 0.2 high, its bottom face 0.1 below its centre
-      - {{name: base, shape: box, size: [0.4, 0.2, 0.1], mass: 2, position: [0, 0, 0.1],
-         orientation: {{axis: [1, 0, 0], angle: 90 deg}}}}
-      - {{name: knob, shape: sphere, radius: 0.05, mass: 1, position: [0.1, 0, 0.3]}}
-    position: [0, 0, 0]
-contacts:
-  - {{name: floor, type: plane, body: block, part: base,
-     plane: {{point: [0, 0, 0], normal: [0, 0, 1]}}, friction: 0.5}}
-simulate: {{duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.05}}
-)",
-                                                                      test::kG),
-                                                          "block");
-  const double M = 3.0;
-  const Vec3 r0 = run.rows.front().states[0].r_G;
-  for (const test::Row& row : run.rows) {
-    EXPECT_EQ(row.extras.contacts[0].mode, 2) << "t " << row.t;
-    EXPECT_NEAR(row.extras.contacts[0].normal_force, M * test::kG, 1e-12 * M * test::kG)
-        << "t " << row.t;
-    EXPECT_NEAR((row.states[0].r_G - r0).norm(), 0.0, 1e-12) << "t " << row.t;
-  }
+  // 0.4 x 0.2 x 0.1 turned a quarter about x: 0.2 high, its bottom face 0.1 below its centre.
+  const test::ScenarioRun run = test::run_inline_scenario(
+      block_on_the_floor("{name: base, shape: box, size: [0.4, 0.2, 0.1], mass: 2, "
+                         "position: [0, 0, 0.1], orientation: {axis: [1, 0, 0], angle: 90 deg}}",
+                         "{name: knob, shape: sphere, radius: 0.05, mass: 1, "
+                         "position: [0.1, 0, 0.3]}",
+                         0.0),
+      "block");
+  expect_resting_on_the_floor(run, 3.0);
+}
+
+TEST(CompositeContact, ABlockRestsOnItsTurnedMeshPartWithTheFloorCarryingItsWeight) {
+  // tests/data/meshes/tetrahedron.obj (legs 2, 3 and 1.5 along x, y and z from its right-angled
+  // corner) as a part placed at its COM and turned a quarter turn about -y: its face on the
+  // plane x = corner, 0.5 from the COM, comes down, and its vertices there lie at z = -0.5 in the
+  // body, whose frame is placed 0.5 m up. Were its vertices not turned (its z face, 0.375 from the
+  // COM, down) it would start 0.125 m above the floor; a sphere part above keeps the COM over the
+  // face.
+  const std::string tetrahedron = std::string(TUMBLE_TEST_DATA_DIR) + "/meshes/tetrahedron.obj";
+  const test::ScenarioRun run = test::run_inline_scenario(
+      block_on_the_floor("{name: base, shape: mesh, file: \"" + tetrahedron +
+                             "\", mass: 2, position: [0, 0, 0], "
+                             "orientation: {axis: [0, 1, 0], angle: -90 deg}}",
+                         "{name: knob, shape: sphere, radius: 0.2, mass: 1, position: [0, 0, 0.8]}",
+                         0.5),
+      "mesh_block");
+  EXPECT_NEAR(run.rows.front().states[0].r_G.z(), 0.5 + 1.0 * 0.8 / 3.0, 1e-15);
+  expect_resting_on_the_floor(run, 3.0);
 }
 
 TEST(CompositeContact, TheReaderNamesTheTouchingPart) {

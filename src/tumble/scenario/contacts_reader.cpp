@@ -14,12 +14,12 @@
 namespace tumble::scenario_reading {
 namespace {
 
-// Of a composite's parts, those that touch a plane: a sphere's or shell's centre and a box's or
-// plate's corners are placed in the body like any point of it (a round part's axis, or a mesh's
-// hull, is not carried over yet).
+// Of a composite's parts, those that touch a plane: a sphere's or shell's centre and a box's,
+// plate's or mesh's vertices are placed in the body like any point of it (a round part's axis is
+// not carried over yet).
 bool part_touches_a_plane(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Box ||
-         kind == ShapeKind::Plate;
+         kind == ShapeKind::Plate || kind == ShapeKind::Mesh;
 }
 
 // The composite's part that touches: the one `part:` names, or its one part that can.
@@ -40,8 +40,8 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
       if (!part_touches_a_plane(body.parts[p].shape.kind)) {
         reader.fail_at_value(*f, "part '" + name + "' of body '" + body.name + "' is a " +
                                      std::string(shape_name(body.parts[p].shape.kind)) +
-                                     "; of a composite's parts a sphere, shell, box or plate "
-                                     "touches a plane (not yet a round part or a mesh); those "
+                                     "; of a composite's parts a sphere, shell, box, plate or "
+                                     "mesh touches a plane (not yet a round part); those "
                                      "that can: " +
                                      touching_names());
       }
@@ -61,8 +61,8 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
         body_field,
         "body '" + body.name + "' is a composite; " +
             (count == 0 ? std::string("none of its parts can touch a plane (of a composite's "
-                                      "parts a sphere, shell, box or plate touches; not yet a "
-                                      "round part or a mesh)")
+                                      "parts a sphere, shell, box, plate or mesh touches; not "
+                                      "yet a round part)")
                         : "name the part that touches with `part:` (one contact per part): " +
                               touching_names()));
   }
@@ -93,7 +93,7 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
         body_field, "body '" + contact.body + "' is a " + std::string(shape_name(body.shape.kind)) +
                         "; contact with a plane is for a sphere, shell, disk, ring, "
                         "cylinder, tube, cone, box, plate or mesh, or a composite's sphere, "
-                        "shell, box or plate part");
+                        "shell, box, plate or mesh part");
   } else if (const auto f = map.find("part")) {
     reader.fail_at_value(*f, "body '" + contact.body +
                                  "' is one shape, not a composite: it has "

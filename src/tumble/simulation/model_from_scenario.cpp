@@ -71,12 +71,13 @@ ContactSurface contact_surface(const Shape& shape) {
   return surface;
 }
 
-// The surface of a composite's part (a sphere's or shell's, a box's or plate's; the reader admits
-// only these) in the body's axes from the body's COM.
+// The surface of a composite's part (a sphere's or shell's, a box's, plate's or mesh's; the reader
+// admits only these) in the body's axes from the body's COM.
 ContactSurface part_contact_surface(const BodySpec& body, const PartSpec& part) {
   ContactSurface surface = contact_surface(part.shape);
-  // The part's own frame sits at its centre (a sphere's, a box's): a sphere's centre, and a box's
-  // corners turned into the body's axes about it.
+  // The surface is the part's from its own COM (a sphere's or box's centre; a mesh's vertices
+  // less its COM in its file's frame): a sphere's centre, and a polyhedron's vertices turned into
+  // the body's axes about the part's COM there.
   const Vec3 centre_B = part.mass_properties.com - body.mass_properties.com;
   surface.centre_B = centre_B;
   for (Vec3& p : surface.vertices) p = centre_B + part.R_BP * p;

@@ -6,8 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "test_constants.hpp"
 
@@ -225,6 +229,73 @@ TEST(Expression, RedefinedValuesReachLaterExpressions) {
   EXPECT_EQ(evaluator.evaluate("a"), 3.0);
   EXPECT_EQ(evaluator.evaluate("a^3 + 1"), 28.0);
   EXPECT_THROW(evaluator.redefine("b", 1.0), ExpressionError);
+}
+
+// The forms a BoundExpression reads without muParser (a variable, a comparison of two operands,
+// their difference as split_comparison's margin writes it) give muParser's own doubles: each is
+// set beside the same operation written so that muParser evaluates it, over values where a
+// shortcut would most likely go wrong (equal, signed zeros, infinities, NaN, subnormal).
+TEST(Expression, DirectFormsAreMuParsersValues) {
+  double a = 0.0, b = 0.0;
+  const BoundExpression::Variable variables[] = {{"ball.a", &a}, {"b", &b}};
+  const std::vector<std::pair<std::string, std::string>> forms = {
+      {"ball.a < b", "(ball.a) < (b)"}, {"ball.a <= b", "(ball.a) <= (b)"},
+      {"ball.a > 0", "(ball.a) > (0)"}, {" ball.a >= 2.5 ", "(ball.a) >= (2.5)"},
+      {"(ball.a) - (b)", "ball.a - b"}, {"(ball.a) - (0.1)", "ball.a - 0.1"},
+      {"(1e-3) - (b)", "1e-3 - b"},     {"ball.a", "(ball.a)"}};
+  const double inf = std::numeric_limits<double>::infinity();
+  const double values[] = {0.0,
+                           -0.0,
+                           1.0,
+                           2.5,
+                           0.1,
+                           1e-3,
+                           -7.25,
+                           4.9e-324,
+                           inf,
+                           -inf,
+                           std::numeric_limits<double>::quiet_NaN()};
+  for (const auto& [direct_text, parsed_text] : forms) {
+    const BoundExpression direct(direct_text, variables);
+    const BoundExpression parsed(parsed_text, variables);
+    for (const double x : values) {
+      for (const double y : values) {
+        a = x;
+        b = y;
+        const double d = direct.evaluate(), p = parsed.evaluate();
+        EXPECT_TRUE(std::memcmp(&d, &p, sizeof d) == 0 || (std::isnan(d) && std::isnan(p)))
+            << direct_text << " at " << x << ", " << y << ": " << d << " against " << p;
+      }
+    }
+  }
+}
+
+// Compiled AsConstants over a variable, an expression gives what the evaluator gives with that
+// variable a constant (muParser folds it as it compiles), bit for bit: the shared-model runs of a
+// sweep rely on it. Its optimiser would write x^3 as x*x*x and fold 2*x/3 otherwise.
+TEST(Expression, CompiledAsConstantsAnExpressionFoldsAsTheReadDoes) {
+  double x = 0.0;
+  const BoundExpression::Variable variables[] = {{"x", &x}};
+  for (const std::string text :
+       {"x^3", "x^4 - x^2", "10^(-x)", "2*x/3", "x/10 + 1", "-x^2", "3 * x * 7", "sin(x) * x",
+        "sqrt(x^2 + 1) / x", "x * 30 deg", "x * 1500 rpm / 7", "1 / (x - 3)^5"}) {
+    const BoundExpression compiled(text, variables, BoundExpression::Compile::AsConstants);
+    for (const double value : {0.1, 0.3, 1.0 / 3.0, 2.7, 7.1, 1e-5, 123.456, -4.4}) {
+      ExpressionEvaluator evaluator;
+      evaluator.define("x", value);
+      x = value;
+      double read = 0.0;
+      try {
+        read = evaluator.evaluate(text);
+      } catch (const ExpressionError&) {
+        continue;  // not finite there
+      }
+      const double bound = compiled.evaluate();
+      EXPECT_EQ(std::memcmp(&read, &bound, sizeof read), 0)
+          << text << " at x = " << value << ": "
+          << fmt::format("{:.17g} against {:.17g}", read, bound);
+    }
+  }
 }
 
 }  // namespace

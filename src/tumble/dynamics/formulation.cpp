@@ -7,7 +7,7 @@ void Formulation::unpack_all(const VecX& y, std::span<BodyState> states) const {
 }
 
 void Formulation::calc_row_extras(double /*t*/, const VecX& /*y*/, RowExtras& extras) const {
-  extras = RowExtras{};
+  extras.reset();
 }
 
 }  // namespace tumble

@@ -46,6 +46,19 @@ struct RowExtras {
   // on past a turn) and rates (rad/s), at the row's time `planar_t`; empty otherwise.
   std::vector<double> planar_angles, planar_rates;
   double planar_t = 0.0;
+
+  // What a RowExtras{} holds, keeping the vectors' storage (a sweep makes a row at every step).
+  void reset() {
+    joints.clear();
+    coordinates.clear();
+    contacts.clear();
+    elements.clear();
+    elastic_energy = 0.0;
+    loops = LoopErrors{};
+    planar_angles.clear();
+    planar_rates.clear();
+    planar_t = 0.0;
+  }
 };
 
 }  // namespace tumble

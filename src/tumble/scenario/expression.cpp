@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -318,17 +319,19 @@ std::optional<Comparison> split_comparison(const std::string& text) {
   }
   if (!at) return std::nullopt;
   const std::size_t right = *at + (text[*at + 1] == '=' ? 2 : 1);
-  return Comparison{text.substr(0, *at), text.substr(right), text[*at] == '>'};
+  return Comparison{text.substr(0, *at), text.substr(right), text[*at] == '>', right == *at + 2};
 }
 
 struct BoundExpression::Impl {
   mu::Parser parser;
 };
 
-BoundExpression::BoundExpression(std::string text, std::span<const Variable> variables)
+BoundExpression::BoundExpression(std::string text, std::span<const Variable> variables,
+                                 Compile compile)
     : impl_(std::make_unique<Impl>()), text_(std::move(text)) {
   mu::Parser& parser = impl_->parser;
   try {
+    if (compile == Compile::AsConstants) parser.EnableOptimizer(false);
     parser.DefineNameChars(kNameChars);
     define_constants_and_units(parser);
     parser.SetExpr(text_);
@@ -359,11 +362,7 @@ BoundExpression::BoundExpression(std::string text, std::span<const Variable> var
     // function is evaluated inside a run's steps).
     parser.Eval();
     if (parser.GetNumResults() != 1) throw several_values_error(text_, parser.GetNumResults());
-    // A lone variable ("ball.vx", a sweep's usual record) is read without muParser's evaluation:
-    // the same double, a sixth of the cost.
-    if (used_names_.size() == 1 && trim_blanks(text_) == used_names_[0]) {
-      direct_ = found.at(used_names_[0]);
-    }
+    find_direct_form(found);
   } catch (const mu::Parser::exception_type& error) {
     if (refused_assignment(error)) throw assignment_error(text_);
     const bool unknown = error.GetCode() == mu::ecUNASSIGNABLE_TOKEN;
@@ -374,8 +373,72 @@ BoundExpression::BoundExpression(std::string text, std::span<const Variable> var
 
 BoundExpression::~BoundExpression() = default;
 
+void BoundExpression::find_direct_form(const std::map<std::string, const double*>& found) {
+  // An operand's value: a variable's pointer, or a plain number (digits first: no sign, no inf or
+  // nan) kept in numbers_[slot]. muParser reads such a number to the same double (both round
+  // correctly), and its a - b, a < b, ... are these operations on them.
+  const auto operand = [&](std::string_view text, int slot) -> const double* {
+    text = trim_blanks(text);
+    if (const auto variable = found.find(std::string(text)); variable != found.end()) {
+      return variable->second;
+    }
+    if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text.front())) != 0)) {
+      return nullptr;
+    }
+    const std::optional<double> number = plain_number(text);
+    if (!number) return nullptr;
+    numbers_[slot] = *number;
+    return &numbers_[slot];
+  };
+  const std::string_view text = trim_blanks(text_);
+  if (const double* value = operand(text, 0); value != nullptr && value != &numbers_[0]) {
+    direct_ = Direct::Value;
+    left_ = value;
+    return;
+  }
+  // The margin split_comparison's Comparison writes: "(A) - (B)".
+  if (text.starts_with('(') && text.ends_with(')')) {
+    const std::size_t middle = text.find(") - (");
+    if (middle != std::string_view::npos &&
+        text.find(") - (", middle + 1) == std::string_view::npos) {
+      left_ = operand(text.substr(1, middle - 1), 0);
+      right_ = operand(text.substr(middle + 5, text.size() - middle - 6), 1);
+      if (left_ != nullptr && right_ != nullptr) {
+        direct_ = Direct::Difference;
+        return;
+      }
+    }
+  }
+  if (const auto comparison = split_comparison(text_)) {
+    left_ = operand(comparison->left, 0);
+    right_ = operand(comparison->right, 1);
+    if (left_ != nullptr && right_ != nullptr) {
+      const bool or_equal = comparison->or_equal;
+      direct_ = comparison->greater ? (or_equal ? Direct::GreaterEqual : Direct::Greater)
+                                    : (or_equal ? Direct::LessEqual : Direct::Less);
+      return;
+    }
+  }
+  left_ = right_ = nullptr;
+}
+
 double BoundExpression::evaluate() const {
-  if (direct_ != nullptr) return *direct_;
+  switch (direct_) {
+    case Direct::None:
+      break;
+    case Direct::Value:
+      return *left_;
+    case Direct::Less:
+      return *left_ < *right_ ? 1.0 : 0.0;
+    case Direct::LessEqual:
+      return *left_ <= *right_ ? 1.0 : 0.0;
+    case Direct::Greater:
+      return *left_ > *right_ ? 1.0 : 0.0;
+    case Direct::GreaterEqual:
+      return *left_ >= *right_ ? 1.0 : 0.0;
+    case Direct::Difference:
+      return *left_ - *right_;
+  }
   try {
     return impl_->parser.Eval();
   } catch (const mu::Parser::exception_type& error) {

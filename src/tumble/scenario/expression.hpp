@@ -2,6 +2,7 @@
 // The numbers of a scenario are expressions, evaluated by muParser (not by hand-written code):
 // the usual operators and functions (sqrt, sin, cos, atan2, ...), the constants pi and e, the
 // parameters defined so far, and the postfix unit deg ("30 deg" = 30 pi / 180 rad).
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -81,7 +82,8 @@ std::vector<std::string_view> expression_names(std::string_view expression);
 // ||: where it turns is where A - B crosses zero.
 struct Comparison {
   std::string left, right;
-  bool greater = false;  // > or >=: it becomes true as A - B rises through zero
+  bool greater = false;   // > or >=: it becomes true as A - B rises through zero
+  bool or_equal = false;  // <= or >=
   std::string margin() const { return "(" + left + ") - (" + right + ")"; }
 };
 // The comparison `text` is, if it is one.
@@ -96,8 +98,15 @@ class BoundExpression {
     std::string name;
     const double* value;  // read at each evaluation; must outlive the expression
   };
+  // How muParser compiles it. Optimised: its optimiser folds constants and rewrites some forms
+  // over variables (x^3 as x*x*x, ...), which may round otherwise than the same text over
+  // constants. AsConstants: the operations as written, each one what muParser's folding computes
+  // where the variables are constants (a scenario's parameters, ExpressionEvaluator), so the
+  // same doubles as a read of the scenario at those values.
+  enum class Compile { Optimised, AsConstants };
   // Throws ExpressionError for a syntax error or a name that is not among `variables`.
-  BoundExpression(std::string text, std::span<const Variable> variables);
+  BoundExpression(std::string text, std::span<const Variable> variables,
+                  Compile compile = Compile::Optimised);
   ~BoundExpression();
   BoundExpression(const BoundExpression&) = delete;
   BoundExpression& operator=(const BoundExpression&) = delete;
@@ -110,10 +119,20 @@ class BoundExpression {
 
  private:
   struct Impl;
+  // What a few common forms reduce to, read without muParser's evaluation (the same doubles, a
+  // sixth of the cost): a lone variable ("ball.vx", a sweep's usual record), a comparison of two
+  // operands ("prism.w3 < 0", a first()'s condition) and their difference ("(prism.w3) - (0)",
+  // the margin that locates where it turns true). An operand is a variable or a plain number.
+  enum class Direct { None, Value, Less, LessEqual, Greater, GreaterEqual, Difference };
+  void find_direct_form(const std::map<std::string, const double*>& found);
+
   std::unique_ptr<Impl> impl_;
   std::string text_;
   std::vector<std::string> used_names_;
-  const double* direct_ = nullptr;  // the variable that is the whole expression, if one is
+  Direct direct_ = Direct::None;
+  const double* left_ = nullptr;  // the operands of a direct form (Value: left_ alone)
+  const double* right_ = nullptr;
+  double numbers_[2] = {0.0, 0.0};  // a number operand's value, where left_ or right_ points
 };
 
 }  // namespace tumble

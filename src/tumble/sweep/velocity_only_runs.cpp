@@ -1,5 +1,7 @@
 #include "tumble/sweep/velocity_only_runs.hpp"
 
+#include <cmath>
+#include <map>
 #include <optional>
 #include <string_view>
 #include <tuple>
@@ -39,39 +41,71 @@ std::unique_ptr<VelocityOnlyRuns> VelocityOnlyRuns::make(
     const std::vector<std::string>& varied, const ParameterTrace& trace, const Scenario& scenario,
     std::shared_ptr<const SimulationModel> model) {
   std::unique_ptr<VelocityOnlyRuns> runs(new VelocityOnlyRuns());
-  constexpr std::string_view kParameters = "parameters.";
-  for (const ParameterTrace::Use& use : trace.uses) {
-    if (std::string_view(use.path).starts_with(kParameters)) {
-      runs->parameters_.push_back({use.path.substr(kParameters.size()), use.expression});
-    } else if (const auto component = velocity_component(use.path, scenario.bodies)) {
-      const auto [body, angular, axis] = *component;
-      runs->velocities_.push_back({body, angular, axis, use.expression});
-    } else {
-      return nullptr;  // it reaches the model
-    }
+  // Every parameter a variable, as every one is defined where a full read's runs evaluate.
+  std::map<std::string, std::size_t> slots;
+  std::vector<BoundExpression::Variable> variables;
+  runs->values_.reserve(scenario.parameters.size());
+  for (const auto& [name, value] : scenario.parameters) {
+    slots[name] = runs->values_.size();
+    runs->values_.push_back(value);
   }
-  for (const auto& [name, value] : scenario.parameters) runs->expressions_.define(name, value);
+  for (const auto& [name, slot] : slots) variables.push_back({name, &runs->values_[slot]});
+  const auto compiled = [&](const std::string& text) {
+    return std::make_unique<BoundExpression>(text, variables,
+                                             BoundExpression::Compile::AsConstants);
+  };
+  constexpr std::string_view kParameters = "parameters.";
+  try {
+    for (const ParameterTrace::Use& use : trace.uses) {
+      if (std::string_view(use.path).starts_with(kParameters)) {
+        std::string name = use.path.substr(kParameters.size());
+        const auto slot = slots.find(name);
+        if (slot == slots.end()) return nullptr;
+        runs->parameters_.push_back({std::move(name), slot->second, compiled(use.expression)});
+      } else if (const auto component = velocity_component(use.path, scenario.bodies)) {
+        const auto [body, angular, axis] = *component;
+        runs->velocities_.push_back({body, angular, axis, compiled(use.expression)});
+      } else {
+        return nullptr;  // it reaches the model
+      }
+    }
+    for (const std::string& name : varied) {
+      const auto slot = slots.find(name);
+      if (slot == slots.end()) return nullptr;
+      runs->varied_slots_.push_back(slot->second);
+    }
+  } catch (const ExpressionError&) {
+    return nullptr;  // each run reads the document, which says what is wrong where
+  }
   runs->varied_ = varied;
   runs->scenario_ = scenario;
   runs->model_ = std::move(model);
   return runs;
 }
 
+double VelocityOnlyRuns::value_of(const BoundExpression& expression) {
+  const double value = expression.evaluate();
+  if (!std::isfinite(value)) {
+    throw ExpressionError("expression '" + expression.text() + "' is not finite here", "");
+  }
+  return value;
+}
+
 const Scenario& VelocityOnlyRuns::scenario_at(std::span<const double> values) {
   // A full read evaluates the varied values' 17-digit text, which reads back as these doubles.
   for (std::size_t i = 0; i < varied_.size(); ++i) {
-    expressions_.redefine(varied_[i], values[i]);
+    values_[varied_slots_[i]] = values[i];
     scenario_.parameters[varied_[i]] = values[i];
   }
   for (const ParameterStep& step : parameters_) {
-    const double value = expressions_.evaluate(step.expression);
-    expressions_.redefine(step.name, value);
+    const double value = value_of(*step.expression);
+    values_[step.slot] = value;
     scenario_.parameters[step.name] = value;
   }
   for (const VelocityStep& step : velocities_) {
     BodySpec& body = scenario_.bodies[step.body];
     Vec3& velocity = step.angular ? body.angular_velocity_W : body.velocity_W;
-    velocity(step.axis) = expressions_.evaluate(step.expression);
+    velocity(step.axis) = value_of(*step.expression);
   }
   return scenario_;
 }

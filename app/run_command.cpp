@@ -79,8 +79,8 @@ void print_method_switches(const Integrator& integrator) {
     if (automatic->stiff_without_jacobian_at() >= 0.0) {
       fmt::print(
           "; stiff from t = {:.6g} s (dop853's steps held by its stability), but radau5 needs the "
-          "equations' Jacobian, which tumble does not take while a contact is held on more than "
-          "one point (an edge, a face, a side's line): dop853 went on\n",
+          "equations' Jacobian, which this run's form does not give (free bodies under gravity "
+          "alone, in their body-frame form): dop853 went on\n",
           automatic->stiff_without_jacobian_at());
     } else {
       fmt::print(" (no stiffness: dop853 throughout)\n");
@@ -97,8 +97,8 @@ void print_method_switches(const Integrator& integrator) {
           AutoSwitching::kNearEdge, change.h_lambda);
     } else if (change.modes_without_jacobian()) {
       fmt::print(
-          "  switch         to dop853 at t = {:.6g} s: a contact is now held on more than one "
-          "point (an edge, a face, a side's line), where radau5 has no Jacobian\n",
+          "  switch         to dop853 at t = {:.6g} s: the system's modes now give radau5 no "
+          "Jacobian\n",
           change.t);
     } else {
       fmt::print(

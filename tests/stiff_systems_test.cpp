@@ -294,17 +294,16 @@ TEST(Radau5Runs, OverASecondTheStepsAreTheSlowModesOnly) {
   EXPECT_LT(std::abs(run.rows.back().states[0].r_G.x()), 1e-9 * 1e-3);  // settled: exp(-1000)
 }
 
-TEST(Radau5Runs, WhatItDoesNotTakeYetIsRefusedAtTheIntegrator) {
-  // Contacts: their modes have no Jacobian yet.
+TEST(Radau5Runs, TheTextbookFormulationIsRefusedAtTheIntegrator) {
+  // The chapter's [R; omega] form has no Jacobian (the modal equations are the articulated
+  // form's); contacts in every mode have one.
   const std::string ball = R"(tumble: 1
 bodies:
   ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}
-contacts:
-  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: 0.5}
-simulate: {duration: 1, integrator: radau5}
+simulate: {duration: 1, integrator: radau5, formulation: textbook}
 )";
-  test::expect_error(ball, 6, 37, "simulate.integrator", "not yet with contacts");
-  test::expect_error(test::replaced(ball, "integrator: radau5", "integrator: trbdf2"), 6, 37,
+  test::expect_error(ball, 4, 37, "simulate.integrator", "not in formulation: textbook");
+  test::expect_error(test::replaced(ball, "integrator: radau5", "integrator: trbdf2"), 4, 37,
                      "simulate.integrator", "trbdf2, an implicit method for stiff systems");
 }
 

@@ -155,7 +155,8 @@ bool ContactSystem::two_point(std::size_t c) const {
   return d_.now[c].normal_point_count == 2 && !held_polyhedron_[c];
 }
 
-Vec3 ContactSystem::end_slide_direction(std::size_t c, int end, const Vec3& slide_W) const {
+Vec3 ContactSystem::end_slide_direction(std::size_t c, int end, const Vec3& slide_W,
+                                        bool* follows_slip) const {
   const ContactStatus& status = s_.contacts[c];
   const ContactNow& now = d_.now[c];
   const auto k = static_cast<std::size_t>(end);
@@ -164,20 +165,25 @@ Vec3 ContactSystem::end_slide_direction(std::size_t c, int end, const Vec3& slid
   const double slip = slip_W.norm();
   // As the whole part's slip (slide_direction): followed while it is above slip_zero, or has
   // grown and keeps to the way it went.
-  if (slip > status.slip_zero ||
-      (status.end_slip_grown[k] && slip > status.slip_floor && slip_W.dot(last_W) > 0.0)) {
-    return slip_W / slip;
-  }
+  const bool followed =
+      slip > status.slip_zero ||
+      (status.end_slip_grown[k] && slip > status.slip_floor && slip_W.dot(last_W) > 0.0);
+  if (follows_slip != nullptr) *follows_slip = followed;
+  if (followed) return slip_W / slip;
   if (!last_W.isZero(0.0)) return last_W;
+  return rigid_slide_at(c, now.normal_points_B[k], slide_W);
+}
+
+Vec3 ContactSystem::rigid_slide_at(std::size_t c, const Vec3& p_B, const Vec3& slide_W) const {
   // Neither grown nor pushed on its own: the part's slide direction in slip space (its
   // tangential part, and rho times the spin about the normal) is a rigid motion of the part, and
-  // this end moves with it. (Where the part slides so, the ends' own slips are exactly this.)
+  // this point moves with it. (Where the part slides so, the ends' own slips are exactly this.)
+  const ContactNow& now = d_.now[c];
   const Vec3& n = contacts_[c].normal_W;
   const Mat3& R = dynamics_.motion(contacts_[c].body).R_WB;
   Vec3 u_W = slide_W - n * n.dot(slide_W);
   if (now.spin_radius > 0.0) {
-    u_W += (n.dot(slide_W) / now.spin_radius) *
-           n.cross(R * (now.normal_points_B[k] - now.reference_B));
+    u_W += (n.dot(slide_W) / now.spin_radius) * n.cross(R * (p_B - now.reference_B));
   }
   const double size = u_W.norm();
   return size > 0.0 ? Vec3(u_W / size) : Vec3(slide_W - n * n.dot(slide_W));
@@ -194,7 +200,7 @@ void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> h
     hold = ContactHold{};
     if (status.mode == ContactMode::Apart) continue;
     if (now.normal_point_count != 1 || now.spin_radius != 0.0) {
-      hold.kind = ContactHold::Kind::Features;
+      calc_points_hold(c, hold);
       continue;
     }
     if (status.mode == ContactMode::Rolling) {
@@ -206,6 +212,41 @@ void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> h
     const Vec3& n = contacts_[c].normal_W;
     const Vec3 slide_W = slide_direction(c, &hold.follows_slip);
     hold.slide_W = slide_W - n * n.dot(slide_W);
+  }
+}
+
+void ContactSystem::calc_points_hold(std::size_t c, ContactHold& hold) const {
+  const ContactStatus& status = s_.contacts[c];
+  const ContactNow& now = d_.now[c];
+  const Vec3& n = contacts_[c].normal_W;
+  const BodyMotion& w = dynamics_.motion(contacts_[c].body);
+  hold.kind = ContactHold::Kind::Points;
+  hold.point_count = now.normal_point_count;
+  const bool slides = status.mode == ContactMode::Sliding;
+  bool part_follows = false;
+  const Vec3 slide_W = slides ? slide_direction(c, &part_follows) : Vec3::Zero();
+  for (int k = 0; k < now.normal_point_count; ++k) {
+    ContactHold::BodyPoint& point = hold.points[static_cast<std::size_t>(k)];
+    point.p_B = now.normal_points_B[static_cast<std::size_t>(k)];
+    if (!slides || status.pinned_end == k) {
+      point.kind = ContactHold::Kind::Point;  // rolling, sticking, or a pivot's pinned end
+      continue;
+    }
+    point.kind = ContactHold::Kind::Normal;
+    point.friction = contacts_[c].friction;
+    Vec3 along_W = Vec3::Zero();
+    if (two_point(c)) {
+      along_W = end_slide_direction(c, k, slide_W, &point.follows_slip);
+    } else {
+      // A face's corner: against its own slip while the part's is followed and the corner's is
+      // not at rest (a face turning about it), else as the part's slide moves it.
+      const Vec3 v_W = w.R_WB * (w.velocity.tail<3>() + w.velocity.head<3>().cross(point.p_B));
+      const Vec3 slip_W = v_W - n * n.dot(v_W);
+      point.follows_slip = part_follows && slip_W.norm() > status.slip_zero;
+      along_W =
+          point.follows_slip ? Vec3(slip_W.normalized()) : rigid_slide_at(c, point.p_B, slide_W);
+    }
+    point.slide_W = along_W - n * n.dot(along_W);
   }
 }
 

@@ -148,7 +148,14 @@ class ContactSystem {
   // followed (as slide_direction's), else the way it was pushed, else the part's slide
   // direction slide_W (slip space: tangential, and rho times the spin about the normal) as the
   // rigid motion it is, at this end.
-  Vec3 end_slide_direction(std::size_t contact, int end, const Vec3& slide_W) const;
+  // `follows_slip` (where given): whether it is the end's own slip.
+  Vec3 end_slide_direction(std::size_t contact, int end, const Vec3& slide_W,
+                           bool* follows_slip = nullptr) const;
+  // The part's slide direction slide_W (slip space) as the rigid motion it is, at the part's
+  // point p_B (body axes, from the COM; in the plane, unit).
+  Vec3 rigid_slide_at(std::size_t contact, const Vec3& p_B, const Vec3& slide_W) const;
+  // calc_holds' hold of a part held on more than one point (ContactHold::Kind::Points).
+  void calc_points_hold(std::size_t contact, ContactHold& hold) const;
   // Sliding on a two-point part: the end that stops first among those whose slip is watched, and
   // the value its stop watches (its slip along its direction); a pivot's pinned end, and the
   // margin of its friction inside the cone. -1 where none.

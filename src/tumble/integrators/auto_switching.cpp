@@ -99,7 +99,7 @@ void AutoSwitching::take_switch(double t, const VecX& y, bool after_jump) {
     return;
   }
   if (!implicit_active_ && !system_->gives_jacobian_at(t, y)) {
-    // A jump since the test fired put a contact on more than one point: DOP853 goes on.
+    // A jump since the test fired put the system in modes without a Jacobian: DOP853 goes on.
     if (stiff_without_jacobian_at_ < 0.0) stiff_without_jacobian_at_ = t;
     if (after_jump) explicit_.restart(t, y);
     return;

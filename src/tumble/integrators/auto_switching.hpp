@@ -26,9 +26,9 @@
 // time with its own first step; DOP853 goes on from its last step size).
 // Where the system gives no Jacobian (free bodies under gravity alone, which are never stiff),
 // auto is DOP853 throughout, and a stiffness it detects is reported, once, as not taken. Where
-// it gives none only in some modes (a contact held on more than one point: an edge, a face, a
-// side's line), auto does not switch to radau5 in them, and a jump into one while radau5 runs
-// hands the run back to DOP853 (a switch with h_lambda kModesWithoutJacobian).
+// it gives none only in some modes (OdeSystem::gives_jacobian_at; tumble's own systems give one
+// in every mode of their contacts), auto does not switch to radau5 in them, and a jump into one
+// while radau5 runs hands the run back to DOP853 (a switch with h_lambda kModesWithoutJacobian).
 //
 // No allocation in a step: the switches are kept in a fixed array (the first kKeptSwitches of
 // them, and the count of all).

@@ -55,8 +55,22 @@ std::vector<ModalContact> held_contacts(const Model& model, std::span<const Cont
     const ContactHold& hold = holds[c];
     if (hold.kind == ContactHold::Kind::Apart) continue;
     const PlaneContact& contact = model.contacts[c];
-    if (hold.kind == ContactHold::Kind::Features) {
-      throw NotSteady(fmt::format("contact {}: held on more than one point", contact.name));
+    if (hold.kind == ContactHold::Kind::Points) {
+      for (int k = 0; k < hold.point_count; ++k) {
+        const ContactHold::BodyPoint& body_point = hold.points[static_cast<std::size_t>(k)];
+        ModalContact point;
+        point.contact = c;
+        point.point = ContactPoint{ContactPoint::Kind::Material, body_point.p_B, 0.0};
+        point.rolls = body_point.kind == ContactHold::Kind::Point;
+        if (!point.rolls) {
+          point.sliding.kind = ContactHold::Kind::Normal;
+          point.sliding.friction = body_point.friction;
+          point.sliding.follows_slip = body_point.follows_slip;
+          point.sliding.slide_W = body_point.slide_W;
+        }
+        held.push_back(point);
+      }
+      continue;
     }
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);
     ModalContact point;

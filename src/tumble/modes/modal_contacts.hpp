@@ -34,7 +34,8 @@ struct ModalContact {
 std::vector<ModalContact> touching_contacts(const Model& model, const std::vector<Vec3>& r_G_W,
                                             const std::vector<Mat3>& R_WB);
 // The contacts as a run's modes hold them (`holds`, one per contact: contact_hold.hpp), with the
-// bodies at r_G_W, R_WB. Throws NotSteady for a hold on more than one point (Features).
+// bodies at r_G_W, R_WB: a hold on several points (Points) is one entry per point, each a point
+// of the body.
 std::vector<ModalContact> held_contacts(const Model& model, std::span<const ContactHold> holds,
                                         const std::vector<Vec3>& r_G_W,
                                         const std::vector<Mat3>& R_WB);

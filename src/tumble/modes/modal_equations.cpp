@@ -124,6 +124,7 @@ void ModalEquations::set_up(const std::span<const ContactHold>* holds) {
     contacts_ = holds != nullptr ? held_contacts(model_->model, *holds, r_G_W, R_WB)
                                  : touching_contacts(model_->model, r_G_W, R_WB);
   }
+  drops_dependent_rows_ = holds != nullptr;
   for (const JointModel& joint : model_->model.joints) {
     if (joint.closes_loop) loops_.push_back(loop_shape_of(joint));
   }
@@ -478,7 +479,26 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
       held_rows = G0 * values_of(mass).ldlt().solve(MatX(G0.transpose()));
     }
     const Eigen::SelfAdjointEigenSolver<MatX> definite(held_rows);
-    if (definite.eigenvalues()(0) <= 1e-12 * definite.eigenvalues()(rows - 1)) {
+    const bool dependent = definite.eigenvalues()(0) <= 1e-12 * definite.eigenvalues()(rows - 1);
+    if (dependent && drops_dependent_rows_) {
+      // The rows that the others do not already hold (at the values: the same rows for every
+      // seed), in order; the accelerations that hold them hold the rest.
+      Eigen::ColPivHouseholderQR<MatX> pivoted(held_rows);
+      pivoted.setThreshold(1e-9);
+      std::vector<Eigen::Index> kept(pivoted.colsPermutation().indices().data(),
+                                     pivoted.colsPermutation().indices().data() + pivoted.rank());
+      std::sort(kept.begin(), kept.end());
+      if (kept.empty()) return z_rates_of(kin, J_v, u_dot, z);
+      const MX<S> response_kept = response(Eigen::all, kept);
+      const MX<S> schur_kept = schur(kept, kept);
+      const MX<S> G_kept = G(kept, Eigen::all);
+      const VecXOf<S> rhs = -VecXOf<S>(kappa(kept)) - G_kept * u_dot;
+      const VecXOf<S> lambda =
+          slides ? solve_general(schur_kept, rhs) : solve_mass(schur_kept, rhs);
+      u_dot += response_kept * lambda;
+      return z_rates_of(kin, J_v, u_dot, z);
+    }
+    if (dependent) {
       if (!loops_.empty()) {
         throw NotSteady(
             "joints: the loops' rows lose their independence here (a dead centre or a change "
@@ -505,8 +525,16 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
     }
   }
 
+  return z_rates_of(kin, J_v, u_dot, z);
+}
+
+template <typename S>
+VecXOf<S> ModalEquations::z_rates_of(const std::vector<ModalKinematics<S>>& kin,
+                                     const std::vector<M3X<S>>& J_v, const VecXOf<S>& u_dot,
+                                     const VecXOf<S>& z) const {
+  const ArticulatedModel& m = *model_;
   VecXOf<S> z_dot(z.size());
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = 0; k < m.tree.size(); ++k) {
     const Eigen::Index po = layout_.position_offset[k];
     const Eigen::Index so = layout_.speed_offset[k];
     if (po < 0) continue;
@@ -515,8 +543,9 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
     const ModalJointPoint<S> at = point_of<S>(k, z);
     VecXOf<S> z_q_rate(at.z_q.size()), z_u_rate(at.z_u.size());
     const V3<S> a_G = c.a0 + J_v[k] * u_dot;
-    joint.kind->calc_modal_rates(joint, at, c.joint, VecXOf<S>(u_dot.segment(unknown[k], joint.nv)),
-                                 c.v_G, a_G, z_q_rate, z_u_rate);
+    joint.kind->calc_modal_rates(joint, at, c.joint,
+                                 VecXOf<S>(u_dot.segment(unknown_[k], joint.nv)), c.v_G, a_G,
+                                 z_q_rate, z_u_rate);
     z_dot.segment(po, z_q_rate.size()) = z_q_rate;
     z_dot.segment(so, z_u_rate.size()) = z_u_rate;
   }

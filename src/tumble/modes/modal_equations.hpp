@@ -69,7 +69,9 @@ class ModalEquations {
   // The same about a run's state, its contacts held as the run's modes hold them (`holds`, one
   // per contact: contact/contact_hold.hpp) rather than those touching: a sliding contact keeps
   // its normal row and carries Coulomb's friction (the run's Jacobian, state_jacobian.hpp).
-  // Throws NotSteady where a hold is on more than one point.
+  // A hold on several points holds each as a point of the body, and rows the others already
+  // hold are left out (the accelerations are the same; the forces, which the Jacobian does not
+  // give, are then not determined).
   ModalEquations(std::shared_ptr<const ArticulatedModel> model, ModalLayout layout, VecX y0,
                  double t0, std::span<const ContactHold> holds);
 
@@ -113,6 +115,11 @@ class ModalEquations {
   void calc_body_jacobians(const std::vector<ModalKinematics<Scalar>>& kin,
                            std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
                            std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_w) const;
+  // z' from the unknowns' accelerations u_dot (the joints' rates in the modal coordinates).
+  template <typename Scalar>
+  VecXOf<Scalar> z_rates_of(const std::vector<ModalKinematics<Scalar>>& kin,
+                            const std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
+                            const VecXOf<Scalar>& u_dot, const VecXOf<Scalar>& z) const;
   // What both constructors do: the unknowns, the contacts (those touching, or as `holds` hold
   // them where given) and the loops.
   void set_up(const std::span<const ContactHold>* holds);
@@ -140,6 +147,9 @@ class ModalEquations {
   std::vector<Eigen::Index> unknown_;
   Eigen::Index unknowns_ = 0;
   std::vector<ModalContact> contacts_;
+  // On a run's holds: rows that others already hold (a face's fourth corner, both ends of a line
+  // a body rolls on, a point the joints hold) are left out, where `tumble modes` refuses them.
+  bool drops_dependent_rows_ = false;
   std::vector<LoopShape> loops_;
   Eigen::Index loop_rows_ = 0;                // all of the loops' rows
   std::vector<Eigen::Index> loop_rows_held_;  // the independent ones at z = 0, in order

@@ -22,9 +22,6 @@ bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, d
   if (holds.size() != model->model.contacts.size()) {
     throw std::invalid_argument("calc_state_jacobian: one hold per contact");
   }
-  for (const ContactHold& hold : holds) {
-    if (hold.kind == ContactHold::Kind::Features) return false;
-  }
   dfdy.setZero();
   ModalLayout layout = make_modal_layout(*model, t);
   const Eigen::Index n = layout.size();

@@ -35,9 +35,9 @@ void calc_modal_tangent(const ArticulatedModel& model, const ModalLayout& layout
 // (which loads, motors and holds are in force), `holds` how the contacts hold their bodies in
 // the run's modes (one per contact: contact/contact_hold.hpp; empty without contacts): rolling or
 // sticking at a point, or sliding at one with Coulomb's friction, whose direction the slip's
-// velocity turns (the stiff part of a slip just grown from none). Returns false, writing
-// nothing, where a contact is held on more than one point (an edge, a face, a side's line): those
-// modes have no Jacobian yet. ArticulatedFormulation::set_state_jacobian takes it (the
+// velocity turns (the stiff part of a slip just grown from none), or on two or three points of
+// the body (an edge's or a side's ends, a face's corners), each as a point is. Returns true.
+// ArticulatedFormulation::set_state_jacobian takes it (the
 // simulation layer hands it over: the formulation does not depend on this layer).
 bool calc_state_jacobian(const std::shared_ptr<const ArticulatedModel>& model, double t,
                          const VecX& y, std::span<const ContactHold> holds, MatX& dfdy);

@@ -372,16 +372,6 @@ bool ArticulatedFormulation::gives_jacobian() const {
   return state_jacobian_ != nullptr;
 }
 
-bool ArticulatedFormulation::gives_jacobian_at(double t, const VecX& y) const {
-  if (state_jacobian_ == nullptr) return false;
-  if (contacts_.empty()) return true;
-  holds_.resize(contacts_.size());
-  contacts_.calc_holds(t, y, holds_);
-  return std::none_of(holds_.begin(), holds_.end(), [](const ContactHold& hold) {
-    return hold.kind == ContactHold::Kind::Features;
-  });
-}
-
 void ArticulatedFormulation::pack(std::span<const BodyState> states, VecX& y) const {
   y.setZero();
   for (const TreeJoint& joint : m_.tree) {

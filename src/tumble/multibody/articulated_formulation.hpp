@@ -76,12 +76,11 @@ class ArticulatedFormulation final : public Formulation {
   std::span<const EventSpec> events() const override { return m_.event_specs; }
   void event_functions(double t, const VecX& y, VecX& g) const override;
   EventAction on_event(std::size_t event_index, double t, VecX& y) override;
-  // df/dy at the schedule's mode and the contacts' modes, from the function set_state_jacobian
-  // gave (false without one, or where it has none: a contact held on more than one point).
+  // df/dy at the schedule's mode and the contacts' modes (each as contact/contact_hold.hpp says),
+  // from the function set_state_jacobian gave (false without one).
   bool jacobian(double t, const VecX& y, MatX& dfdy) const override;
-  // With a source; at (t, y) where no contact is held on more than one point (ContactHold).
+  // With a source.
   bool gives_jacobian() const override;
-  bool gives_jacobian_at(double t, const VecX& y) const override;
   // The Jacobian's source: automatic differentiation of the one physics
   // (modes/state_jacobian.hpp), which this layer does not depend on; the simulation layer hands
   // it over (FormulationModel::new_run).

@@ -38,7 +38,7 @@ FormulationModel::FormulationModel(std::string_view name, std::shared_ptr<const 
 }
 
 bool FormulationModel::gives_jacobian() const {
-  return kind_ == Kind::Articulated && model_->contacts.empty();
+  return kind_ == Kind::Articulated;
 }
 
 std::unique_ptr<Formulation> FormulationModel::new_run() const {

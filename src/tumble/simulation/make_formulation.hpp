@@ -42,8 +42,7 @@ class FormulationModel {
   Eigen::Index dimension() const { return dimension_; }
   bool has_unit_quaternions() const { return has_unit_quaternions_; }
   // Whether its runs give their Jacobian df/dy in every mode (an implicit method's need): the
-  // articulated form's, without contacts (modes/state_jacobian.hpp; with them, only while each is
-  // held at one point, which `auto` asks of a run as it goes).
+  // articulated form's, its contacts held as their modes hold them (modes/state_jacobian.hpp).
   bool gives_jacobian() const;
 
  private:

@@ -160,9 +160,8 @@ std::shared_ptr<const SimulationModel> build_simulation_model(const Scenario& sc
       throw std::invalid_argument(
           sim.integrator +
           ", an implicit method for stiff systems, needs its equations' Jacobian, which tumble "
-          "takes for free bodies and bodies on joints, springs, dampers and loads (formulation: "
-          "body) but not yet with contacts in every mode (integrator: auto switches to radau5 "
-          "where they allow it)");
+          "takes in formulation: body (bodies free or on joints, springs, dampers, loads and "
+          "contacts in every mode), not in formulation: textbook");
     }
     make_run_integrator(*m);  // refuses a control that does not fit, before any run
   } catch (const std::invalid_argument& e) {

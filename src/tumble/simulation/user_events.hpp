@@ -48,9 +48,6 @@ class UserEventSystem final : public OdeSystem {
     return formulation_->jacobian(t, y, dfdy);
   }
   bool gives_jacobian() const override { return formulation_->gives_jacobian(); }
-  bool gives_jacobian_at(double t, const VecX& y) const override {
-    return formulation_->gives_jacobian_at(t, y);
-  }
   void project(double t, VecX& y) const override { formulation_->project(t, y); }
   void tolerance_units(const VecX& y0, VecX& units) const override {
     formulation_->tolerance_units(y0, units);

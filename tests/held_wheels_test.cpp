@@ -25,9 +25,11 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "scenario_run.hpp"
 #include "test_files.hpp"
+#include "tumble/modes/scenario_modes.hpp"
 
 namespace tumble {
 namespace {
@@ -92,6 +94,27 @@ TEST(HeldWheels, AnEdgeMillsGroundPushesWithTheWeightsShareAndTheGyroscopicTerm)
       EXPECT_NEAR(stone.omega_W.z(), Omega, 1e-9 * Omega) << row.t;
       EXPECT_NEAR(stone.omega_W.dot(from_pivot / d), spin, 1e-9 * Omega) << row.t;
     }
+  }
+}
+
+// `tumble modes` takes the edge mill at any turning rate as the steady motion it is: its
+// contact's rows repeat, along the axle, what the ball joint holds, and the linearisation holds
+// the independent ones (docs/modes.md); the ground's force it reports (the rows' least-norm
+// forces: no friction) is the closed form's N, and the steadiness leaves no rate above round-off.
+TEST(HeldWheels, AnEdgeMillIsASteadyMotionForModesAtAnyTurningRate) {
+  const double R = 0.5, m = 10.0, m_axle = 2.0, g = 9.81, I_a = m * R * R / 2;
+  for (const double Omega : {0.5, 2.0, 5.0}) {
+    const ScenarioModes modes = modes_of_scenario(
+        load_scenario(test::example("edge_mill.yaml"), {{"Omega", std::to_string(Omega)}}));
+    EXPECT_FALSE(modes.linearisation.equilibrium()) << Omega;
+    EXPECT_LT(modes.linearisation.largest_rate, 1e-12 * Omega) << Omega;
+    const std::vector<Vec3> forces = modes.equations->contact_forces();
+    ASSERT_EQ(forces.size(), 1u);
+    const double N = (m + m_axle / 2) * g + I_a * Omega * Omega / R;
+    EXPECT_NEAR(forces[0].z(), N, 1e-12 * N) << Omega;
+    EXPECT_LT(forces[0].head<2>().norm(), 1e-12 * N) << Omega;
+    // No mode grows: rolling at another rate is another steady motion (a neutral family).
+    EXPECT_NE(modes.analysis.verdict, ModalAnalysis::Verdict::Unstable) << Omega;
   }
 }
 

@@ -480,7 +480,20 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
     }
     const Eigen::SelfAdjointEigenSolver<MatX> definite(held_rows);
     const bool dependent = definite.eigenvalues()(0) <= 1e-12 * definite.eigenvalues()(rows - 1);
-    if (dependent && drops_dependent_rows_) {
+    // (`tumble modes` holds no contact sliding, whose friction would ride on a push the rows
+    // leave open; a run's Jacobian takes one of the pushes.)
+    if (dependent && !drops_dependent_rows_ && !loops_.empty()) {
+      throw NotSteady(
+          "joints: the loops' rows lose their independence here (a dead centre or a change "
+          "point): the motion is not determined, and a linearisation needs it");
+    }
+    const VecXOf<S> rhs = -kappa - G * u_dot;
+    // The forces reported, where rows repeat what the joints or other rows hold (an edge mill's
+    // ball joint takes any force along the line from it to the stone's contact): of those that
+    // hold them, the one with the least friction, as a run's solve takes it
+    // (contact/contact_forces.cpp).
+    VecX lambda_reported;
+    if (dependent) {
       // The rows that the others do not already hold (at the values: the same rows for every
       // seed), in order; the accelerations that hold them hold the rest.
       Eigen::ColPivHouseholderQR<MatX> pivoted(held_rows);
@@ -488,44 +501,64 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
       std::vector<Eigen::Index> kept(pivoted.colsPermutation().indices().data(),
                                      pivoted.colsPermutation().indices().data() + pivoted.rank());
       std::sort(kept.begin(), kept.end());
-      if (kept.empty()) return z_rates_of(kin, J_v, u_dot, z);
-      const MX<S> response_kept = response(Eigen::all, kept);
-      const MX<S> schur_kept = schur(kept, kept);
-      const MX<S> G_kept = G(kept, Eigen::all);
-      const VecXOf<S> rhs = -VecXOf<S>(kappa(kept)) - G_kept * u_dot;
-      const VecXOf<S> lambda =
-          slides ? solve_general(schur_kept, rhs) : solve_mass(schur_kept, rhs);
-      u_dot += response_kept * lambda;
-      return z_rates_of(kin, J_v, u_dot, z);
-    }
-    if (dependent) {
-      if (!loops_.empty()) {
-        throw NotSteady(
-            "joints: the loops' rows lose their independence here (a dead centre or a change "
-            "point): the motion is not determined, and a linearisation needs it");
+      if (!kept.empty()) {
+        const MX<S> schur_kept = schur(kept, kept);
+        const VecXOf<S> rhs_kept = rhs(kept);
+        const VecXOf<S> lambda =
+            slides ? solve_general(schur_kept, rhs_kept) : solve_mass(schur_kept, rhs_kept);
+        u_dot += MX<S>(response(Eigen::all, kept)) * lambda;
       }
-      throw NotSteady(
-          "contacts: a touching point's motion is already held by the joints (or by another "
-          "contact): its force is not determined, and a linearisation needs it");
+      if (contact_forces_W != nullptr) {
+        lambda_reported = least_friction_forces(
+            held_rows, definite, VecX(rhs.unaryExpr([](const S& x) { return value_of(x); })));
+      }
+    } else {
+      const VecXOf<S> lambda = slides ? solve_general(schur, rhs) : solve_mass(schur, rhs);
+      u_dot += response * lambda;
+      if (contact_forces_W != nullptr) {
+        lambda_reported = lambda.unaryExpr([](const S& x) { return value_of(x); });
+      }
     }
-    const VecXOf<S> rhs = -kappa - G * u_dot;
-    const VecXOf<S> lambda = slides ? solve_general(schur, rhs) : solve_mass(schur, rhs);
-    u_dot += response * lambda;
     if (contact_forces_W != nullptr) {
       contact_forces_W->clear();
       row = 0;
       for (std::size_t i = 0; i < contacts_.size(); ++i) {
         const ModalContact& held = contacts_[i];
-        contact_forces_W->push_back(
-            held.rolls
-                ? Vec3(value_of(lambda(row)), value_of(lambda(row + 1)), value_of(lambda(row + 2)))
-                : Vec3(value_of(lambda(row)) * push_W[i]));
+        contact_forces_W->push_back(held.rolls ? Vec3(lambda_reported.segment<3>(row))
+                                               : Vec3(lambda_reported(row) * push_W[i]));
         row += held.rows();
       }
     }
   }
 
   return z_rates_of(kin, J_v, u_dot, z);
+}
+
+VecX ModalEquations::least_friction_forces(const MatX& schur,
+                                           const Eigen::SelfAdjointEigenSolver<MatX>& eigen,
+                                           const VecX& rhs) const {
+  // Every solution: one of them, plus any combination of the rows whose forces the joints and
+  // the other rows take (schur's null space, N). Of those, the least friction: the forces'
+  // tangential parts (T, the contacts' rolling rows less their normal parts) least in norm.
+  const VecX particular = Eigen::CompleteOrthogonalDecomposition<MatX>(schur).solve(rhs);
+  const Eigen::Index rows = schur.rows();
+  const VecX& eigenvalues = eigen.eigenvalues();
+  Eigen::Index nulls = 0;
+  while (nulls < rows && eigenvalues(nulls) <= 1e-12 * eigenvalues(rows - 1)) ++nulls;
+  const MatX null_space = eigen.eigenvectors().leftCols(nulls);
+  MatX tangential = MatX::Zero(rows, rows);
+  Eigen::Index row = 0;
+  for (const ModalContact& held : contacts_) {
+    if (held.rolls) {
+      const Vec3& n = model_->model.contacts[held.contact].normal_W;
+      tangential.block<3, 3>(row, row) = Mat3::Identity() - n * n.transpose();
+    }
+    row += held.rows();
+  }
+  const MatX TN = tangential * null_space;
+  const VecX shift =
+      Eigen::CompleteOrthogonalDecomposition<MatX>(TN).solve(VecX(-tangential * particular));
+  return particular + null_space * shift;
 }
 
 template <typename S>

@@ -115,6 +115,10 @@ class ModalEquations {
   void calc_body_jacobians(const std::vector<ModalKinematics<Scalar>>& kin,
                            std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
                            std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_w) const;
+  // Of the contact forces that solve schur lambda = rhs where its rows repeat (eigen: schur's
+  // eigen-decomposition), the one whose friction is least.
+  VecX least_friction_forces(const MatX& schur, const Eigen::SelfAdjointEigenSolver<MatX>& eigen,
+                             const VecX& rhs) const;
   // z' from the unknowns' accelerations u_dot (the joints' rates in the modal coordinates).
   template <typename Scalar>
   VecXOf<Scalar> z_rates_of(const std::vector<ModalKinematics<Scalar>>& kin,

@@ -22,6 +22,7 @@
 
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "test_files.hpp"
 #include "tumble/scenario/scenario.hpp"
 
 namespace tumble {
@@ -142,6 +143,53 @@ TEST(TippeTop, NoTouchingContactPullsAndNoEnergyIsGained) {
   test::expect_energy_never_rises(run, 1e-12);
   const ConservationReport& c = run.result.conservation;
   EXPECT_LT(c.max_work_energy_residual, 1e-9 * c.max_kinetic_energy);
+}
+
+// Outside Gray and Nickel's range the same top, spun the same way, does not turn over onto its
+// stem: the knob never lands. Above it (the ballast a ring of 4 mm, not 15 mm: I1/I3 1.37 against
+// 1 + alpha = 1.19) the stem rises past the horizontal and the top rolls on its ball there; below
+// it (the ballast at C's height, 3 mm below it: alpha 0.02, I1/I3 0.93 against 1 - alpha = 0.98)
+// the ball's slip stops at once and it spins on. Each range is computed from the run's own mass
+// properties.
+TEST(TippeTop, OutsideTheInversionRangeItDoesNotTurnOntoItsStem) {
+  const std::string example =
+      test::read_file(std::string(TUMBLE_SOURCE_DIR) + "/examples/tippe_top.yaml");
+  const std::string ballast =
+      "{name: ballast, shape: ring, radius: 0.015, mass: 0.01, "
+      "position: [0, 0, -0.012]}";
+  ASSERT_NE(example.find(ballast), std::string::npos);
+  struct Case {
+    const char* name;
+    const char* ballast;
+    bool above;  // I1/I3 above 1 + alpha (else below 1 - alpha)
+  };
+  for (const Case& c :
+       {Case{"narrow_ballast",
+             "{name: ballast, shape: ring, radius: 0.004, mass: 0.01, position: [0, 0, -0.012]}",
+             true},
+        Case{"central_ballast",
+             "{name: ballast, shape: ring, radius: 0.015, mass: 0.01, position: [0, 0, -0.003]}",
+             false}}) {
+    std::string text = example;
+    text.replace(text.find(ballast), ballast.size(), c.ballast);
+    const test::ScenarioRun run = test::run_inline_scenario(text, c.name);
+    ASSERT_TRUE(run.result.report.completed) << c.name << ": " << run.result.report.failure;
+    const MassProperties& p = run.scenario.bodies[0].mass_properties;
+    const double alpha = -p.com.z() / kBallRadius;
+    const double ratio = p.inertia_about_com(0, 0) / p.inertia_about_com(2, 2);
+    if (c.above) {
+      EXPECT_GT(ratio, 1.0 + alpha) << c.name;
+    } else {
+      EXPECT_LT(ratio, 1.0 - alpha) << c.name;
+    }
+    for (const ContactEventRecord& e : run.contact_events) {
+      EXPECT_NE(e.contact, 1u) << c.name << ": the knob at t = " << e.t << ": " << e.what;
+    }
+    for (const test::Row& row : run.rows) {
+      EXPECT_EQ(row.extras.contacts[1].mode, 0) << c.name << " at " << row.t;
+    }
+    EXPECT_NEAR(run.rows.back().t, 4.0, 1e-12) << c.name;
+  }
 }
 
 }  // namespace

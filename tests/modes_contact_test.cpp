@@ -258,6 +258,28 @@ TEST(ModesContact, RefusesWhatHasNoLinearisationAndSaysWhy) {
   } catch (const NotSteady& e) {
     EXPECT_NE(std::string(e.what()).find("more than mu N"), std::string::npos) << e.what();
   }
+  // A pendulum swinging through its lowest point on a frictionless floor: the hinge holds the
+  // bob's height there to first order (its contact's row repeats the joint's), but its
+  // centripetal acceleration w^2 L lifts it off the floor, which no force of the floor's holds.
+  const char* const swinging = R"(tumble: 1
+gravity: [0, 0, -9.81]
+bodies:
+  bob: {shape: sphere, radius: 0.05, mass: 1, position: [0, 0, -0.5], angular_velocity: [0, 2, 0]}
+joints:
+  pin: {type: hinge, body: bob, at: [0, 0, 0], axis: [0, 1, 0]}
+contacts:
+  - {name: floor, type: plane, body: bob, friction: 0,
+     plane: {point: [0, 0, -0.55], normal: [0, 0, 1]}}
+simulate: {duration: 1}
+)";
+  try {
+    modes_of_text(swinging);
+    ADD_FAILURE() << "no NotSteady";
+  } catch (const NotSteady& e) {
+    EXPECT_NE(std::string(e.what()).find("otherwise than the contact would hold it"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ModesContact, CommandWritesTheRollingDisksModes) {

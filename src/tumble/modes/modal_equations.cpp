@@ -508,6 +508,17 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
             slides ? solve_general(schur_kept, rhs_kept) : solve_mass(schur_kept, rhs_kept);
         u_dot += MX<S>(response(Eigen::all, kept)) * lambda;
       }
+      // The rows left out hold too where they repeat the others; where they would ask for
+      // another acceleration (a point the joints move otherwise than the contact holds it),
+      // nothing holds them both, and `tumble modes` refuses the state.
+      const VecX residual = (G * u_dot + kappa).unaryExpr([](const S& x) { return value_of(x); });
+      const VecX asked = rhs.unaryExpr([](const S& x) { return value_of(x); });
+      if (!drops_dependent_rows_ && residual.lpNorm<Eigen::Infinity>() >
+                                        1e-9 * std::max(asked.lpNorm<Eigen::Infinity>(), 1e-300)) {
+        throw NotSteady(
+            "contacts: a touching point's motion is held by the joints (or by another contact) "
+            "otherwise than the contact would hold it: no force holds both");
+      }
       if (contact_forces_W != nullptr) {
         lambda_reported = least_friction_forces(
             held_rows, definite, VecX(rhs.unaryExpr([](const S& x) { return value_of(x); })));

@@ -113,8 +113,11 @@ TEST(HeldWheels, AnEdgeMillIsASteadyMotionForModesAtAnyTurningRate) {
     const double N = (m + m_axle / 2) * g + I_a * Omega * Omega / R;
     EXPECT_NEAR(forces[0].z(), N, 1e-12 * N) << Omega;
     EXPECT_LT(forces[0].head<2>().norm(), 1e-12 * N) << Omega;
-    // No mode grows: rolling at another rate is another steady motion (a neutral family).
-    EXPECT_NE(modes.analysis.verdict, ModalAnalysis::Verdict::Unstable) << Omega;
+    // No mode grows: rolling at another rate is another steady motion (a neutral family), and
+    // the stone's angle on its bearing is a symmetry (the stone is round), not a coordinate
+    // that nothing restores: stable, not marginal.
+    EXPECT_EQ(modes.analysis.verdict, ModalAnalysis::Verdict::Stable)
+        << Omega << ": " << modes.analysis.verdict_text;
   }
 }
 

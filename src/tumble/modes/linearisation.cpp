@@ -36,6 +36,35 @@ std::vector<PositionBlock> position_blocks(const ArticulatedModel& model,
   return blocks;
 }
 
+// Whether moving a block that nothing depends on (to first order) by finite amounts leaves the
+// rates and their Jacobian (the rows still kept, other than its own) as they are: a symmetry of
+// the model, such as a wheel's angle on its axle where the wheel is round about it, rather than a
+// coordinate whose restoring terms vanish only to first order (a mast exactly at its critical
+// spring). Two amounts, neither a simple fraction of a turn, so that a shape with a few-fold
+// symmetry (a square wheel) is not taken for a round one.
+bool finite_moves_change_nothing(const ModalEquations& equations, const PositionBlock& block,
+                                 const std::vector<bool>& kept_row, const VecX& f0, const MatX& J,
+                                 double rate_tolerance, double tolerance) {
+  const Eigen::Index n = equations.layout().size();
+  for (const double amount : {0.7, -2.3}) {
+    VecX moved;
+    const MatX J_moved = jacobian_at_zero(
+        [&](const VecXOf<Dual>& z) {
+          VecXOf<Dual> at = z;
+          for (Eigen::Index i = block.first; i < block.first + block.count; ++i) at(i) += amount;
+          return equations.rates<Dual>(at);
+        },
+        n, &moved);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!kept_row[static_cast<std::size_t>(i)]) continue;
+      if (i >= block.first && i < block.first + block.count) continue;
+      if (std::abs(moved(i) - f0(i)) > rate_tolerance) return false;
+      if ((J_moved.row(i) - J.row(i)).cwiseAbs().maxCoeff() > tolerance) return false;
+    }
+  }
+  return true;
+}
+
 // The candidates for a steady motion's turns: each body on a ball or free joint with an axis of
 // symmetry spinning about it (a sphere or a cube about the axis it spins about), then the whole
 // turning about the vertical.
@@ -145,10 +174,8 @@ void check_contacts(const ModalEquations& equations, double speed_scale) {
 // An orthonormal basis T (columns, over the kept coordinates) of the contacts' and the loops'
 // tangent space: the changes the linearised constraints allow (C dz = 0), with the positions set
 // aside free to take up what they can (a rolling disk's height follows its lean).
-MatX constraint_tangent(const ModalEquations& equations, const std::vector<Eigen::Index>& kept) {
-  const Eigen::Index n = equations.layout().size();
-  const MatX C =
-      jacobian_at_zero([&](const VecXOf<Dual>& z) { return equations.constraints<Dual>(z); }, n);
+MatX constraint_tangent(const MatX& C, const std::vector<Eigen::Index>& kept) {
+  const Eigen::Index n = C.cols();
   const Eigen::JacobiSVD<MatX> svd(C, Eigen::ComputeFullV);
   const VecX& sigma = svd.singularValues();
   Eigen::Index rank = 0;
@@ -216,6 +243,14 @@ Linearisation linearise(const ModalEquations& equations) {
   const double rate_tolerance = 1e-9 * scale * speed_scale;
   if (!equations.contacts().empty()) check_contacts(equations, speed_scale);
 
+  // The contacts' and the loops' constraints, to first order: C dz = 0.
+  const MatX C = equations.holds_constraints()
+                     ? jacobian_at_zero(
+                           [&](const VecXOf<Dual>& z) { return equations.constraints<Dual>(z); }, n)
+                     : MatX(0, n);
+  const double constraint_tolerance =
+      1e-10 * std::max(1.0, C.size() > 0 ? C.cwiseAbs().maxCoeff() : 0.0);
+
   // Step 2: ignorable positions.
   std::vector<bool> kept_row(static_cast<std::size_t>(n), true);
   std::vector<PositionBlock> blocks = position_blocks(m, layout);
@@ -230,6 +265,19 @@ Linearisation linearise(const ModalEquations& equations) {
                               J.row(i).segment(block->first, block->count).cwiseAbs().maxCoeff());
       }
       if (dependence > tolerance) continue;
+      // A free body's place and turn are symmetries; so is a joint's coordinate that moving by
+      // finite amounts changes nothing. One that the constraints hold (a bicycle frame's pitch,
+      // which its front wheel's contact fixes) cannot drift either. Any other that nothing
+      // restores is neutral only to first order.
+      const bool held =
+          C.rows() > 0 &&
+          C.middleCols(block->first, block->count).cwiseAbs().maxCoeff() > constraint_tolerance;
+      const bool restored =
+          held ||
+          m.tree[layout.coordinates[static_cast<std::size_t>(block->first)].tree_joint]
+              .kind->modal_positions_are_symmetries() ||
+          finite_moves_change_nothing(equations, *block, kept_row, f0, J, rate_tolerance,
+                                      tolerance);
       for (Eigen::Index i = block->first; i < block->first + block->count; ++i) {
         kept_row[static_cast<std::size_t>(i)] = false;
         const ModalCoordinate& coordinate = layout.coordinates[static_cast<std::size_t>(i)];
@@ -237,11 +285,7 @@ Linearisation linearise(const ModalEquations& equations) {
         if (std::abs(f0(i)) > rate_tolerance) {
           result.drifting.push_back({coordinate.name, coordinate.unit, f0(i)});
         }
-        // A free body's place and turn are symmetries; a joint's coordinate that nothing
-        // restores is neutral only to first order.
-        if (!m.tree[coordinate.tree_joint].kind->modal_positions_are_symmetries()) {
-          result.unrestored.push_back(coordinate.name);
-        }
+        if (!restored) result.unrestored.push_back(coordinate.name);
       }
       blocks.erase(block);
       changed = true;
@@ -259,7 +303,7 @@ Linearisation linearise(const ModalEquations& equations) {
   const VecX f_s = rows(f0, result.kept);
   MatX A = rows_and_columns(J, result.kept);
   const auto ns = static_cast<Eigen::Index>(result.kept.size());
-  result.tangent = equations.holds_constraints() ? constraint_tangent(equations, result.kept)
+  result.tangent = equations.holds_constraints() ? constraint_tangent(C, result.kept)
                                                  : MatX(MatX::Identity(ns, ns));
   if (result.tangent.cols() == 0) {
     throw NotSteady(

@@ -6,6 +6,7 @@ namespace tumble {
 
 ArticulatedData::ArticulatedData(const ArticulatedModel& model) {
   work.resize(model.tree.size());
+  reuse_inertia.assign(model.tree.size(), 0);
   for (std::size_t k = 0; k < model.tree.size(); ++k) {
     const Eigen::Index nv = model.tree[k].nv;
     Workspace& w = work[k];

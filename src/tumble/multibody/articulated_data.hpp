@@ -39,6 +39,11 @@ struct ArticulatedData {
     // its entry in `moving`; -1 where the tree's S holds.
     int moving = -1;
     Vec6 applied = Vec6::Zero();  // the loads in `external` before contact forces join them
+    // The articulated inertia this joint hands its parent (I^A - U D^-1 U^T, or I^A where it is
+    // prescribed), and whether IA, U, D_inv and it hold for the configuration last evaluated
+    // with `known` as it is (calc_kinematics clears it; a full pass sets it).
+    Mat6 IA_passed = Mat6::Zero();
+    bool inertia_ready = false;
   };
   // A motion subspace that turns with the joint's coordinates, at the state last evaluated
   // (calc_kinematics sets it, with (dS/dt) u, which joins the joint's velocity terms). Kept apart
@@ -52,6 +57,9 @@ struct ArticulatedData {
     return w.moving < 0 ? joint.S : moving[static_cast<std::size_t>(w.moving)].S;
   }
   std::vector<Workspace> work;  // per tree joint
+  // Per tree joint that roots a tree: whether this solve takes the tree's articulated inertias
+  // from the last (at the same configuration, the same joints prescribed).
+  std::vector<char> reuse_inertia;
   std::vector<MovingSubspace> moving;
   std::vector<BodyState> states;  // per body, from the last calc_kinematics
   VecX rates;                     // the ledger's rates (calc_row_extras)

@@ -125,6 +125,7 @@ void ArticulatedFormulation::calc_kinematics(const VecX& y, bool with_velocities
     Mat3 R_PC;
     Vec3 p_PC_P;
     joint.kind->calc_placement(joint, y, R_PC, p_PC_P);
+    w.inertia_ready = false;  // a new configuration: the passes build the inertias again
     w.X.E = R_PC.transpose();
     w.X.r = p_PC_P;
     w.R_WC = R_WP * R_PC;
@@ -210,18 +211,31 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
   const auto skipped = [&](std::size_t k) {
     return only_tree != kEveryTree && m_.tree_root[k] != only_tree;
   };
+  // The articulated inertias depend only on the configuration and on which joints are
+  // prescribed: the passes at one state (the free motion, each contact row's response, the
+  // motion under the contact forces) build them once, and the rest take them as they are.
+  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
+    if (!skipped(k) && m_.tree_root[k] == k) d_.reuse_inertia[k] = 1;
+  }
+  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
+    if (skipped(k)) continue;
+    Workspace& w = d_.work[k];
+    const bool known = m_.prescribed(k, mode_time);
+    if (!w.inertia_ready || known != w.known) d_.reuse_inertia[m_.tree_root[k]] = 0;
+    w.known = known;
+  }
+  const auto reused = [&](std::size_t k) { return d_.reuse_inertia[m_.tree_root[k]] != 0; };
   // Pass 1: each body alone.
   for (std::size_t k = 0; k < m_.tree.size(); ++k) {
     if (skipped(k)) continue;
     const TreeJoint& joint = m_.tree[k];
     const RigidBody& body = model_.bodies[joint.child];
     Workspace& w = d_.work[k];
-    w.IA = spatial_inertia_about_com(body.mass, body.I_G_B);
+    if (!reused(k)) w.IA = spatial_inertia_about_com(body.mass, body.I_G_B);
     w.pA = -w.external;
     if (!impulsive) {
       w.pA += cross_force(w.velocity, apply_inertia_about_com(body.mass, body.I_G_B, w.velocity));
     }
-    w.known = m_.prescribed(k, mode_time);
     if (joint.nv == 0) continue;
     w.tau.setZero();
     if (w.known && !impulsive) w.qdd.setZero();  // locks and speed motors hold their rate
@@ -238,20 +252,23 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
     const TreeJoint& joint = m_.tree[k];
     Workspace& w = d_.work[k];
     const Vec6 c = impulsive ? Vec6::Zero() : w.bias;
-    Mat6 Ia;
+    const bool build = !reused(k);
     Vec6 pa;
     if (joint.type == JointType::Free && !w.known) {
       // A free joint's S is the identity and its parent is ground: U = D = I^A, and nothing
       // passes on. A body with nothing hung from it has I^A = diag(I_G, M): inverted in closed
       // form.
-      w.U = w.IA;
-      if (m_.has_children[k]) {
-        invert_joint_inertia(SpeedMatrix(w.IA), w.D_inv);
-      } else {
-        const RigidBody& body = model_.bodies[joint.child];
-        w.D_inv.setZero();
-        w.D_inv.topLeftCorner(3, 3) = body.I_G_B_inv;
-        w.D_inv.bottomRightCorner(3, 3) = Mat3::Identity() / body.mass;
+      if (build) {
+        w.U = w.IA;
+        if (m_.has_children[k]) {
+          invert_joint_inertia(SpeedMatrix(w.IA), w.D_inv);
+        } else {
+          const RigidBody& body = model_.bodies[joint.child];
+          w.D_inv.setZero();
+          w.D_inv.topLeftCorner(3, 3) = body.I_G_B_inv;
+          w.D_inv.bottomRightCorner(3, 3) = Mat3::Identity() / body.mass;
+        }
+        w.inertia_ready = true;
       }
       w.u = w.tau - w.pA;
       continue;
@@ -260,27 +277,32 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
     if (w.known) {
       Vec6 a_joint = c;
       if (joint.nv > 0) a_joint.noalias() += S * w.qdd;
-      Ia = w.IA;
+      if (build) w.IA_passed = w.IA;
       pa = w.pA + w.IA * a_joint;
     } else {
-      w.U.noalias() = w.IA * S;
-      const SpeedMatrix D = S.transpose() * w.U;
-      if (m_.holds_point_on_ball[k]) {
-        pseudo_invert_ball_joint_inertia(D, w.D_inv);
-      } else {
-        invert_joint_inertia(D, w.D_inv);
+      if (build) {
+        w.U.noalias() = w.IA * S;
+        const SpeedMatrix D = S.transpose() * w.U;
+        if (m_.holds_point_on_ball[k]) {
+          pseudo_invert_ball_joint_inertia(D, w.D_inv);
+        } else {
+          invert_joint_inertia(D, w.D_inv);
+        }
+        w.IA_passed = w.IA;
+        w.IA_passed.noalias() -= w.U * (w.D_inv * w.U.transpose());
       }
       w.u = w.tau;
       w.u.noalias() -= S.transpose() * w.pA;
-      Ia = w.IA;
-      Ia.noalias() -= w.U * (w.D_inv * w.U.transpose());
-      pa = w.pA + Ia * c;
+      pa = w.pA + w.IA_passed * c;
       pa.noalias() += w.U * (w.D_inv * w.u);
     }
+    w.inertia_ready = true;
     if (joint.parent == kGround) continue;
     Workspace& parent = d_.work[m_.slot_of_body[static_cast<std::size_t>(joint.parent)]];
-    const Mat6 X = w.X.matrix();
-    parent.IA.noalias() += X.transpose() * Ia * X;
+    if (build) {
+      const Mat6 X = w.X.matrix();
+      parent.IA.noalias() += X.transpose() * w.IA_passed * X;
+    }
     parent.pA += w.X.transpose_apply_force(pa);
   }
   // Pass 3: accelerations from ground out; ground accelerates at -g so that gravity needs no

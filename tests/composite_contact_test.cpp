@@ -11,6 +11,18 @@
 //    twentieth of a metre above the floor and fall;
 //  - a block of a turned tetrahedron (a mesh part) and a sphere rests on the tetrahedron's face,
 //    placed and turned as a box part's corners are.
+//  - a wheelset (two disk parts on a rod, their axes turned across the body) rolls down a ramp on
+//    both wheels at a = g sin(alpha) M / (M + I_a / R^2), I_a = 2 (m R^2 / 2) its moment about
+//    the axle (the rod's is none): energy, or Newton-Euler along the ramp with the friction that
+//    spins the wheels up;
+//  - a round part turned in its body moves as the same shape alone: the spinning cone of
+//    examples/top_lands_on_its_side.yaml restated as a composite's one part (its axes the
+//    example's turn, the body's the world's) lands on its side, pivots and rolls through the same
+//    eleven events, each within 1e-9 s of the example's, every row within 1e-8 m and m/s (the
+//    two integrate different coordinates: round-off and the steps apart, at rtol 1e-10);
+//  - `tumble modes` on a disk rolling upright as a composite's part, placed off the body's frame
+//    and turned in it: its wobble at the closed form's frequency (modes_contact_test.cpp's
+//    formula), to 1e-9.
 // And the reader: a composite names the touching part where it has more than one that can touch;
 // a part that cannot (a rod), a part it lacks, and `part:` on a body of one shape are refused at
 // the key.
@@ -18,10 +30,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
+#include "modes_checks.hpp"
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "test_files.hpp"
+#include "tumble/scenario/scenario_document.hpp"
 
 namespace tumble {
 namespace {
@@ -126,6 +142,108 @@ TEST(CompositeContact, ABlockRestsOnItsTurnedMeshPartWithTheFloorCarryingItsWeig
       "mesh_block");
   EXPECT_NEAR(run.rows.front().states[0].r_G.z(), 0.5 + 1.0 * 0.8 / 3.0, 1e-15);
   expect_resting_on_the_floor(run, 3.0);
+}
+
+TEST(CompositeContact, AWheelsetOfTwoDiskPartsRollsDownARampAtTheClosedFormsAcceleration) {
+  const double alpha = 15.0 * std::numbers::pi / 180.0, R = 0.1, b = 0.2, m = 0.5, m_axle = 0.3;
+  const test::ScenarioRun run = test::run_inline_scenario(fmt::format(R"(tumble: 1
+parameters: {{alpha: 15 deg, R: {}, b: {}, m: {}, ma: {}}}
+gravity: [0, 0, -{}]
+bodies:
+  wheelset:
+    parts:
+      - {{name: left, shape: disk, radius: R, mass: m, position: [0, b, 0],
+         orientation: {{axis: [1, 0, 0], angle: 90 deg}}}}
+      - {{name: right, shape: disk, radius: R, mass: m, position: [0, -b, 0],
+         orientation: {{axis: [1, 0, 0], angle: 90 deg}}}}
+      - {{name: axle, shape: rod, length: 2*b, mass: ma, orientation: {{axis: [0, 0, 1], angle: 90 deg}}}}
+    position: [R*sin(alpha), 0, R*cos(alpha)]
+contacts:
+  - {{name: left_rail, type: plane, body: wheelset, part: left, friction: 0.8,
+     plane: {{point: [0, 0, 0], normal: [sin(alpha), 0, cos(alpha)]}}}}
+  - {{name: right_rail, type: plane, body: wheelset, part: right, friction: 0.8,
+     plane: {{point: [0, 0, 0], normal: [sin(alpha), 0, cos(alpha)]}}}}
+simulate: {{duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.01}}
+)",
+                                                                      R, b, m, m_axle, test::kG),
+                                                          "wheelset");
+  const double M = 2 * m + m_axle, I_axle = 2 * (m * R * R / 2);
+  const double a = test::kG * std::sin(alpha) * M / (M + I_axle / (R * R));
+  const Vec3 down_W(std::cos(alpha), 0.0, -std::sin(alpha));
+  const Vec3 r0 = run.rows.front().states[0].r_G;
+  const double E0 = run.rows.front().quantities.total_energy;
+  ASSERT_EQ(run.rows.size(), 101u);
+  for (const test::Row& row : run.rows) {
+    const BodyState& s = row.states[0];
+    EXPECT_NEAR((s.r_G - r0).dot(down_W), a * row.t * row.t / 2, 1e-10 * a) << "t " << row.t;
+    EXPECT_NEAR(s.v_G.dot(down_W), a * row.t, 1e-10 * a) << "t " << row.t;
+    // Rolling: it turns about its axle (y) at v / R, and about nothing else.
+    EXPECT_NEAR(s.omega_W.y(), a * row.t / R, 1e-10 * a / R) << "t " << row.t;
+    EXPECT_NEAR(s.omega_W.cross(Vec3::UnitY()).norm(), 0.0, 1e-10 * a / R) << "t " << row.t;
+    for (const ContactOutput& rail : row.extras.contacts) EXPECT_EQ(rail.mode, 2) << row.t;
+    EXPECT_NEAR(row.quantities.total_energy, E0, 1e-10 * M * a * a) << "t " << row.t;
+  }
+}
+
+TEST(CompositeContact, ARoundPartTurnedInItsBodyMovesAsTheSameShapeAlone) {
+  const std::string path = test::example("top_lands_on_its_side.yaml");
+  std::string text = read_scenario_file(path);
+  const std::string shape =
+      "    shape: cone         # its axis, body z, from the base to the apex\n"
+      "    radius: r\n"
+      "    height: h\n"
+      "    mass: M\n";
+  const std::string turn = "    orientation: {axis: [1, 0, 0], angle: 180 deg}\n";
+  text = test::replaced(text, shape,
+                        "    parts:\n"
+                        "      - {name: cone, shape: cone, radius: r, height: h, mass: M,\n"
+                        "         orientation: {axis: [1, 0, 0], angle: 180 deg}}\n");
+  text = test::replaced(text, turn, "");
+  text = test::replaced(text, "    body: top\n", "    body: top\n    part: cone\n");
+  const test::ScenarioRun alone = test::run_scenario(load_scenario(path, {}));
+  const test::ScenarioRun part = test::run_scenario(load_scenario_text(text, path, {}));
+  ASSERT_EQ(part.contact_events.size(), alone.contact_events.size());
+  ASSERT_EQ(alone.contact_events.size(), 11u);
+  for (std::size_t i = 0; i < alone.contact_events.size(); ++i) {
+    EXPECT_EQ(part.contact_events[i].what, alone.contact_events[i].what) << i;
+    EXPECT_NEAR(part.contact_events[i].t, alone.contact_events[i].t, 1e-9) << i;
+  }
+  ASSERT_EQ(part.rows.size(), alone.rows.size());
+  for (std::size_t i = 0; i < alone.rows.size(); ++i) {
+    const BodyState& a = alone.rows[i].states[0];
+    const BodyState& p = part.rows[i].states[0];
+    EXPECT_NEAR((p.r_G - a.r_G).norm(), 0.0, 1e-8) << "t " << alone.rows[i].t;
+    EXPECT_NEAR((p.v_G - a.v_G).norm(), 0.0, 1e-8) << "t " << alone.rows[i].t;
+    EXPECT_NEAR((p.omega_W - a.omega_W).norm(), 0.0, 1e-8) << "t " << alone.rows[i].t;
+  }
+}
+
+TEST(CompositeContact, ADiskPartRollingUprightWobblesAtTheClosedFormsFrequency) {
+  // examples/modes/rolling_disk.yaml's disk as a part away from its body's frame, turned in it.
+  std::string text = read_scenario_file(test::example("modes/rolling_disk.yaml"));
+  text = test::replaced(text,
+                        "    shape: disk\n"
+                        "    radius: r\n"
+                        "    mass: M\n"
+                        "    position: [0, 0, r]\n"
+                        "    orientation: {axis: [1, 0, 0], angle: 90 deg}   # its axis (body z) "
+                        "along -y\n",
+                        "    parts:\n"
+                        "      - {name: rim, shape: disk, radius: r, mass: M, position: [0.3, 0.2, "
+                        "-0.1],\n"
+                        "         orientation: {axis: [1, 0, 0], angle: 90 deg}}\n"
+                        "    position: [-0.3, -0.2, r + 0.1]\n");
+  text = test::replaced(text, "    body: wheel\n", "    body: wheel\n    part: rim\n");
+  const double r = 0.3, M = 2.0, g = 9.81, Omega = 10.0;
+  const double I_a = M * r * r / 2, I_d = M * r * r / 4;
+  const double k = (I_a + M * r * r) * I_a * Omega * Omega / I_d - M * g * r;
+  const double omega = std::sqrt(k / (I_d + M * r * r));
+  const ScenarioModes modes =
+      modes_of_scenario(load_scenario_text(text, test::example("modes/rolling_disk.yaml"), {}));
+  ASSERT_FALSE(modes.analysis.modes.empty());
+  const Mode& wobble = modes.analysis.modes.front();
+  EXPECT_EQ(wobble.kind, Mode::Kind::Oscillating);
+  test::expect_relative(wobble.natural_frequency, omega);
 }
 
 TEST(CompositeContact, TheReaderNamesTheTouchingPart) {

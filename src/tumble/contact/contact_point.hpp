@@ -5,7 +5,8 @@
 // differentiates it). A point of each kind:
 //  - Lowest: a sphere's or shell's lowest point, p = R c - r n with c its centre (0: the COM);
 //  - Rim: the lowest point of a disk's, ring's, cylinder's or cone's rim, p = R c + rho u, with c
-//    the rim's centre and u the unit vector in the rim's plane most opposed to n;
+//    the rim's centre and u the unit vector in the rim's plane (across its axis) most opposed to
+//    n;
 //  - Material: a point of the body (a polyhedron's vertex, a cone's apex), p = R p_B.
 // A rim's lowest point moves along the rim's tangent, which is parallel to the plane: the offset's
 // rate has the normal component of the body's point there, so the height's rate is the normal
@@ -22,6 +23,8 @@ struct ContactPoint {
   // COM)
   Vec3 p_B = Vec3::Zero();
   double radius = 0.0;  // Lowest: the sphere's; Rim: the rim's (m)
+  // Rim: the rim's axis (body axes): the body's z but for a composite's turned part.
+  Vec3 axis_B = Vec3::UnitZ();
 };
 
 // The body turned by R_WB and turning at omega_W over a plane of unit normal n_W.
@@ -46,7 +49,8 @@ void calc_contact_offset(const ContactPoint& point, const Vec3& n_W, const Mat3O
       return;
     case ContactPoint::Kind::Rim: {
       const V3 n = n_W.cast<S>();
-      const V3 axis = R_WB.col(2);
+      const V3 axis =
+          point.axis_B == Vec3::UnitZ() ? V3(R_WB.col(2)) : V3(R_WB * point.axis_B.cast<S>());
       const V3 axis_rate = omega_W.cross(axis);
       const V3 w = n - n.dot(axis) * axis;  // n's part in the rim's plane
       const V3 w_rate = -n.dot(axis_rate) * axis - n.dot(axis) * axis_rate;

@@ -68,9 +68,12 @@ double centre_time_to_depth(const PlaneContact& contact, const SurfaceMotion& mo
 }
 
 double circle_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion,
-                            const Vec3& centre_B, double radius, double turning, double depth) {
+                            const Vec3& centre_B, const Mat3& axes_B, double radius, double turning,
+                            double depth) {
   const Vec3& n = contact.normal_W;
-  const Vec3 e1 = motion.R_WB.col(0), e2 = motion.R_WB.col(1);
+  const bool turned = !axes_B.isIdentity(0.0);
+  const Vec3 e1 = turned ? Vec3(motion.R_WB * axes_B.col(0)) : Vec3(motion.R_WB.col(0));
+  const Vec3 e2 = turned ? Vec3(motion.R_WB * axes_B.col(1)) : Vec3(motion.R_WB.col(1));
   const Vec3 c_W = motion.R_WB * centre_B;
   const CircleHeight f{n.dot(motion.r_G_W + c_W - contact.point_W) + depth,
                        n.dot(motion.v_G_W + motion.omega_W.cross(c_W)),

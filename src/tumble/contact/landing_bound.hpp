@@ -40,12 +40,14 @@ double time_to_reach_depth(const PlaneContact& contact, const SurfaceMotion& mot
 inline constexpr double kNever = std::numeric_limits<double>::infinity();
 // The bound for one point of the body (p_B, body axes from the COM); for the COM less `radius`
 // along the normal (a sphere's lowest point, which turning does not move); for a circle of the
-// body about its z axis (centre_B, radius: a rim).
+// body about the third of axes_B (centre_B, radius: a rim; axes_B the body's own but for a
+// composite's part).
 double point_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion,
                            const Vec3& p_B, double turning, double depth);
 double centre_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion, double radius,
                             double turning, double depth);
 double circle_time_to_depth(const PlaneContact& contact, const SurfaceMotion& motion,
-                            const Vec3& centre_B, double radius, double turning, double depth);
+                            const Vec3& centre_B, const Mat3& axes_B, double radius, double turning,
+                            double depth);
 
 }  // namespace tumble

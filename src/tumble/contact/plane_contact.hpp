@@ -27,6 +27,12 @@ struct ContactSurface {
   // m: a ring's or tube's end faces are annuli from this radius out (0: full disks)
   double face_inner_radius = 0.0;
   Vec3 centre_B = Vec3::Zero();  // m, a sphere's centre from the COM (a composite's sphere part)
+  // A composite's round part (a disk or ring, a cylinder or tube, a cone): its own axes in the
+  // body's (its axis of symmetry the third), and centre_B its centre (a cylinder's middle, a disk's
+  // centre; a cone's apex and base centre are in `vertices` and rim_centre_B, placed already).
+  // Otherwise the body's own axes and COM (`turned` false).
+  Mat3 axes_B = Mat3::Identity();
+  bool turned = false;
 };
 
 struct PlaneContact {

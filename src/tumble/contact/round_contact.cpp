@@ -13,8 +13,9 @@ namespace {
 constexpr double kRimLean = 1e-12;
 
 // The unnormalised rim direction: the projection's opposite, leaning towards `previous`.
-Vec3 leaning_direction(const Vec3& n_B, const Vec3& previous_B) {
-  return Vec3(-n_B.x(), -n_B.y(), 0.0) + kRimLean * previous_B;
+Vec3 leaning_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& previous_B) {
+  if (!ends.turned) return Vec3(-n_B.x(), -n_B.y(), 0.0) + kRimLean * previous_B;
+  return -in_ends_plane(ends, n_B) + kRimLean * in_ends_plane(ends, previous_B);
 }
 
 // The mean distance from the centre of an even pressure on a face: 2r/3 on a disk, r on a ring,
@@ -30,21 +31,53 @@ double face_spin_radius(double r, double q) {
 RoundEnds round_ends(const ContactSurface& surface) {
   RoundEnds ends;
   ends.face_inner_radius = surface.face_inner_radius;
+  ends.axes_B = surface.axes_B;
+  ends.turned = surface.turned;
   switch (surface.kind) {
     case ContactSurface::Kind::Cone:
       ends.centre_B = {surface.vertices[0], surface.rim_centre_B};
       ends.radius = {0.0, surface.radius};
       break;
     case ContactSurface::Kind::Cylinder:
-      ends.centre_B = {Vec3(0.0, 0.0, -surface.half_length), Vec3(0.0, 0.0, surface.half_length)};
+      if (surface.turned) {
+        const Vec3 half = surface.half_length * surface.axes_B.col(2);
+        ends.centre_B = {surface.centre_B - half, surface.centre_B + half};
+      } else {
+        ends.centre_B = {Vec3(0.0, 0.0, -surface.half_length), Vec3(0.0, 0.0, surface.half_length)};
+      }
       ends.radius = {surface.radius, surface.radius};
       break;
-    default:  // a disk or ring: one rim about the COM
+    default:  // a disk or ring: one rim about its centre (the COM, but for a composite's part)
+      ends.centre_B = {surface.centre_B, surface.centre_B};
       ends.radius = {surface.radius, surface.radius};
       ends.one_rim = true;
       break;
   }
   return ends;
+}
+
+Vec3 in_ends_plane(const RoundEnds& ends, const Vec3& v_B) {
+  if (!ends.turned) return Vec3(v_B.x(), v_B.y(), 0.0);
+  const Vec3 axis = ends.axes_B.col(2);
+  return v_B - axis * axis.dot(v_B);
+}
+
+Vec3 ends_plane_direction(const RoundEnds& ends, double x, double y) {
+  if (!ends.turned) return Vec3(x, y, 0.0);
+  return x * ends.axes_B.col(0) + y * ends.axes_B.col(1);
+}
+
+Vec3 lowest_rim_direction(const RoundEnds& ends, const Vec3& n_B, double& projected_length) {
+  if (!ends.turned) return lowest_in_plane(n_B, projected_length);
+  const Vec3 projected = in_ends_plane(ends, n_B);
+  projected_length = projected.norm();
+  if (projected_length == 0.0) return ends.axes_B.col(0);
+  return -projected / projected_length;
+}
+
+double tilt_sine(const RoundEnds& ends, const Vec3& n_B) {
+  if (!ends.turned) return std::hypot(n_B.x(), n_B.y());
+  return in_ends_plane(ends, n_B).norm();
 }
 
 int end_of(RoundPart part) {
@@ -64,16 +97,16 @@ bool holds_rim_point(const ContactSurface& surface, RoundPart part) {
          (part == RoundPart::EndA && round_ends(surface).radius[0] > 0.0);
 }
 
-Vec3 rim_direction(const Vec3& n_B, const Vec3& previous_B) {
-  const Vec3 w = leaning_direction(n_B, previous_B);
+Vec3 rim_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& previous_B) {
+  const Vec3 w = leaning_direction(ends, n_B, previous_B);
   const double length = w.norm();
   return length > 0.0 ? Vec3(w / length) : previous_B;
 }
 
-void rim_direction_and_rate(const Vec3& n_B, const Vec3& omega_B, const Vec3& previous_B, Vec3& u_B,
-                            Vec3& u_rate_B) {
+void rim_direction_and_rate(const RoundEnds& ends, const Vec3& n_B, const Vec3& omega_B,
+                            const Vec3& previous_B, Vec3& u_B, Vec3& u_rate_B) {
   // u = w / |w| with w = -P n + lean: u' = (1 - u u^T) w' / |w|, w' = -P n', n' = n x omega.
-  const Vec3 w = leaning_direction(n_B, previous_B);
+  const Vec3 w = leaning_direction(ends, n_B, previous_B);
   const double length = w.norm();
   if (!(length > 0.0)) {
     u_B = previous_B;
@@ -82,7 +115,8 @@ void rim_direction_and_rate(const Vec3& n_B, const Vec3& omega_B, const Vec3& pr
   }
   u_B = w / length;
   const Vec3 n_rate = n_B.cross(omega_B);
-  const Vec3 w_rate(-n_rate.x(), -n_rate.y(), 0.0);
+  const Vec3 w_rate =
+      ends.turned ? Vec3(-in_ends_plane(ends, n_rate)) : Vec3(-n_rate.x(), -n_rate.y(), 0.0);
   u_rate_B = (w_rate - u_B * u_B.dot(w_rate)) / length;
 }
 
@@ -95,7 +129,7 @@ RoundPartPoints round_part_points(const RoundEnds& ends, RoundPart part, const V
                                   const Vec3& omega_B, const Vec3& rim_direction_B) {
   RoundPartPoints p;
   Vec3 u = Vec3::UnitX(), u_rate = Vec3::Zero();
-  if (!is_face(part)) rim_direction_and_rate(n_B, omega_B, rim_direction_B, u, u_rate);
+  if (!is_face(part)) rim_direction_and_rate(ends, n_B, omega_B, rim_direction_B, u, u_rate);
   const int k = end_of(part);
   const auto r = ends.radius[static_cast<std::size_t>(k)];
   switch (part) {
@@ -121,7 +155,8 @@ RoundPartPoints round_part_points(const RoundEnds& ends, RoundPart part, const V
       for (std::size_t j = 0; j < 3; ++j) {
         const double angle =
             std::numbers::pi / 2 + 2 * std::numbers::pi * static_cast<double>(j) / 3;
-        p.points_B[j] = rim_point(ends, k, Vec3(std::cos(angle), std::sin(angle), 0.0));
+        p.points_B[j] =
+            rim_point(ends, k, ends_plane_direction(ends, std::cos(angle), std::sin(angle)));
       }
       p.count = 3;
       p.reference_B = ends.centre_B[static_cast<std::size_t>(k)];
@@ -155,9 +190,10 @@ double round_support_margin(const ContactSurface& surface, RoundPart part,
   return std::min(at_a, at_b);
 }
 
-Vec3 face_tip_direction(const Vec3& n_B, const Vec3& M_O_B, const Vec3& otherwise_B) {
+Vec3 face_tip_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& M_O_B,
+                        const Vec3& otherwise_B) {
   const Vec3 N_offset = n_B.cross(M_O_B);
-  const Vec3 in_face(N_offset.x(), N_offset.y(), 0.0);
+  const Vec3 in_face = in_ends_plane(ends, N_offset);
   const double length = in_face.norm();
   return length > 0.0 ? Vec3(in_face / length) : otherwise_B;
 }

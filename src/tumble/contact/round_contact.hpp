@@ -30,9 +30,24 @@ struct RoundEnds {
   std::array<double, 2> radius = {0.0, 0.0};                    // m
   double face_inner_radius = 0.0;  // m: a ring's or tube's faces are hollow within it
   bool one_rim = false;            // a disk or ring: A and B are the same circle
+  // The ends' axes in the body's: their circles lie in the plane of the first two, about the
+  // third. The body's own (`turned` false) but for a composite's part.
+  Mat3 axes_B = Mat3::Identity();
+  bool turned = false;
 };
 
 RoundEnds round_ends(const ContactSurface& surface);
+
+// v_B less its part along the ends' axis: its projection on the ends' plane (body axes).
+Vec3 in_ends_plane(const RoundEnds& ends, const Vec3& v_B);
+// The direction x e1 + y e2 of the ends' plane (body axes; e1, e2 the ends' first two axes).
+Vec3 ends_plane_direction(const RoundEnds& ends, double x, double y);
+// The unit vector of the ends' plane most opposed to n_B: where their circles are lowest. The
+// length of n_B's projection on the plane (the sine of the ends' tilt from the plane) goes to
+// `projected_length`; flat (projection zero), the ends' first axis is returned.
+Vec3 lowest_rim_direction(const RoundEnds& ends, const Vec3& n_B, double& projected_length);
+// The sine of the ends' tilt from a plane of normal n_B.
+double tilt_sine(const RoundEnds& ends, const Vec3& n_B);
 
 // 0 for the parts at end A, 1 at end B (its rim point or its face).
 int end_of(RoundPart part);
@@ -58,15 +73,15 @@ struct RoundPartPoints {
   double spin_radius = 0.0;
 };
 
-// The direction (body x-y plane, unit) of the rim points lowest along -n_B, and their motion
+// The direction (in the ends' plane, unit) of the rim points lowest along -n_B, and their motion
 // over the body when the body turns at omega_B. Near flat the lowest point is ill-defined (just
 // tipped off a face, or about to land on it), so the direction leans towards `previous` (the
 // last one known) by a weight of 1e-12 against the tilt: exact to ~1e-12 relative once the
 // body leans, continuous through flat.
-Vec3 rim_direction(const Vec3& n_B, const Vec3& previous_B);
+Vec3 rim_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& previous_B);
 // The direction (into u_B) and its rate (into u_rate_B), from one normalisation.
-void rim_direction_and_rate(const Vec3& n_B, const Vec3& omega_B, const Vec3& previous_B, Vec3& u_B,
-                            Vec3& u_rate_B);
+void rim_direction_and_rate(const RoundEnds& ends, const Vec3& n_B, const Vec3& omega_B,
+                            const Vec3& previous_B, Vec3& u_B, Vec3& u_rate_B);
 
 // The rim point of end k (0: A, 1: B) in direction u_B (unit, body x-y plane).
 Vec3 rim_point(const RoundEnds& ends, int k, const Vec3& u_B);
@@ -86,7 +101,8 @@ double round_support_margin(const ContactSurface& surface, RoundPart part,
 
 // Where the CoP of a resultant on a face leaves it: the rim direction (body axes, unit) it
 // points to from the centre, `otherwise_B` if it is at the centre.
-Vec3 face_tip_direction(const Vec3& n_B, const Vec3& M_O_B, const Vec3& otherwise_B);
+Vec3 face_tip_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& M_O_B,
+                        const Vec3& otherwise_B);
 
 // "its apex", "its rim", "its side", "its base" (a cone); "its rim", "its face" (a disk or
 // ring); "its -z rim", "its +z face", ... (a cylinder or tube, by the end's side of the COM).

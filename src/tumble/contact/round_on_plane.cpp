@@ -20,7 +20,7 @@ constexpr double kRimKeptUpTilt = 1e-2;
 // direction of its lowest rim point.
 int lower_end(const RoundEnds& ends, const Vec3& n_B, Vec3& u_B) {
   double projected = 0.0;
-  u_B = lowest_in_plane(n_B, projected);
+  u_B = lowest_rim_direction(ends, n_B, projected);
   if (ends.one_rim) return 1;
   return rim_point(ends, 0, u_B).dot(n_B) < rim_point(ends, 1, u_B).dot(n_B) ? 0 : 1;
 }
@@ -40,10 +40,10 @@ class RoundOnPlane final : public ContactPair {
     Vec3 u = Vec3::UnitX();
     const double r = ends.radius[static_cast<std::size_t>(lower_end(ends, n_B, u))];
     double projected = 0.0;
-    lowest_in_plane(n_B, projected);
+    lowest_rim_direction(ends, n_B, projected);
     if (projected == 0.0 || r == 0.0) return Vec3::Zero();
-    // u = -P n / |P n| with P the projection on x-y: u' = -(1 - u u^T) P n' / |P n|.
-    const Vec3 projected_rate(n_rate_B.x(), n_rate_B.y(), 0.0);
+    // u = -P n / |P n| with P the projection on the ends' plane: u' = -(1 - u u^T) P n' / |P n|.
+    const Vec3 projected_rate = in_ends_plane(ends, n_rate_B);
     const Vec3 u_rate = -(projected_rate - u * u.dot(projected_rate)) / projected;
     return r * u_rate;
   }
@@ -51,7 +51,10 @@ class RoundOnPlane final : public ContactPair {
     double size = 0.0;
     const RoundEnds ends = round_ends(surface);
     for (std::size_t k = 0; k < 2; ++k) {
-      size = std::max(size, std::hypot(ends.radius[k], ends.centre_B[k].norm()));
+      // The farthest rim point from the COM: on the body's own axis, the rim's centre is on the
+      // rim's axis; a composite's part may have it anywhere, up to |c| + r.
+      size = std::max(size, ends.turned ? ends.centre_B[k].norm() + ends.radius[k]
+                                        : std::hypot(ends.radius[k], ends.centre_B[k].norm()));
     }
     for (const Vec3& p : surface.vertices) size = std::max(size, p.norm());  // a cone's apex
     return size;
@@ -63,8 +66,8 @@ class RoundOnPlane final : public ContactPair {
     for (std::size_t k = ends.one_rim ? 1 : 0; k < 2; ++k) {
       t = std::min(t, ends.radius[k] == 0.0  // a cone's apex
                           ? point_time_to_depth(contact, motion, ends.centre_B[k], turning, depth)
-                          : circle_time_to_depth(contact, motion, ends.centre_B[k], ends.radius[k],
-                                                 turning, depth));
+                          : circle_time_to_depth(contact, motion, ends.centre_B[k], ends.axes_B,
+                                                 ends.radius[k], turning, depth));
     }
     return t;
   }
@@ -74,7 +77,7 @@ class RoundOnPlane final : public ContactPair {
                             ContactPoint& point) const override {
     const RoundEnds ends = round_ends(surface);
     double tilt = 0.0;
-    const Vec3 u_B = lowest_in_plane(n_B, tilt);
+    const Vec3 u_B = lowest_rim_direction(ends, n_B, tilt);
     // A cone on its apex, the base's rim off the plane (a top, upright or leaning): a point of
     // the body, whatever the tilt.
     const bool apex_down =
@@ -101,6 +104,7 @@ class RoundOnPlane final : public ContactPair {
     }
     const auto k = static_cast<std::size_t>(end);
     point.p_B = ends.centre_B[k];
+    point.axis_B = ends.axes_B.col(2);
     point.radius = ends.radius[k];
     point.kind = point.radius > 0.0 ? ContactPoint::Kind::Rim : ContactPoint::Kind::Material;
     return {};
@@ -132,11 +136,10 @@ class RoundOnPlane final : public ContactPair {
     // The rim point's direction u (part.points_B[0] = C + r u): the lowest point, to ~1e-12.
     const Vec3& centre = ends.centre_B[static_cast<std::size_t>(end)];
     const Vec3 u = radius > 0.0 ? Vec3((part.points_B[0] - centre) / radius)
-                                : rim_direction(now.n_B, status.rim_direction_B);
+                                : rim_direction(ends, now.n_B, status.rim_direction_B);
     if (radius > 0.0) {
       now.support.p_GC_B = rim_point(ends, end, -u);
-      now.support.height =
-          2.0 * radius * std::hypot(now.n_B.x(), now.n_B.y()) - status.landing_height;
+      now.support.height = 2.0 * radius * tilt_sine(ends, now.n_B) - status.landing_height;
     }
     if (ends.one_rim) return true;
     const Vec3 other = rim_point(ends, 1 - end, u);
@@ -152,7 +155,7 @@ class RoundOnPlane final : public ContactPair {
                               FunctionRef<void(const Vec3&)> watch) const override {
     const RoundEnds ends = round_ends(v.surface());
     double projected = 0.0;
-    const Vec3 u = lowest_in_plane(v.now.n_B, projected);
+    const Vec3 u = lowest_rim_direction(ends, v.now.n_B, projected);
     for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) watch(rim_point(ends, k, u));
   }
 
@@ -191,11 +194,11 @@ class RoundOnPlane final : public ContactPair {
     // point moving down the fastest, which leads if the face tilts: a point C + r e has normal
     // speed v_C.n + r e.(n x omega).
     double projected = 0.0;
-    Vec3 u = lowest_in_plane(n_B, projected);
+    Vec3 u = lowest_rim_direction(ends, n_B, projected);
     const double widest = std::max(ends.radius[0], ends.radius[1]);
     if (2.0 * widest * projected <= within) {
       const Vec3 tilting = n_B.cross(omega_B);
-      const Vec3 in_plane(tilting.x(), tilting.y(), 0.0);
+      const Vec3 in_plane = in_ends_plane(ends, tilting);
       u = in_plane.norm() > 0.0 ? Vec3(-in_plane.normalized()) : status.rim_direction_B;
     }
     status.rim_direction_B = u;
@@ -316,8 +319,9 @@ class RoundOnPlane final : public ContactPair {
     const RoundPart part = v.status.round_part;
     if (part == RoundPart::None) return ContactPair::point_height(v);
     // The rim point it touches at (not the other end's, which may be as low).
-    const Vec3 u = rim_direction(v.n_B(), v.status.rim_direction_B);
-    return v.height(rim_point(round_ends(v.surface()), end_of(part), u));
+    const RoundEnds ends = round_ends(v.surface());
+    const Vec3 u = rim_direction(ends, v.n_B(), v.status.rim_direction_B);
+    return v.height(rim_point(ends, end_of(part), u));
   }
 
   bool follows_direction(const PairView& v) const override {
@@ -326,10 +330,11 @@ class RoundOnPlane final : public ContactPair {
     // kept up with only there (judged by the last evaluation's normal in body axes).
     const Vec3& n_B = v.now.n_B;
     return holds_rim_point(v.surface(), v.status.round_part) &&
-           std::hypot(n_B.x(), n_B.y()) < kRimKeptUpTilt;
+           tilt_sine(round_ends(v.surface()), n_B) < kRimKeptUpTilt;
   }
   void follow_direction(PairView& v) const override {
-    v.status.rim_direction_B = rim_direction(v.now.n_B, v.status.rim_direction_B);
+    v.status.rim_direction_B =
+        rim_direction(round_ends(v.surface()), v.now.n_B, v.status.rim_direction_B);
   }
 
  private:
@@ -338,7 +343,7 @@ class RoundOnPlane final : public ContactPair {
   static std::array<SurfacePoint, 2> end_points(const PairView& v) {
     const RoundEnds ends = round_ends(v.surface());
     Vec3 u = Vec3::UnitX(), u_rate = Vec3::Zero();
-    rim_direction_and_rate(v.n_B(), v.motion.velocity.head<3>(), v.status.rim_direction_B, u,
+    rim_direction_and_rate(ends, v.n_B(), v.motion.velocity.head<3>(), v.status.rim_direction_B, u,
                            u_rate);
     return {SurfacePoint{rim_point(ends, 0, u), ends.radius[0] * u_rate},
             SurfacePoint{rim_point(ends, 1, u), ends.radius[1] * u_rate}};
@@ -352,8 +357,8 @@ class RoundOnPlane final : public ContactPair {
     if (status.round_part == RoundPart::Side) {
       status.round_part = side == 0 ? RoundPart::EndA : RoundPart::EndB;
     } else if (is_face(status.round_part)) {
-      status.rim_direction_B =
-          face_tip_direction(now.n_B, now.moment_about_O_B, status.rim_direction_B);
+      status.rim_direction_B = face_tip_direction(round_ends(v.surface()), now.n_B,
+                                                  now.moment_about_O_B, status.rim_direction_B);
       status.round_part = end_of(status.round_part) == 0 ? RoundPart::EndA : RoundPart::EndB;
     }
   }

@@ -1,8 +1,7 @@
 // `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
-// The body must be of a shape whose contact with a plane tumble resolves: a curved surface
-// touching at one point, a cone, or a polyhedron (docs/scenario.md, Contacts); a body that a joint
-// holds (to ground, or to the body its group hangs from) only a sphere, a shell or a polyhedron,
-// for now.
+// The body must be of a shape whose contact with a plane tumble resolves: a sphere or shell, a
+// round body (disk, ring, cylinder, tube, cone) or a polyhedron (docs/scenario.md, Contacts), or
+// a composite whose touching part is one of these.
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -14,12 +13,18 @@
 namespace tumble::scenario_reading {
 namespace {
 
-// Of a composite's parts, those that touch a plane: a sphere's or shell's centre and a box's,
-// plate's or mesh's vertices are placed in the body like any point of it (a round part's axis is
-// not carried over yet).
+bool touches_a_plane(ShapeKind kind) {
+  return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
+         kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
+         kind == ShapeKind::Cone || kind == ShapeKind::Box || kind == ShapeKind::Plate ||
+         kind == ShapeKind::Mesh;
+}
+
+// Of a composite's parts, those that touch a plane: every shape that touches one alone (a
+// sphere's centre, a polyhedron's vertices and a round part's centre and axes are placed in the
+// body like any point and direction of it), not a rod or a point.
 bool part_touches_a_plane(ShapeKind kind) {
-  return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Box ||
-         kind == ShapeKind::Plate || kind == ShapeKind::Mesh;
+  return touches_a_plane(kind);
 }
 
 // The composite's part that touches: the one `part:` names, or its one part that can.
@@ -40,9 +45,9 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
       if (!part_touches_a_plane(body.parts[p].shape.kind)) {
         reader.fail_at_value(*f, "part '" + name + "' of body '" + body.name + "' is a " +
                                      std::string(shape_name(body.parts[p].shape.kind)) +
-                                     "; of a composite's parts a sphere, shell, box, plate or "
-                                     "mesh touches a plane (not yet a round part); those "
-                                     "that can: " +
+                                     "; of a composite's parts a sphere, shell, disk, ring, "
+                                     "cylinder, tube, cone, box, plate or mesh touches a "
+                                     "plane; those that can: " +
                                      touching_names());
       }
       return static_cast<int>(p);
@@ -61,19 +66,12 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
         body_field,
         "body '" + body.name + "' is a composite; " +
             (count == 0 ? std::string("none of its parts can touch a plane (of a composite's "
-                                      "parts a sphere, shell, box, plate or mesh touches; not "
-                                      "yet a round part)")
+                                      "parts a sphere, shell, disk, ring, cylinder, tube, cone, "
+                                      "box, plate or mesh touches)")
                         : "name the part that touches with `part:` (one contact per part): " +
                               touching_names()));
   }
   return found;
-}
-
-bool touches_a_plane(ShapeKind kind) {
-  return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
-         kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
-         kind == ShapeKind::Cone || kind == ShapeKind::Box || kind == ShapeKind::Plate ||
-         kind == ShapeKind::Mesh;
 }
 
 ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scenario& scenario) {
@@ -92,8 +90,8 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
     reader.fail_at_value(
         body_field, "body '" + contact.body + "' is a " + std::string(shape_name(body.shape.kind)) +
                         "; contact with a plane is for a sphere, shell, disk, ring, "
-                        "cylinder, tube, cone, box, plate or mesh, or a composite's sphere, "
-                        "shell, box, plate or mesh part");
+                        "cylinder, tube, cone, box, plate or mesh, or a composite's part of "
+                        "one of these shapes");
   } else if (const auto f = map.find("part")) {
     reader.fail_at_value(*f, "body '" + contact.body +
                                  "' is one shape, not a composite: it has "

@@ -71,16 +71,24 @@ ContactSurface contact_surface(const Shape& shape) {
   return surface;
 }
 
-// The surface of a composite's part (a sphere's or shell's, a box's, plate's or mesh's; the reader
-// admits only these) in the body's axes from the body's COM.
+// The surface of a composite's part in the body's axes from the body's COM.
 ContactSurface part_contact_surface(const BodySpec& body, const PartSpec& part) {
   ContactSurface surface = contact_surface(part.shape);
   // The surface is the part's from its own COM (a sphere's or box's centre; a mesh's vertices
-  // less its COM in its file's frame): a sphere's centre, and a polyhedron's vertices turned into
-  // the body's axes about the part's COM there.
+  // less its COM in its file's frame; a disk's or cylinder's centre; a cone's, a quarter of its
+  // height above its base): a sphere's centre, a polyhedron's vertices and a cone's apex and
+  // base centre turned into the body's axes about the part's COM there, and a round part's axes
+  // those of the part.
   const Vec3 centre_B = part.mass_properties.com - body.mass_properties.com;
   surface.centre_B = centre_B;
   for (Vec3& p : surface.vertices) p = centre_B + part.R_BP * p;
+  if (surface.kind == ContactSurface::Kind::Circle ||
+      surface.kind == ContactSurface::Kind::Cylinder ||
+      surface.kind == ContactSurface::Kind::Cone) {
+    surface.rim_centre_B = centre_B + part.R_BP * surface.rim_centre_B;
+    surface.axes_B = part.R_BP;
+    surface.turned = true;
+  }
   return surface;
 }
 

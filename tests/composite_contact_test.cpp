@@ -169,20 +169,10 @@ simulate: {{duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_ev
                                                           "wheelset");
   const double M = 2 * m + m_axle, I_axle = 2 * (m * R * R / 2);
   const double a = test::kG * std::sin(alpha) * M / (M + I_axle / (R * R));
-  const Vec3 down_W(std::cos(alpha), 0.0, -std::sin(alpha));
-  const Vec3 r0 = run.rows.front().states[0].r_G;
-  const double E0 = run.rows.front().quantities.total_energy;
   ASSERT_EQ(run.rows.size(), 101u);
-  for (const test::Row& row : run.rows) {
-    const BodyState& s = row.states[0];
-    EXPECT_NEAR((s.r_G - r0).dot(down_W), a * row.t * row.t / 2, 1e-10 * a) << "t " << row.t;
-    EXPECT_NEAR(s.v_G.dot(down_W), a * row.t, 1e-10 * a) << "t " << row.t;
-    // Rolling: it turns about its axle (y) at v / R, and about nothing else.
-    EXPECT_NEAR(s.omega_W.y(), a * row.t / R, 1e-10 * a / R) << "t " << row.t;
-    EXPECT_NEAR(s.omega_W.cross(Vec3::UnitY()).norm(), 0.0, 1e-10 * a / R) << "t " << row.t;
-    for (const ContactOutput& rail : row.extras.contacts) EXPECT_EQ(rail.mode, 2) << row.t;
-    EXPECT_NEAR(row.quantities.total_energy, E0, 1e-10 * M * a * a) << "t " << row.t;
-  }
+  // Rolling on both rails: it turns about its axle (y) at v / R, and about nothing else.
+  test::expect_rolls_down_from_rest(run, a, Vec3(std::cos(alpha), 0.0, -std::sin(alpha)),
+                                    Vec3::UnitY(), R, M);
 }
 
 TEST(CompositeContact, ARoundPartTurnedInItsBodyMovesAsTheSameShapeAlone) {

@@ -34,6 +34,22 @@ void expect_energy_never_rises(const ScenarioRun& run, double relative) {
   }
 }
 
+void expect_rolls_down_from_rest(const ScenarioRun& run, double a, const Vec3& down_W,
+                                 const Vec3& axle_W, double rolling_radius, double M) {
+  const Vec3 r0 = run.rows.front().states[0].r_G;
+  const double E0 = run.rows.front().quantities.total_energy;
+  const double spin_rate = a / rolling_radius;
+  for (const Row& row : run.rows) {
+    const BodyState& s = row.states[0];
+    EXPECT_NEAR((s.r_G - r0).dot(down_W), a * row.t * row.t / 2, 1e-10 * a) << "t " << row.t;
+    EXPECT_NEAR(s.v_G.dot(down_W), a * row.t, 1e-10 * a) << "t " << row.t;
+    EXPECT_NEAR(s.omega_W.dot(axle_W), spin_rate * row.t, 1e-10 * spin_rate) << "t " << row.t;
+    EXPECT_NEAR(s.omega_W.cross(axle_W).norm(), 0.0, 1e-10 * spin_rate) << "t " << row.t;
+    for (const ContactOutput& contact : row.extras.contacts) EXPECT_EQ(contact.mode, 2) << row.t;
+    EXPECT_NEAR(row.quantities.total_energy, E0, 1e-10 * M * a * a) << "t " << row.t;
+  }
+}
+
 std::vector<double> upward_zero_crossings(const std::vector<double>& t,
                                           const std::vector<double>& x,
                                           const std::vector<double>& rate) {

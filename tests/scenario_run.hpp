@@ -51,6 +51,13 @@ ScenarioRun run_scenario(Scenario scenario);
 // and friction never add energy.
 void expect_energy_never_rises(const ScenarioRun& run, double relative);
 
+// The first body rolling down a plane from rest at the closed form's acceleration a along down_W:
+// at each row its travel a t^2 / 2 and speed a t, its turn about axle_W alone at v /
+// rolling_radius, every contact rolling (mode 2), E conserved; each to 1e-10 of the closed form's
+// values (runs at rtol 1e-12: their error is ~1e-12 of them). M is the whole mass.
+void expect_rolls_down_from_rest(const ScenarioRun& run, double a, const Vec3& down_W,
+                                 const Vec3& axle_W, double rolling_radius, double M);
+
 // Times where x(t) crosses zero upwards, from rows (t, x, x') by cubic Hermite interpolation on x
 // and its rate (error ~ h^4 x'''' / 384: below 1e-12 of a period at 2000 rows a period).
 std::vector<double> upward_zero_crossings(const std::vector<double>& t,

@@ -78,6 +78,8 @@ function partGeometry(part, notes, bodyName) {
     }
     case 'ring':
       return new THREE.TorusGeometry(part.radius, 0.03 * part.radius, 12, seg);
+    case 'torus':
+      return new THREE.TorusGeometry(part.radius, part.tube_radius, Math.max(12, seg / 2), seg);
     case 'rod':
       return new THREE.CylinderGeometry(0.01 * part.length, 0.01 * part.length, part.length, 12)
         .rotateZ(Math.PI / 2);

@@ -25,6 +25,9 @@ struct ContactPoint {
   double radius = 0.0;  // Lowest: the sphere's; Rim: the rim's (m)
   // Rim: the rim's axis (body axes): the body's z but for a composite's turned part.
   Vec3 axis_B = Vec3::UnitZ();
+  // Rim: a torus's tube (m): the point is this much further along -n (fixed in the world, so
+  // its rate is the rim point's).
+  double tube = 0.0;
 };
 
 // The body turned by R_WB and turning at omega_W over a plane of unit normal n_W.
@@ -58,6 +61,7 @@ void calc_contact_offset(const ContactPoint& point, const Vec3& n_W, const Mat3O
       const V3 w_unit = w / length;
       const V3 centre_W = R_WB * point.p_B.cast<S>();
       p_GP_W = centre_W - point.radius * w_unit;
+      if (point.tube > 0.0) p_GP_W -= point.tube * n;
       p_GP_rate_W =
           omega_W.cross(centre_W) - point.radius * (w_rate - w_unit.dot(w_rate) * w_unit) / length;
       return;

@@ -33,6 +33,9 @@ struct ContactSurface {
   // Otherwise the body's own axes and COM (`turned` false).
   Mat3 axes_B = Mat3::Identity();
   bool turned = false;
+  // m, a torus (kind Circle): its surface is the points within this of its centre circle, so
+  // what touches is the circle's point that a ring would touch, this much further down.
+  double tube_radius = 0.0;
 };
 
 struct PlaneContact {

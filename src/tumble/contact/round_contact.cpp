@@ -33,6 +33,7 @@ RoundEnds round_ends(const ContactSurface& surface) {
   ends.face_inner_radius = surface.face_inner_radius;
   ends.axes_B = surface.axes_B;
   ends.turned = surface.turned;
+  ends.tube = surface.tube_radius;
   switch (surface.kind) {
     case ContactSurface::Kind::Cone:
       ends.centre_B = {surface.vertices[0], surface.rim_centre_B};
@@ -125,6 +126,17 @@ Vec3 rim_point(const RoundEnds& ends, int k, const Vec3& u_B) {
   return ends.centre_B[i] + ends.radius[i] * u_B;
 }
 
+Vec3 surface_point(const RoundEnds& ends, int k, const Vec3& u_B, const Vec3& n_B) {
+  if (!(ends.tube > 0.0)) return rim_point(ends, k, u_B);
+  return rim_point(ends, k, u_B) - ends.tube * n_B;
+}
+
+Vec3 surface_point_rate(const RoundEnds& ends, const Vec3& rim_rate_B, const Vec3& n_B,
+                        const Vec3& omega_B) {
+  if (!(ends.tube > 0.0)) return rim_rate_B;
+  return rim_rate_B - ends.tube * n_B.cross(omega_B);
+}
+
 RoundPartPoints round_part_points(const RoundEnds& ends, RoundPart part, const Vec3& n_B,
                                   const Vec3& omega_B, const Vec3& rim_direction_B) {
   RoundPartPoints p;
@@ -136,14 +148,14 @@ RoundPartPoints round_part_points(const RoundEnds& ends, RoundPart part, const V
     case RoundPart::None:
     case RoundPart::EndA:
     case RoundPart::EndB:
-      p.points_B[0] = rim_point(ends, k, u);
-      p.rates_B[0] = r * u_rate;
+      p.points_B[0] = surface_point(ends, k, u, n_B);
+      p.rates_B[0] = surface_point_rate(ends, r * u_rate, n_B, omega_B);
       p.count = 1;
       break;
     case RoundPart::Side:
       for (std::size_t e = 0; e < 2; ++e) {
-        p.points_B[e] = rim_point(ends, static_cast<int>(e), u);
-        p.rates_B[e] = ends.radius[e] * u_rate;
+        p.points_B[e] = surface_point(ends, static_cast<int>(e), u, n_B);
+        p.rates_B[e] = surface_point_rate(ends, ends.radius[e] * u_rate, n_B, omega_B);
       }
       p.count = 2;
       p.reference_B = 0.5 * (p.points_B[0] + p.points_B[1]);
@@ -155,11 +167,13 @@ RoundPartPoints round_part_points(const RoundEnds& ends, RoundPart part, const V
       for (std::size_t j = 0; j < 3; ++j) {
         const double angle =
             std::numbers::pi / 2 + 2 * std::numbers::pi * static_cast<double>(j) / 3;
-        p.points_B[j] =
-            rim_point(ends, k, ends_plane_direction(ends, std::cos(angle), std::sin(angle)));
+        p.points_B[j] = surface_point(
+            ends, k, ends_plane_direction(ends, std::cos(angle), std::sin(angle)), n_B);
       }
       p.count = 3;
-      p.reference_B = ends.centre_B[static_cast<std::size_t>(k)];
+      p.reference_B = ends.tube > 0.0
+                          ? Vec3(ends.centre_B[static_cast<std::size_t>(k)] - ends.tube * n_B)
+                          : ends.centre_B[static_cast<std::size_t>(k)];
       p.spin_radius = face_spin_radius(r, ends.face_inner_radius);
       return p;
   }

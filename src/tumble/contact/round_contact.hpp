@@ -34,6 +34,7 @@ struct RoundEnds {
   // third. The body's own (`turned` false) but for a composite's part.
   Mat3 axes_B = Mat3::Identity();
   bool turned = false;
+  double tube = 0.0;  // m: a torus's tube about its one rim (0: the rim itself)
 };
 
 RoundEnds round_ends(const ContactSurface& surface);
@@ -83,8 +84,14 @@ Vec3 rim_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& previous_
 void rim_direction_and_rate(const RoundEnds& ends, const Vec3& n_B, const Vec3& omega_B,
                             const Vec3& previous_B, Vec3& u_B, Vec3& u_rate_B);
 
-// The rim point of end k (0: A, 1: B) in direction u_B (unit, body x-y plane).
+// The rim point of end k (0: A, 1: B) in direction u_B (unit, in the ends' plane).
 Vec3 rim_point(const RoundEnds& ends, int k, const Vec3& u_B);
+// The surface's point there, lowest along -n_B: the rim point; a torus's, its tube's radius
+// further along -n_B. And that point's motion over the body from the rim point's (rim_rate_B),
+// the body turning at omega_B (the normal turns in body axes at n_B x omega_B).
+Vec3 surface_point(const RoundEnds& ends, int k, const Vec3& u_B, const Vec3& n_B);
+Vec3 surface_point_rate(const RoundEnds& ends, const Vec3& rim_rate_B, const Vec3& n_B,
+                        const Vec3& omega_B);
 
 // The points of `part` on a plane of normal n_B (unit, body axes), the body turning at omega_B;
 // `rim_direction_B` is the rim points' direction where the part holds them.

@@ -31,7 +31,7 @@ class RoundOnPlane final : public ContactPair {
     const RoundEnds ends = round_ends(surface);
     Vec3 u = Vec3::UnitX();
     const int end = lower_end(ends, n_B, u);
-    return rim_point(ends, end, u);
+    return surface_point(ends, end, u, n_B);
   }
   Vec3 lowest_point_rate_B(const ContactSurface& surface, const Vec3& n_B,
                            const Vec3& omega_B) const override {
@@ -41,20 +41,22 @@ class RoundOnPlane final : public ContactPair {
     const double r = ends.radius[static_cast<std::size_t>(lower_end(ends, n_B, u))];
     double projected = 0.0;
     lowest_rim_direction(ends, n_B, projected);
-    if (projected == 0.0 || r == 0.0) return Vec3::Zero();
+    if (projected == 0.0 || r == 0.0) return surface_point_rate(ends, Vec3::Zero(), n_B, omega_B);
     // u = -P n / |P n| with P the projection on the ends' plane: u' = -(1 - u u^T) P n' / |P n|.
     const Vec3 projected_rate = in_ends_plane(ends, n_rate_B);
     const Vec3 u_rate = -(projected_rate - u * u.dot(projected_rate)) / projected;
-    return r * u_rate;
+    return surface_point_rate(ends, r * u_rate, n_B, omega_B);
   }
   double size(const ContactSurface& surface) const override {
     double size = 0.0;
     const RoundEnds ends = round_ends(surface);
     for (std::size_t k = 0; k < 2; ++k) {
       // The farthest rim point from the COM: on the body's own axis, the rim's centre is on the
-      // rim's axis; a composite's part may have it anywhere, up to |c| + r.
-      size = std::max(size, ends.turned ? ends.centre_B[k].norm() + ends.radius[k]
-                                        : std::hypot(ends.radius[k], ends.centre_B[k].norm()));
+      // rim's axis; a composite's part may have it anywhere, up to |c| + r. A torus's surface
+      // reaches its tube's radius beyond.
+      size = std::max(size, (ends.turned ? ends.centre_B[k].norm() + ends.radius[k]
+                                         : std::hypot(ends.radius[k], ends.centre_B[k].norm())) +
+                                ends.tube);
     }
     for (const Vec3& p : surface.vertices) size = std::max(size, p.norm());  // a cone's apex
     return size;
@@ -67,7 +69,7 @@ class RoundOnPlane final : public ContactPair {
       t = std::min(t, ends.radius[k] == 0.0  // a cone's apex
                           ? point_time_to_depth(contact, motion, ends.centre_B[k], turning, depth)
                           : circle_time_to_depth(contact, motion, ends.centre_B[k], ends.axes_B,
-                                                 ends.radius[k], turning, depth));
+                                                 ends.radius[k], turning, depth - ends.tube));
     }
     return t;
   }
@@ -82,7 +84,7 @@ class RoundOnPlane final : public ContactPair {
     // the body, whatever the tilt.
     const bool apex_down =
         ends.radius[0] == 0.0 && !ends.one_rim && height_of(ends.centre_B[0]) <= within;
-    if (apex_down && height_of(rim_point(ends, 1, u_B)) > within) {
+    if (apex_down && height_of(surface_point(ends, 1, u_B, n_B)) > within) {
       point.kind = ContactPoint::Kind::Material;
       point.p_B = ends.centre_B[0];
       return {};
@@ -93,7 +95,7 @@ class RoundOnPlane final : public ContactPair {
     }
     int ends_down = 0, end = 0;
     for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) {
-      if (height_of(rim_point(ends, k, u_B)) <= within) {
+      if (height_of(surface_point(ends, k, u_B, n_B)) <= within) {
         ++ends_down;
         end = k;
       }
@@ -106,6 +108,7 @@ class RoundOnPlane final : public ContactPair {
     point.p_B = ends.centre_B[k];
     point.axis_B = ends.axes_B.col(2);
     point.radius = ends.radius[k];
+    point.tube = ends.tube;
     point.kind = point.radius > 0.0 ? ContactPoint::Kind::Rim : ContactPoint::Kind::Material;
     return {};
   }
@@ -133,16 +136,19 @@ class RoundOnPlane final : public ContactPair {
     if (!is_end(status.round_part)) return true;
     const int end = end_of(status.round_part);
     const double radius = ends.radius[static_cast<std::size_t>(end)];
-    // The rim point's direction u (part.points_B[0] = C + r u): the lowest point, to ~1e-12.
+    // The rim point's direction u (part.points_B[0] = C + r u, a torus's less its tube along
+    // n): the lowest point, to ~1e-12.
     const Vec3& centre = ends.centre_B[static_cast<std::size_t>(end)];
-    const Vec3 u = radius > 0.0 ? Vec3((part.points_B[0] - centre) / radius)
+    const Vec3 rim =
+        ends.tube > 0.0 ? Vec3(part.points_B[0] + ends.tube * now.n_B) : part.points_B[0];
+    const Vec3 u = radius > 0.0 ? Vec3((rim - centre) / radius)
                                 : rim_direction(ends, now.n_B, status.rim_direction_B);
     if (radius > 0.0) {
-      now.support.p_GC_B = rim_point(ends, end, -u);
+      now.support.p_GC_B = surface_point(ends, end, -u, now.n_B);
       now.support.height = 2.0 * radius * tilt_sine(ends, now.n_B) - status.landing_height;
     }
     if (ends.one_rim) return true;
-    const Vec3 other = rim_point(ends, 1 - end, u);
+    const Vec3 other = surface_point(ends, 1 - end, u, now.n_B);
     const double other_height = v.height(other);
     if (radius == 0.0 || other_height <= now.support.height) {
       now.support.p_GC_B = other;
@@ -156,7 +162,7 @@ class RoundOnPlane final : public ContactPair {
     const RoundEnds ends = round_ends(v.surface());
     double projected = 0.0;
     const Vec3 u = lowest_rim_direction(ends, v.now.n_B, projected);
-    for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) watch(rim_point(ends, k, u));
+    for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) watch(surface_point(ends, k, u, v.now.n_B));
   }
 
   double support_margin(const PairView& v, int& side) const override {
@@ -206,8 +212,8 @@ class RoundOnPlane final : public ContactPair {
     std::array<bool, 2> low{}, face{};
     for (int k = ends.one_rim ? 1 : 0; k < 2; ++k) {
       const auto e = static_cast<std::size_t>(k);
-      low[e] = touches(rim_point(ends, k, u));
-      face[e] = low[e] && ends.radius[e] > 0.0 && touches(rim_point(ends, k, -u));
+      low[e] = touches(surface_point(ends, k, u, n_B));
+      face[e] = low[e] && ends.radius[e] > 0.0 && touches(surface_point(ends, k, -u, n_B));
     }
     if (face[1]) {
       status.round_part = RoundPart::FaceB;
@@ -259,7 +265,10 @@ class RoundOnPlane final : public ContactPair {
       case RoundPart::FaceB: {
         if (settle({})) return true;
         tip(v, 0);  // onto the rim where the CoP went (the face's forces, in v.now)
-        const SurfacePoint centre{ends.centre_B[static_cast<std::size_t>(end_of(part))]};
+        const SurfacePoint centre{
+            ends.tube > 0.0
+                ? Vec3(ends.centre_B[static_cast<std::size_t>(end_of(part))] - ends.tube * v.n_B())
+                : ends.centre_B[static_cast<std::size_t>(end_of(part))]};
         return settle(one(centre));
       }
       case RoundPart::EndA:
@@ -321,7 +330,7 @@ class RoundOnPlane final : public ContactPair {
     // The rim point it touches at (not the other end's, which may be as low).
     const RoundEnds ends = round_ends(v.surface());
     const Vec3 u = rim_direction(ends, v.n_B(), v.status.rim_direction_B);
-    return v.height(rim_point(ends, end_of(part), u));
+    return v.height(surface_point(ends, end_of(part), u, v.n_B()));
   }
 
   bool follows_direction(const PairView& v) const override {
@@ -345,8 +354,11 @@ class RoundOnPlane final : public ContactPair {
     Vec3 u = Vec3::UnitX(), u_rate = Vec3::Zero();
     rim_direction_and_rate(ends, v.n_B(), v.motion.velocity.head<3>(), v.status.rim_direction_B, u,
                            u_rate);
-    return {SurfacePoint{rim_point(ends, 0, u), ends.radius[0] * u_rate},
-            SurfacePoint{rim_point(ends, 1, u), ends.radius[1] * u_rate}};
+    const Vec3 n_B = v.n_B(), omega_B = v.motion.velocity.head<3>();
+    return {SurfacePoint{surface_point(ends, 0, u, n_B),
+                         surface_point_rate(ends, ends.radius[0] * u_rate, n_B, omega_B)},
+            SurfacePoint{surface_point(ends, 1, u, n_B),
+                         surface_point_rate(ends, ends.radius[1] * u_rate, n_B, omega_B)}};
   }
 
   // A round body on its side or a face tips onto the end of the side (side 0: end A's rim point,

@@ -11,7 +11,7 @@
 namespace tumble {
 namespace {
 
-constexpr std::array<std::pair<ShapeKind, std::string_view>, 12> kShapeNames = {{
+constexpr std::array<std::pair<ShapeKind, std::string_view>, 13> kShapeNames = {{
     {ShapeKind::Point, "point"},
     {ShapeKind::Rod, "rod"},
     {ShapeKind::Ring, "ring"},
@@ -24,6 +24,7 @@ constexpr std::array<std::pair<ShapeKind, std::string_view>, 12> kShapeNames = {
     {ShapeKind::Cone, "cone"},
     {ShapeKind::Plate, "plate"},
     {ShapeKind::Mesh, "mesh"},
+    {ShapeKind::Torus, "torus"},
 }};
 
 using inertia_detail::format_number;
@@ -83,6 +84,14 @@ void check_dimensions(const Shape& shape) {
       return;
     case ShapeKind::Mesh:
       if (shape.mesh_file.empty()) throw InertiaError("mesh needs a file (.obj or .stl)");
+      return;
+    case ShapeKind::Torus:
+      require_positive(shape, "radius", shape.radius);
+      require_positive(shape, "tube_radius", shape.tube_radius);
+      if (!(shape.tube_radius < shape.radius)) {
+        throw InertiaError("torus tube_radius " + format_number(shape.tube_radius) +
+                           " must be less than its radius " + format_number(shape.radius));
+      }
       return;
   }
 }
@@ -154,6 +163,8 @@ double shape_measure(const Shape& shape) {
       return shape.size.x() * shape.size.y();
     case ShapeKind::Mesh:
       return mesh_volume(load_closed_mesh(shape));
+    case ShapeKind::Torus:  // Pappus: the tube's section times the path of its centre
+      return std::numbers::pi * shape.tube_radius * shape.tube_radius * 2.0 * std::numbers::pi * R;
   }
   return 0.0;
 }
@@ -228,6 +239,14 @@ MassProperties shape_mass_properties(const Shape& shape, double mass) {
       mp = mesh_mass_properties(mesh, density);
       mp.mass = M;  // exactly the given mass, not rho V with its round-off
       mp.com = Vec3::Zero();
+      break;
+    }
+    case ShapeKind::Torus: {
+      // A solid torus: about its axis M (R^2 + 3 r^2 / 4), about a diameter M (R^2 / 2 +
+      // 5 r^2 / 8) (the tube's disks of radius r, each at R from the axis).
+      const double r = shape.tube_radius;
+      const double transverse = M * (R * R / 2.0 + 5.0 * r * r / 8.0);
+      mp.inertia_about_com = diagonal(transverse, transverse, M * (R * R + 3.0 * r * r / 4.0));
       break;
     }
   }

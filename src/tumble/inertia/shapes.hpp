@@ -1,7 +1,8 @@
 #pragma once
 // The shapes of the scenario contract, each with its frame at the COM and its axis of symmetry z
 // (a rod lies along x; a plate in the x-y plane; a cone has its base at z = -h/4 and its apex at
-// z = 3h/4). Closed forms of the chapter's table in section 6.7.2.
+// z = 3h/4; a torus's centre circle lies in the x-y plane). Closed forms of the chapter's table in
+// section 6.7.2.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,13 +23,15 @@ enum class ShapeKind {
   Box,
   Cone,
   Plate,
-  Mesh
+  Mesh,
+  Torus
 };
 
 struct Shape {
   ShapeKind kind = ShapeKind::Point;
-  double length = 0.0;        // m: rod, cylinder, tube
-  double radius = 0.0;        // m: ring, disk, cylinder, sphere, shell, cone
+  double length = 0.0;  // m: rod, cylinder, tube
+  double radius = 0.0;  // m: ring, disk, cylinder, sphere, shell, cone; a torus's centre circle
+  double tube_radius = 0.0;   // m: torus, its tube (less than its radius)
   double inner_radius = 0.0;  // m: tube
   double outer_radius = 0.0;  // m: tube
   double height = 0.0;        // m: cone
@@ -40,8 +43,8 @@ std::string_view shape_name(ShapeKind kind);
 std::optional<ShapeKind> shape_kind_from_name(std::string_view name);
 
 // The measure that a density multiplies to give the mass: volume (m^3) of the solids (cylinder,
-// tube, sphere, box, cone, mesh), area (m^2) of the surfaces (disk, plate, shell), length (m) of
-// the curves (rod, ring). A point has none (0): it needs a mass.
+// tube, sphere, box, cone, mesh, torus), area (m^2) of the surfaces (disk, plate, shell), length
+// (m) of the curves (rod, ring). A point has none (0): it needs a mass.
 double shape_measure(const Shape& shape);
 
 // Mass properties of a uniform shape of the given mass, in the shape's frame: com = 0 and the

@@ -42,6 +42,8 @@ double part_radius(const AnimationPart& part) {
       return std::max(std::hypot(s.radius, 0.25 * s.height), 0.75 * s.height);
     case ShapeKind::Mesh:
       return std::max(part.box_min.norm(), part.box_max.norm());
+    case ShapeKind::Torus:
+      return s.radius + s.tube_radius;
     case ShapeKind::Point:
       return 0.0;
   }
@@ -176,10 +178,10 @@ void append_part(std::string& json, const AnimationPart& part) {
       }
       break;
     default:
-      json +=
-          fmt::format(R"(,"radius":{},"length":{},"inner_radius":{},"outer_radius":{},"height":{})",
-                      number(s.radius), number(s.length), number(s.inner_radius),
-                      number(s.outer_radius), number(s.height));
+      json += fmt::format(
+          R"(,"radius":{},"length":{},"inner_radius":{},"outer_radius":{},"height":{},"tube_radius":{})",
+          number(s.radius), number(s.length), number(s.inner_radius), number(s.outer_radius),
+          number(s.height), number(s.tube_radius));
   }
   json += '}';
 }

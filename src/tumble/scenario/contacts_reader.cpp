@@ -1,7 +1,7 @@
 // `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
 // The body must be of a shape whose contact with a plane tumble resolves: a sphere or shell, a
-// round body (disk, ring, cylinder, tube, cone) or a polyhedron (docs/scenario.md, Contacts), or
-// a composite whose touching part is one of these.
+// round body (disk, ring, torus, cylinder, tube, cone) or a polyhedron (docs/scenario.md,
+// Contacts), or a composite whose touching part is one of these.
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -17,7 +17,7 @@ bool touches_a_plane(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
          kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
          kind == ShapeKind::Cone || kind == ShapeKind::Box || kind == ShapeKind::Plate ||
-         kind == ShapeKind::Mesh;
+         kind == ShapeKind::Mesh || kind == ShapeKind::Torus;
 }
 
 // Of a composite's parts, those that touch a plane: every shape that touches one alone (a
@@ -46,8 +46,8 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
         reader.fail_at_value(*f, "part '" + name + "' of body '" + body.name + "' is a " +
                                      std::string(shape_name(body.parts[p].shape.kind)) +
                                      "; of a composite's parts a sphere, shell, disk, ring, "
-                                     "cylinder, tube, cone, box, plate or mesh touches a "
-                                     "plane; those that can: " +
+                                     "torus, cylinder, tube, cone, box, plate or mesh "
+                                     "touches a plane; those that can: " +
                                      touching_names());
       }
       return static_cast<int>(p);
@@ -66,8 +66,8 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
         body_field,
         "body '" + body.name + "' is a composite; " +
             (count == 0 ? std::string("none of its parts can touch a plane (of a composite's "
-                                      "parts a sphere, shell, disk, ring, cylinder, tube, cone, "
-                                      "box, plate or mesh touches)")
+                                      "parts a sphere, shell, disk, ring, torus, cylinder, tube, "
+                                      "cone, box, plate or mesh touches)")
                         : "name the part that touches with `part:` (one contact per part): " +
                               touching_names()));
   }
@@ -89,7 +89,7 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   } else if (!touches_a_plane(body.shape.kind)) {
     reader.fail_at_value(
         body_field, "body '" + contact.body + "' is a " + std::string(shape_name(body.shape.kind)) +
-                        "; contact with a plane is for a sphere, shell, disk, ring, "
+                        "; contact with a plane is for a sphere, shell, disk, ring, torus, "
                         "cylinder, tube, cone, box, plate or mesh, or a composite's part of "
                         "one of these shapes");
   } else if (const auto f = map.find("part")) {

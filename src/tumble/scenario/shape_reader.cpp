@@ -16,10 +16,10 @@ namespace {
 // An orientation matrix must be a rotation to this tolerance (max |R^T R - I| and |det R - 1|).
 constexpr double kRotationTolerance = 1e-9;
 
-const std::vector<ShapeKind> kAllShapes = {ShapeKind::Point,  ShapeKind::Rod,      ShapeKind::Ring,
-                                           ShapeKind::Disk,   ShapeKind::Cylinder, ShapeKind::Tube,
-                                           ShapeKind::Sphere, ShapeKind::Shell,    ShapeKind::Box,
-                                           ShapeKind::Cone,   ShapeKind::Plate,    ShapeKind::Mesh};
+const std::vector<ShapeKind> kAllShapes = {
+    ShapeKind::Point, ShapeKind::Rod,    ShapeKind::Ring,  ShapeKind::Disk, ShapeKind::Cylinder,
+    ShapeKind::Tube,  ShapeKind::Sphere, ShapeKind::Shell, ShapeKind::Box,  ShapeKind::Cone,
+    ShapeKind::Plate, ShapeKind::Mesh,   ShapeKind::Torus};
 
 // What a density is per unit of: a curve's length, a surface's area, a solid's volume.
 std::string_view density_unit(ShapeKind kind) {
@@ -53,7 +53,11 @@ std::optional<std::string_view> synonym(std::string_view word) {
       {"sheet", "plate"},
       {"rectangle", "plate"},
       {"circle", "disk"},
-      {"disc", "disk"}};
+      {"disc", "disk"},
+      {"donut", "torus"},
+      {"doughnut", "torus"},
+      {"tyre", "torus"},
+      {"tire", "torus"}};
   for (const auto& [alias, name] : synonyms) {
     if (alias == word) return name;
   }
@@ -137,6 +141,19 @@ void read_dimensions(const Reader& reader, const MapReader& map, Shape& shape,
     case ShapeKind::Plate:
       shape.size = read_size(reader, map.require("size", "a plate's edges [a, b], m, > 0"), 2);
       return;
+    case ShapeKind::Torus: {
+      shape.radius = positive_length(reader, dimension("radius"));
+      const Field tube = dimension("tube_radius");
+      shape.tube_radius = positive_length(reader, tube);
+      if (!(shape.tube_radius < shape.radius)) {
+        reader.fail_at_value(
+            tube, fmt::format("tube_radius {} must be less than radius {} (the radius of the "
+                              "circle through the tube's centre): a torus whose tube reaches "
+                              "its axis has no hole",
+                              format_number(shape.tube_radius), format_number(shape.radius)));
+      }
+      return;
+    }
     case ShapeKind::Mesh: {
       const Field file = map.require("file", "a closed triangle mesh, .obj or .stl");
       const std::filesystem::path relative(reader.text(file));
@@ -158,7 +175,7 @@ void read_dimensions(const Reader& reader, const MapReader& map, Shape& shape,
 const std::vector<std::string>& dimension_keys(ShapeKind kind) {
   static const std::vector<std::string> none, length{"length"}, radius{"radius"},
       radius_length{"radius", "length"}, tube{"inner_radius", "outer_radius", "length"},
-      size{"size"}, cone{"radius", "height"}, file{"file"};
+      size{"size"}, cone{"radius", "height"}, file{"file"}, torus{"radius", "tube_radius"};
   switch (kind) {
     case ShapeKind::Point:
       return none;
@@ -180,13 +197,15 @@ const std::vector<std::string>& dimension_keys(ShapeKind kind) {
       return cone;
     case ShapeKind::Mesh:
       return file;
+    case ShapeKind::Torus:
+      return torus;
   }
   return none;
 }
 
 const std::vector<std::string>& all_dimension_keys() {
   static const std::vector<std::string> keys{"length", "radius", "inner_radius", "outer_radius",
-                                             "height", "size",   "file"};
+                                             "height", "size",   "file",         "tube_radius"};
   return keys;
 }
 

@@ -27,6 +27,14 @@ ContactSurface contact_surface(const Shape& shape) {
       // A ring lying flat touches along its rim only (its face's torsional friction).
       if (shape.kind == ShapeKind::Ring) surface.face_inner_radius = shape.radius;
       break;
+    case ShapeKind::Torus:
+      // Its centre circle, as a ring's rim, with its tube about it: lying flat it bears along
+      // that circle, as a ring does.
+      surface.kind = ContactSurface::Kind::Circle;
+      surface.radius = shape.radius;
+      surface.face_inner_radius = shape.radius;
+      surface.tube_radius = shape.tube_radius;
+      break;
     case ShapeKind::Cylinder:
     case ShapeKind::Tube:
       surface.kind = ContactSurface::Kind::Cylinder;

@@ -126,9 +126,13 @@ Vec3 rim_point(const RoundEnds& ends, int k, const Vec3& u_B) {
   return ends.centre_B[i] + ends.radius[i] * u_B;
 }
 
+Vec3 on_surface(const RoundEnds& ends, const Vec3& circle_point_B, const Vec3& n_B) {
+  if (!(ends.tube > 0.0)) return circle_point_B;
+  return circle_point_B - ends.tube * n_B;
+}
+
 Vec3 surface_point(const RoundEnds& ends, int k, const Vec3& u_B, const Vec3& n_B) {
-  if (!(ends.tube > 0.0)) return rim_point(ends, k, u_B);
-  return rim_point(ends, k, u_B) - ends.tube * n_B;
+  return on_surface(ends, rim_point(ends, k, u_B), n_B);
 }
 
 Vec3 surface_point_rate(const RoundEnds& ends, const Vec3& rim_rate_B, const Vec3& n_B,
@@ -171,9 +175,7 @@ RoundPartPoints round_part_points(const RoundEnds& ends, RoundPart part, const V
             ends, k, ends_plane_direction(ends, std::cos(angle), std::sin(angle)), n_B);
       }
       p.count = 3;
-      p.reference_B = ends.tube > 0.0
-                          ? Vec3(ends.centre_B[static_cast<std::size_t>(k)] - ends.tube * n_B)
-                          : ends.centre_B[static_cast<std::size_t>(k)];
+      p.reference_B = on_surface(ends, ends.centre_B[static_cast<std::size_t>(k)], n_B);
       p.spin_radius = face_spin_radius(r, ends.face_inner_radius);
       return p;
   }

@@ -86,9 +86,12 @@ void rim_direction_and_rate(const RoundEnds& ends, const Vec3& n_B, const Vec3& 
 
 // The rim point of end k (0: A, 1: B) in direction u_B (unit, in the ends' plane).
 Vec3 rim_point(const RoundEnds& ends, int k, const Vec3& u_B);
-// The surface's point there, lowest along -n_B: the rim point; a torus's, its tube's radius
-// further along -n_B. And that point's motion over the body from the rim point's (rim_rate_B),
-// the body turning at omega_B (the normal turns in body axes at n_B x omega_B).
+// The surface's point lowest along -n_B over a point of a rim (or an end's centre): that point
+// itself; a torus's, its tube's radius further along -n_B.
+Vec3 on_surface(const RoundEnds& ends, const Vec3& circle_point_B, const Vec3& n_B);
+// The surface's point over end k's rim point in direction u_B (on_surface of rim_point). And that
+// point's motion over the body from the rim point's (rim_rate_B), the body turning at omega_B (the
+// normal turns in body axes at n_B x omega_B).
 Vec3 surface_point(const RoundEnds& ends, int k, const Vec3& u_B, const Vec3& n_B);
 Vec3 surface_point_rate(const RoundEnds& ends, const Vec3& rim_rate_B, const Vec3& n_B,
                         const Vec3& omega_B);

@@ -266,9 +266,7 @@ class RoundOnPlane final : public ContactPair {
         if (settle({})) return true;
         tip(v, 0);  // onto the rim where the CoP went (the face's forces, in v.now)
         const SurfacePoint centre{
-            ends.tube > 0.0
-                ? Vec3(ends.centre_B[static_cast<std::size_t>(end_of(part))] - ends.tube * v.n_B())
-                : ends.centre_B[static_cast<std::size_t>(end_of(part))]};
+            on_surface(ends, ends.centre_B[static_cast<std::size_t>(end_of(part))], v.n_B())};
         return settle(one(centre));
       }
       case RoundPart::EndA:
@@ -351,10 +349,9 @@ class RoundOnPlane final : public ContactPair {
   // about its axis), and its rate.
   static std::array<SurfacePoint, 2> end_points(const PairView& v) {
     const RoundEnds ends = round_ends(v.surface());
-    Vec3 u = Vec3::UnitX(), u_rate = Vec3::Zero();
-    rim_direction_and_rate(ends, v.n_B(), v.motion.velocity.head<3>(), v.status.rim_direction_B, u,
-                           u_rate);
     const Vec3 n_B = v.n_B(), omega_B = v.motion.velocity.head<3>();
+    Vec3 u = Vec3::UnitX(), u_rate = Vec3::Zero();
+    rim_direction_and_rate(ends, n_B, omega_B, v.status.rim_direction_B, u, u_rate);
     return {SurfacePoint{surface_point(ends, 0, u, n_B),
                          surface_point_rate(ends, ends.radius[0] * u_rate, n_B, omega_B)},
             SurfacePoint{surface_point(ends, 1, u, n_B),

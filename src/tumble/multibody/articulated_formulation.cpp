@@ -268,8 +268,8 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
           w.D_inv.topLeftCorner(3, 3) = body.I_G_B_inv;
           w.D_inv.bottomRightCorner(3, 3) = Mat3::Identity() / body.mass;
         }
-        w.inertia_ready = true;
       }
+      w.inertia_ready = true;
       w.u = w.tau - w.pA;
       continue;
     }

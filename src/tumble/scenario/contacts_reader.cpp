@@ -13,6 +13,9 @@
 namespace tumble::scenario_reading {
 namespace {
 
+// The shapes that touch a plane, alone or as a composite's part (a part's sphere centre,
+// polyhedron vertices and round axes and centre are placed in the body like any point and
+// direction of it): all but a rod and a point.
 bool touches_a_plane(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
          kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
@@ -20,12 +23,9 @@ bool touches_a_plane(ShapeKind kind) {
          kind == ShapeKind::Mesh || kind == ShapeKind::Torus;
 }
 
-// Of a composite's parts, those that touch a plane: every shape that touches one alone (a
-// sphere's centre, a polyhedron's vertices and a round part's centre and axes are placed in the
-// body like any point and direction of it), not a rod or a point.
-bool part_touches_a_plane(ShapeKind kind) {
-  return touches_a_plane(kind);
-}
+// As the messages name them.
+constexpr const char* kTouchingShapes =
+    "a sphere, shell, disk, ring, torus, cylinder, tube, cone, box, plate or mesh";
 
 // The composite's part that touches: the one `part:` names, or its one part that can.
 int read_touching_part(const Reader& reader, const MapReader& map, const Field& body_field,
@@ -33,7 +33,7 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
   const auto touching_names = [&] {
     std::string names;
     for (const PartSpec& part : body.parts) {
-      if (!part_touches_a_plane(part.shape.kind)) continue;
+      if (!touches_a_plane(part.shape.kind)) continue;
       names += (names.empty() ? "" : ", ") + part.name;
     }
     return names.empty() ? std::string("none") : names;
@@ -42,13 +42,11 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
     const std::string name = reader.text(*f);
     for (std::size_t p = 0; p < body.parts.size(); ++p) {
       if (body.parts[p].name != name) continue;
-      if (!part_touches_a_plane(body.parts[p].shape.kind)) {
+      if (!touches_a_plane(body.parts[p].shape.kind)) {
         reader.fail_at_value(*f, "part '" + name + "' of body '" + body.name + "' is a " +
                                      std::string(shape_name(body.parts[p].shape.kind)) +
-                                     "; of a composite's parts a sphere, shell, disk, ring, "
-                                     "torus, cylinder, tube, cone, box, plate or mesh "
-                                     "touches a plane; those that can: " +
-                                     touching_names());
+                                     "; of a composite's parts " + kTouchingShapes +
+                                     " touches a plane; those that can: " + touching_names());
       }
       return static_cast<int>(p);
     }
@@ -57,7 +55,7 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
   }
   int found = -1, count = 0;
   for (std::size_t p = 0; p < body.parts.size(); ++p) {
-    if (!part_touches_a_plane(body.parts[p].shape.kind)) continue;
+    if (!touches_a_plane(body.parts[p].shape.kind)) continue;
     found = static_cast<int>(p);
     ++count;
   }
@@ -66,8 +64,8 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
         body_field,
         "body '" + body.name + "' is a composite; " +
             (count == 0 ? std::string("none of its parts can touch a plane (of a composite's "
-                                      "parts a sphere, shell, disk, ring, torus, cylinder, tube, "
-                                      "cone, box, plate or mesh touches)")
+                                      "parts ") +
+                              kTouchingShapes + " touches)"
                         : "name the part that touches with `part:` (one contact per part): " +
                               touching_names()));
   }
@@ -87,11 +85,10 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   if (!body.parts.empty()) {
     contact.part = read_touching_part(reader, map, body_field, body);
   } else if (!touches_a_plane(body.shape.kind)) {
-    reader.fail_at_value(
-        body_field, "body '" + contact.body + "' is a " + std::string(shape_name(body.shape.kind)) +
-                        "; contact with a plane is for a sphere, shell, disk, ring, torus, "
-                        "cylinder, tube, cone, box, plate or mesh, or a composite's part of "
-                        "one of these shapes");
+    reader.fail_at_value(body_field, "body '" + contact.body + "' is a " +
+                                         std::string(shape_name(body.shape.kind)) +
+                                         "; contact with a plane is for " + kTouchingShapes +
+                                         ", or a composite's part of one of these shapes");
   } else if (const auto f = map.find("part")) {
     reader.fail_at_value(*f, "body '" + contact.body +
                                  "' is one shape, not a composite: it has "

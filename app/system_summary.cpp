@@ -30,8 +30,13 @@ bool energy_changes(const Scenario& scenario) {
 
 bool external_moments_act(const Scenario& scenario) {
   if (scenario.gravity_W.squaredNorm() > 0.0 || !scenario.loads.empty() ||
-      !scenario.impulses.empty() || !scenario.contacts.empty()) {
+      !scenario.impulses.empty()) {
     return true;
+  }
+  // A plane is fixed; two bodies' contact is between bodies of the system (its impulses are
+  // equal and opposite, on one line through the contact point).
+  for (const ContactSpec& contact : scenario.contacts) {
+    if (contact.other_body.empty()) return true;
   }
   const auto grounded = [](const std::string& a, const std::string& b) {
     return a == kGroundName || b == kGroundName;

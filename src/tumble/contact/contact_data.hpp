@@ -50,6 +50,11 @@ struct ContactNow {
   // points whose rows the solve kept (the joint takes the rest of the load), and that point.
   double least_point_force = 0.0;
   Vec3 least_point_B = Vec3::Zero();
+  // A contact between two bodies: the normal (unit, world) from the other body's sphere towards
+  // this body's, and the reference point O (the midpoint of the spheres' nearest points) from
+  // the other body's COM, its axes. velocity_W is this body's point there less the other's.
+  Vec3 pair_normal_W = Vec3::UnitZ();
+  Vec3 other_reference_B = Vec3::Zero();
 };
 
 // One unknown of the contact forces and the constraint row that goes with it: the row is

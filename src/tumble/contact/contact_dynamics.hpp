@@ -35,6 +35,15 @@ struct BodyWrench {
   Vec6 wrench_B = Vec6::Zero();
 };
 
+// The wrench on a body (moment about its COM; force), in its axes, of a force F_W at its point
+// p_B and a pure moment M_W.
+inline Vec6 wrench_at(const Mat3& R_WB, const Vec3& p_B, const Vec3& F_W, const Vec3& M_W) {
+  const Vec3 F_B = R_WB.transpose() * F_W;
+  Vec6 wrench;
+  wrench << p_B.cross(F_B) + R_WB.transpose() * M_W, F_B;
+  return wrench;
+}
+
 class ContactDynamics {
  public:
   virtual ~ContactDynamics() = default;

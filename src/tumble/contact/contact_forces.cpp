@@ -28,15 +28,6 @@ namespace tumble {
 
 namespace {
 
-// A wrench (moment about the COM; force) in the body's axes, of a force F_W at P and a pure
-// moment M_W.
-Vec6 wrench_at(const Mat3& R_WB, const Vec3& p_B, const Vec3& F_W, const Vec3& M_W) {
-  const Vec3 F_B = R_WB.transpose() * F_W;
-  Vec6 wrench;
-  wrench << p_B.cross(F_B) + R_WB.transpose() * M_W, F_B;
-  return wrench;
-}
-
 // Responses below this fraction of the heaviest touching body's 1/m are round-off.
 constexpr double kRoundOffResponse = 1e-6;
 // Where redundant rows leave the forces open, a normal row's force counts 1e-6 of a friction
@@ -66,7 +57,9 @@ ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
     const PlaneContact& contact = contacts_[c];
     reserve_feature(s_.contacts[c].feature, contact.surface.vertices.size());
     pairs_.push_back(&contact_pair(contact.surface.kind));
-    const bool held = !dynamics_.moves_freely(contact.body);
+    // A pair of bodies has no rows in the force solve (sphere_pairs.cpp): it is apart, or meets
+    // in an impact.
+    const bool held = !contact.touches_a_body() && !dynamics_.moves_freely(contact.body);
     held_polyhedron_.push_back(held && pairs_.back()->held_point_by_point());
     any_held_ = any_held_ || held;
     heaviest = std::max(heaviest, bodies_[contact.body].mass);
@@ -98,6 +91,10 @@ PairView ContactSystem::view(std::size_t c) const {
 void ContactSystem::calc_contact_points() const {
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const PlaneContact& contact = contacts_[c];
+    if (contact.touches_a_body()) {
+      calc_pair_point(c);
+      continue;
+    }
     const ContactStatus& status = s_.contacts[c];
     const BodyMotion w = dynamics_.motion(contact.body);
     const Vec3& n = contact.normal_W;

@@ -16,15 +16,13 @@
 
 #include "tumble/contact/contact_system.hpp"
 
+#include "tumble/contact/contact_scales.hpp"
+
 #include "tumble/math/constraint_solve.hpp"
 
 namespace tumble {
 
 namespace {
-
-// Slip slower than this fraction of the contact's speed scale counts as none: events locate the
-// slip's zero to a few ulps of t, leaving ~1e-15 of the scale.
-constexpr double kSlipZero = 1e-9;
 
 // A slip that has grown is followed by its own direction down to this fraction of slip_zero
 // (still ~1e6 above the round-off of the velocities it is the difference of) while it keeps to
@@ -44,9 +42,6 @@ constexpr double kHoverStopWait = 1e-9;
 // last, this many in a row: a cascade that would not end (docs/design.md, "Painleve").
 constexpr double kCascadeGap = 1e-6;
 constexpr int kCascadeLandings = 1000;
-// Touchdowns whose bounce would rise less than this fraction of the contact's size settle
-// (restitution 0): the cascade of ever smaller bounces ends after finitely many.
-constexpr double kSettleHeight = 1e-6;
 // Impacts at one instant on one contact, at most: each takes energy out (or none, elastic), and
 // an impulse on one vertex drives another into the plane less each time.
 constexpr int kImpactRounds = 100;
@@ -57,10 +52,6 @@ constexpr int kImpactRounds = 100;
 // over the time scale (start_sliding could not see it grow, and the contact would be left with
 // no mode: apart, landing again at once).
 constexpr double kFrictionEdge = 1e-9;
-
-// An impact's work counts as none (not a gain) within this fraction of the kinetic energy: an
-// elastic impact's is zero up to round-off.
-constexpr double kWorkRoundOff = 1e-12;
 
 // A face's or an edge's support (N times the CoP's distance inside it) reaches zero where its
 // centre of pressure reaches a side (the body tips onto that side), or where N itself reaches
@@ -189,6 +180,10 @@ void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
     const ContactStatus& status = s_.contacts[c];
     const PlaneContact& contact = contacts_[c];
     g(base) = g(base + 1) = g(base + 2) = 1.0;
+    if (contact.touches_a_body()) {  // apart, its spheres' gap; they meet in impacts
+      g(base) = watched_height(c, now.support.height, now.support_normal_speed);
+      continue;
+    }
     // Apart, the point nearest to landing; touching, a polyhedron or a round body watches the
     // part that may land next.
     Vec3 landing_B = Vec3::Zero();
@@ -336,10 +331,9 @@ void ContactSystem::note_event_numbers(std::size_t first, const VecX& y) {
     // the same on both sides of it (a stopping slip's last trace, below slip_zero, aside).
     e.kinetic_energy_before = e.impact ? e.impact->kinetic_energy_before : kinetic_energy;
     e.kinetic_energy_after = e.impact ? e.impact->kinetic_energy_after : kinetic_energy;
-    e.normal_speed = now.velocity_W.dot(contacts_[e.contact].normal_W);
-    e.slip_speed =
-        (now.slip_W - contacts_[e.contact].normal_W * contacts_[e.contact].normal_W.dot(now.slip_W))
-            .norm();
+    const Vec3& n = normal_of(e.contact);
+    e.normal_speed = now.velocity_W.dot(n);
+    e.slip_speed = (now.slip_W - n * n.dot(now.slip_W)).norm();
   }
 }
 
@@ -704,6 +698,13 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
   ContactStatus& status = s_.contacts[c];
   switch (event_index % 3) {
     case 0:  // touchdown
+      if (contacts_[c].touches_a_body()) {
+        pair_impacts(c, t, y);
+        // The bodies' contacts with planes, in the speeds the impulses left (a ball rolling on a
+        // table, struck, slides).
+        classify_touching(t, y, true, "lifts off: an impact between bodies sends it away");
+        break;
+      }
       impact(c, t, y);
       // Left apart with a point at the plane moving into it (the impulse on one vertex of an
       // edge can drive the other down), it lands again at once, rather than a step later.
@@ -813,17 +814,11 @@ void ContactSystem::release_pulling_contacts(std::size_t handled, double t, VecX
   }
 }
 
-namespace {
-
-struct ContactScales {
-  double speed = 1.0, slip_zero = 0.0, settle_speed = 0.0, touching_height = 0.0,
-         landing_height = 0.0;
-};
-
 ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
                              const BodyState& s) {
   const double size = std::max(contact_size(contact.surface), 1e-300);
   ContactScales scales;
+  scales.size = size;
   scales.speed = std::max(
       {std::sqrt(gravity_W.norm() * size), s.v_G.norm() + s.omega_W.norm() * size, 1e-300});
   scales.slip_zero = kSlipZero * scales.speed;
@@ -835,13 +830,15 @@ ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
   return scales;
 }
 
-}  // namespace
-
 std::optional<ContactSystem::StartProblem> ContactSystem::start_problem(const VecX& y0) const {
   dynamics_.calc_motion(y0, true);
   calc_contact_points();
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const PlaneContact& contact = contacts_[c];
+    if (contact.touches_a_body()) {
+      if (std::optional<StartProblem> problem = pair_start_problem(c)) return problem;
+      continue;
+    }
     const ContactScales scales = contact_scales(contact, gravity_W_, dynamics_.state(contact.body));
     const ContactNow& now = d_.now[c];
     if (now.support.height < -scales.touching_height) {
@@ -871,7 +868,11 @@ void ContactSystem::begin(double t0, const VecX& y) {
   d_.onset_dydt.resize(y.size());
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const PlaneContact& contact = contacts_[c];
-    const ContactScales scales = contact_scales(contact, gravity_W_, dynamics_.state(contact.body));
+    const ContactScales scales =
+        contact.touches_a_body()
+            ? pair_contact_scales(contact, gravity_W_, dynamics_.state(contact.body),
+                                  dynamics_.state(contact.other_body))
+            : contact_scales(contact, gravity_W_, dynamics_.state(contact.body));
     ContactStatus& status = s_.contacts[c];
     set_apart(c);
     status.rim_direction_B = Vec3::UnitX();
@@ -885,9 +886,10 @@ void ContactSystem::begin(double t0, const VecX& y) {
     status.settle_speed = scales.settle_speed;
     status.touching_height = scales.touching_height;
     status.landing_height = scales.landing_height;
-    status.time_scale = std::max(contact_size(contact.surface), 1e-300) / scales.speed;
+    status.time_scale = scales.size / scales.speed;
   }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    if (contacts_[c].touches_a_body()) continue;  // a pair touching at the start is apart
     dynamics_.calc_motion(y_start, true);
     calc_contact_points();
     const ContactNow& now = d_.now[c];
@@ -905,16 +907,21 @@ void ContactSystem::begin(double t0, const VecX& y) {
 
 void ContactSystem::reclassify(double t, VecX& y, bool speeds_jumped) {
   const std::size_t first_new = s_.events.size();
+  classify_touching(t, y, speeds_jumped, "lifts off: the jump sends it away from the plane");
+  note_event_numbers(first_new, y);
+}
+
+void ContactSystem::classify_touching(double t, VecX& y, bool speeds_jumped,
+                                      const char* lifts_off) {
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode == ContactMode::Apart) continue;
     if (speeds_jumped && !still_touches_after_jump(c, y)) {
       set_apart(c);
-      note_contact(t, c, "lifts off: the jump sends it away from the plane");
+      note_contact(t, c, lifts_off);
       continue;
     }
     classify_contact(c, t, y);
   }
-  note_event_numbers(first_new, y);
 }
 
 bool ContactSystem::still_touches_after_jump(std::size_t c, const VecX& y) {

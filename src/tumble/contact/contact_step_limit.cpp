@@ -32,6 +32,10 @@ double ContactSystem::step_limit(double t, const VecX& y) const {
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode != ContactMode::Apart) continue;
     const PlaneContact& contact = contacts_[c];
+    if (contact.touches_a_body()) {
+      limit = std::min(limit, pair_time_to_depth(c));
+      continue;
+    }
     const BodyMotion w = dynamics_.motion(contact.body);
     const Vec3& n = contact.normal_W;
     const SurfaceMotion motion{w.r_G_W, w.R_WB, w.R_WB * w.velocity.tail<3>(),

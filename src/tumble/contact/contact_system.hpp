@@ -270,9 +270,31 @@ class ContactSystem {
   // After a jump of the speeds: whether a touching contact still touches (some of its points at
   // the plane and not leaving it); its feature or part becomes those points.
   bool still_touches_after_jump(std::size_t contact, const VecX& y);
+  // Each touching contact's mode again (reclassify's), noting `lifts_off` for one that a jump of
+  // the speeds sent away from its plane.
+  void classify_touching(double t, VecX& y, bool speeds_jumped, const char* lifts_off);
   // A held polyhedron's point p_B (least_point_B) leaves its feature: the feature becomes the
   // rest of its vertices, or none (apart).
   void drop_point(std::size_t contact, const Vec3& p_B);
+
+  // Contacts between two bodies' spheres (sphere_pairs.cpp): apart, or meeting in impacts.
+  // The pair's gap and its rate, the reference point O (the midpoint of the spheres' nearest
+  // points) on either body, their velocity there relative to each other and its tangential part
+  // (into d_.now[contact]), after the dynamics' calc_motion.
+  void calc_pair_point(std::size_t contact) const;
+  // The contact's normal (world, unit): a plane's, or a pair's from the other body's sphere to
+  // the body's (after calc_contact_points).
+  const Vec3& normal_of(std::size_t contact) const;
+  std::optional<StartProblem> pair_start_problem(std::size_t contact) const;
+  // While apart: the first time the gap could be the landing height deep (landing_bound.hpp),
+  // after a solve.
+  double pair_time_to_depth(std::size_t contact) const;
+  // The impacts at a pair's touchdown: one pair at a time, the touching pair that approaches
+  // fastest first, until no touching pair approaches (docs/scenario.md, "Bodies that touch").
+  void pair_impacts(std::size_t contact, double t, VecX& y);
+  // One pair's impulse: Newton's restitution on the normal motion, Coulomb on the tangential
+  // impulse; noted as an event.
+  void pair_impulse(std::size_t contact, double t, VecX& y);
 
   std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run
   std::vector<const ContactPair*> pairs_;   // per contact: its pair, from contact_pair()'s table

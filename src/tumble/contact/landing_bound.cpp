@@ -8,16 +8,15 @@
 
 namespace tumble {
 
-namespace {
-
-// The first t > 0 with c + b t - A t^2 / 2 = 0, for c > 0 (the height above the depth), b its
-// rate, A >= 0; in the form that keeps its digits when b^2 >> A c. A point already deeper has
-// crossed the plane where the event functions see it: it sets no bound.
 double first_root(double c, double b, double A) {
+  // In the form that keeps its digits when b^2 >> A c. A point already deeper has crossed the
+  // plane where the event functions see it: it sets no bound.
   if (!(c > 0.0)) return kNever;
   const double denominator = -b + std::sqrt(b * b + 2.0 * A * c);
   return denominator > 0.0 ? 2.0 * c / denominator : kNever;
 }
+
+namespace {
 
 // The circle's lowest point carried along by the velocity field, less A t^2 / 2, plus the depth:
 // concave in t.

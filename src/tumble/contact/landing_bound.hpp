@@ -38,6 +38,9 @@ double time_to_reach_depth(const PlaneContact& contact, const SurfaceMotion& mot
                            double depth);
 
 inline constexpr double kNever = std::numeric_limits<double>::infinity();
+// The first t > 0 with c + b t - A t^2 / 2 = 0, for c > 0 (a height above the depth), b its
+// rate, A >= 0 (how fast the rate can turn down); kNever where there is none, or where c <= 0.
+double first_root(double c, double b, double A);
 // The bound for one point of the body (p_B, body axes from the COM); for the COM less `radius`
 // along the normal (a sphere's lowest point, which turning does not move); for a circle of the
 // body about the third of axes_B (centre_B, radius: a rim; axes_B the body's own but for a

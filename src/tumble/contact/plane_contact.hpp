@@ -38,10 +38,19 @@ struct ContactSurface {
   double tube_radius = 0.0;
 };
 
+// A contact between two bodies' surfaces (`type: bodies`) is one of these too, so that every
+// contact has its place in the model's list, its columns, events and ledger entry: `body`'s
+// surface touches `other_body`'s other_surface, and point_W and normal_W are unused. For now both
+// surfaces are spheres, and the pair is apart or meets in an impact (sphere_pairs.cpp).
 struct PlaneContact {
+  static constexpr std::size_t kNoOtherBody = static_cast<std::size_t>(-1);
+
   std::string name;
   std::size_t body = 0;
   ContactSurface surface;
+  std::size_t other_body = kNoOtherBody;
+  ContactSurface other_surface;
+  bool touches_a_body() const { return other_body != kNoOtherBody; }
   Vec3 point_W = Vec3::Zero();    // a point of the plane, m
   Vec3 normal_W = Vec3::UnitZ();  // unit, out of the plane towards the body
   double friction = 0.0;          // Coulomb mu, >= 0

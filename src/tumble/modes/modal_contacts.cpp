@@ -34,6 +34,25 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
   std::vector<ModalContact> touching;
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     const PlaneContact& contact = model.contacts[c];
+    if (contact.touches_a_body()) {
+      // Two bodies' spheres: apart, no force; touching, they would press, which only impacts
+      // model for now.
+      const auto centre = [&](std::size_t body, const ContactSurface& sphere) {
+        return Vec3(r_G_W[body] + R_WB[body] * sphere.centre_B);
+      };
+      const double gap = (centre(contact.body, contact.surface) -
+                          centre(contact.other_body, contact.other_surface))
+                             .norm() -
+                         contact.surface.radius - contact.other_surface.radius;
+      if (gap >
+          kTouchingHeightPerSize * std::min(contact.surface.radius, contact.other_surface.radius)) {
+        continue;
+      }
+      throw NotSteady(fmt::format(
+          "contact {}: its two bodies touch; tumble modes takes bodies that touch planes, and two "
+          "bodies only apart (contact that lasts between bodies is not built yet)",
+          contact.name));
+    }
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);
     if (lowest.height > touching_height(contact.surface)) {
       continue;  // apart: no force, and none from a small change

@@ -377,6 +377,7 @@ AnimationScene make_animation_scene(const Scenario& scenario) {
   }
   // One plane per distinct plane: bodies racing down one ramp each have a contact with it.
   for (const ContactSpec& contact : scenario.contacts) {
+    if (!contact.other_body.empty()) continue;  // two bodies: their shapes are drawn already
     const Vec3& n = contact.plane_normal_W;
     const double offset = n.dot(contact.plane_point_W);
     const bool drawn = std::any_of(scene.planes.begin(), scene.planes.end(), [&](const auto& p) {

@@ -1,7 +1,9 @@
-// `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}.
-// The body must be of a shape whose contact with a plane tumble resolves: a sphere or shell, a
-// round body (disk, ring, torus, cylinder, tube, cone) or a polyhedron (docs/scenario.md,
-// Contacts), or a composite whose touching part is one of these.
+// `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}
+// and {type: bodies, bodies: [a, b], friction:, restitution:}. On a plane the body must be of a
+// shape whose contact with a plane tumble resolves: a sphere or shell, a round body (disk, ring,
+// torus, cylinder, tube, cone) or a polyhedron (docs/scenario.md, Contacts), or a composite whose
+// touching part is one of these. Two bodies touch at their spheres (for now: a sphere or shell
+// each, or a composite's sphere part).
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -72,12 +74,104 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
   return found;
 }
 
+// Whether the shape touches another body's: for now a sphere's or a shell's surface.
+bool touches_a_body(ShapeKind kind) {
+  return kind == ShapeKind::Sphere || kind == ShapeKind::Shell;
+}
+
+// One of the two bodies of a `type: bodies` contact, and its sphere part where it is a
+// composite (-1: the body is the sphere).
+int read_touching_sphere(const Reader& reader, const Field& body_field, const BodySpec& body) {
+  const char* what =
+      "two bodies touch at their spheres for now (a sphere or shell each, or a "
+      "composite's sphere part)";
+  if (body.parts.empty()) {
+    if (touches_a_body(body.shape.kind)) return -1;
+    reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
+                                         std::string(shape_name(body.shape.kind)) + "; " + what);
+  }
+  int found = -1, count = 0;
+  for (std::size_t p = 0; p < body.parts.size(); ++p) {
+    if (!touches_a_body(body.parts[p].shape.kind)) continue;
+    found = static_cast<int>(p);
+    ++count;
+  }
+  if (count != 1) {
+    reader.fail_at_value(body_field, "body '" + body.name + "' is a composite with " +
+                                         std::to_string(count) + " sphere parts; " + what +
+                                         ", one sphere part to a body");
+  }
+  return found;
+}
+
+// `bodies: [a, b]`: two different bodies (not ground: a fixed surface is a plane's contact).
+void read_touching_bodies(const Reader& reader, const MapReader& map, const Scenario& scenario,
+                          ContactSpec& contact) {
+  if (const auto f = map.find("plane")) {
+    reader.fail_at_key(*f,
+                       "a contact between two bodies has no plane (a body on a plane is "
+                       "`type: plane` with `body:`)");
+  }
+  if (const auto f = map.find("body")) {
+    reader.fail_at_key(*f, "a contact between two bodies names both in `bodies: [a, b]`");
+  }
+  if (const auto f = map.find("part")) {
+    reader.fail_at_key(*f,
+                       "a contact between two bodies touches at each body's one sphere part "
+                       "(no `part:` to name)");
+  }
+  const Field list = map.require("bodies", "[a, b]: the two bodies that touch");
+  const std::vector<Field> names = reader.items(list, "of two bodies, [a, b]");
+  if (names.size() != 2) {
+    reader.fail_at_value(
+        list, fmt::format("a contact between bodies names two, [a, b]; got {}", names.size()));
+  }
+  contact.body = read_body_or_ground(reader, names[0], scenario.bodies, false);
+  contact.other_body = read_body_or_ground(reader, names[1], scenario.bodies, false);
+  if (contact.other_body == contact.body) {
+    reader.fail_at_value(
+        names[1], "body '" + contact.body + "' named twice: a contact is between two bodies");
+  }
+  contact.part =
+      read_touching_sphere(reader, names[0], scenario.bodies[*reader.body_position(contact.body)]);
+  contact.other_part = read_touching_sphere(
+      reader, names[1], scenario.bodies[*reader.body_position(contact.other_body)]);
+}
+
+// `friction:` and `restitution:`, as a plane's contact and a pair's take them.
+void read_coefficients(const Reader& reader, const MapReader& map, ContactSpec& contact) {
+  const Field friction = map.require("friction", "Coulomb's mu >= 0; 0 is frictionless");
+  contact.friction = reader.number(friction);
+  if (!(contact.friction >= 0.0)) {
+    reader.fail_at_value(
+        friction, fmt::format("friction must be >= 0; got {}", format_number(contact.friction)));
+  }
+  if (const auto f = map.find("restitution")) {
+    contact.restitution = reader.number(*f);
+    if (!(contact.restitution >= 0.0 && contact.restitution <= 1.0)) {
+      reader.fail_at_value(*f, fmt::format("restitution must be in [0, 1]; got {}",
+                                           format_number(contact.restitution)));
+    }
+  }
+}
+
 ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scenario& scenario) {
   ContactSpec contact;
-  const Field type = map.require("type", "plane");
+  const Field type = map.require("type", "plane, or bodies");
+  if (reader.text(type) == "bodies") {
+    read_touching_bodies(reader, map, scenario, contact);
+    read_coefficients(reader, map, contact);
+    return contact;
+  }
   if (reader.text(type) != "plane") {
     reader.fail_at_value(type, "unknown contact type '" + reader.text(type) +
-                                   "'; the one type is plane (a fixed plane: ground, a ramp)");
+                                   "'; the types are plane (a fixed plane: ground, a ramp) and "
+                                   "bodies (two bodies' surfaces)");
+  }
+  if (const auto f = map.find("bodies")) {
+    reader.fail_at_key(*f,
+                       "a contact with a plane names its one body in `body:` (two bodies "
+                       "that touch each other are `type: bodies`)");
   }
   const Field body_field = map.require("body", "the body that touches the plane");
   contact.body = read_body_or_ground(reader, body_field, scenario.bodies, false);
@@ -105,19 +199,7 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   if (!n) reader.fail_at_value(normal, "the normal must not be zero");
   contact.plane_normal_W = *n;
 
-  const Field friction = map.require("friction", "Coulomb's mu >= 0; 0 is frictionless");
-  contact.friction = reader.number(friction);
-  if (!(contact.friction >= 0.0)) {
-    reader.fail_at_value(
-        friction, fmt::format("friction must be >= 0; got {}", format_number(contact.friction)));
-  }
-  if (const auto f = map.find("restitution")) {
-    contact.restitution = reader.number(*f);
-    if (!(contact.restitution >= 0.0 && contact.restitution <= 1.0)) {
-      reader.fail_at_value(*f, fmt::format("restitution must be in [0, 1]; got {}",
-                                           format_number(contact.restitution)));
-    }
-  }
+  read_coefficients(reader, map, contact);
   return contact;
 }
 
@@ -175,11 +257,13 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
                                        const Scenario& scenario) {
   std::vector<ContactSpec> contacts;
   ColumnHeads heads(scenario);
-  const std::vector<Field> items = reader.items(field, "of contacts, each {type: plane, ...}");
+  const std::vector<Field> items =
+      reader.items(field, "of contacts, each {type: plane, ...} or {type: bodies, ...}");
   for (std::size_t i = 0; i < items.size(); ++i) {
     const MapReader map(reader, items[i],
-                        "a contact {type: plane, body:, plane: {point:, normal:}, friction:}");
-    map.allow_only({"type", "name", "body", "part", "plane", "friction", "restitution"},
+                        "a contact {type: plane, body:, plane: {point:, normal:}, friction:} or "
+                        "{type: bodies, bodies: [a, b], friction:}");
+    map.allow_only({"type", "name", "body", "bodies", "part", "plane", "friction", "restitution"},
                    "a contact");
     std::string name = "contact" + std::to_string(i + 1);
     const SourceLocation where = reader.location(items[i].key_mark);

@@ -169,6 +169,10 @@ struct ContactSpec {
   // A composite body's part that touches (an index into its parts; `part:`), -1 for a body of
   // one shape.
   int part = -1;
+  // `type: bodies`: the second body (empty: the contact is with the plane) and its part that
+  // touches (-1: the body is that sphere). The plane's point and normal are then unused.
+  std::string other_body;
+  int other_part = -1;
   SourceLocation where;
 };
 

@@ -263,6 +263,14 @@ Model build_model(const Scenario& scenario) {
     contact.surface =
         spec.part < 0 ? contact_surface(body.shape)
                       : part_contact_surface(body, body.parts[static_cast<std::size_t>(spec.part)]);
+    if (!spec.other_body.empty()) {
+      contact.other_body = static_cast<std::size_t>(body_number(spec.other_body));
+      const BodySpec& other = scenario.bodies[contact.other_body];
+      contact.other_surface =
+          spec.other_part < 0
+              ? contact_surface(other.shape)
+              : part_contact_surface(other, other.parts[static_cast<std::size_t>(spec.other_part)]);
+    }
     contact.point_W = spec.plane_point_W;
     contact.normal_W = spec.plane_normal_W;
     contact.friction = spec.friction;

@@ -289,11 +289,15 @@ class ContactSystem {
   // While apart: the first time the gap could be the landing height deep (landing_bound.hpp),
   // after a solve.
   double pair_time_to_depth(std::size_t contact) const;
+  // The second derivative of the pair's gap (m/s^2), after a solve: < 0, the bodies are pushed
+  // into each other.
+  double pair_gap_acceleration(std::size_t contact) const;
   // The impacts at a pair's touchdown: one pair at a time, the touching pair that approaches
   // fastest first, until no touching pair approaches (docs/scenario.md, "Bodies that touch").
   void pair_impacts(std::size_t contact, double t, VecX& y);
-  // One pair's impulse: Newton's restitution on the normal motion, Coulomb on the tangential
-  // impulse; noted as an event.
+  // One pair's impulse: Newton's restitution on the normal motion (none where the pair comes
+  // together slower than a settling touchdown), Coulomb on the tangential impulse; noted as an
+  // event.
   void pair_impulse(std::size_t contact, double t, VecX& y);
 
   std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run

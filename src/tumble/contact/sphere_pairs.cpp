@@ -1,7 +1,7 @@
 // Two bodies touching at their spheres (docs/scenario.md, "Bodies that touch each other"): a
 // contact between two bodies, free or held by joints, in one tree or not. For now the pair is
 // apart, its gap watched by the touchdown event, or meets in an impact; contact that lasts
-// (pressing, sliding, rolling on each other) is refused at the instant it would begin.
+// (pressing, sliding, rolling on each other) ends the run where it would begin.
 //
 // The gap is the distance between the spheres' centres less their radii, and the normal n runs
 // from the other body's sphere towards the body's. Both spheres' points on the line of centres
@@ -13,15 +13,18 @@
 // plane's (contact_modes.cpp, impact): the impulse that leaves no slip if it lies in the cone,
 // else one along n - mu s against the slip s before it (exact for two spheres on free bodies,
 // whose slip keeps its direction through the impact); should the impulse add energy, it is taken
-// plastic, then plastic and frictionless. Simultaneous impacts (balls touching in a row, one
-// struck) go one pair at a time: the touching pair that approaches fastest first (the first in
-// the file among equals), until no touching pair approaches.
+// plastic, then plastic and frictionless. A pair that comes together slower than a plane's
+// settling touchdown settles (e = 0); if the two are then pushed into each other, the run ends
+// there. Simultaneous impacts (balls touching in a row, one struck) go one pair at a time: the
+// touching pair that approaches fastest first (the first in the file among equals), until no
+// touching pair approaches.
 #include <fmt/format.h>
 
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "tumble/contact/contact_scales.hpp"
 #include "tumble/contact/contact_system.hpp"
@@ -157,6 +160,25 @@ double ContactSystem::pair_time_to_depth(std::size_t c) const {
                     kGapTurningMargin * relative_acceleration_W.norm());
 }
 
+double ContactSystem::pair_gap_acceleration(std::size_t c) const {
+  const PlaneContact& contact = contacts_[c];
+  const BodyMotion a = dynamics_.motion(contact.body);
+  const BodyMotion b = dynamics_.motion(contact.other_body);
+  // The distance d between the centres: d'' = n . (a_A - a_B) + |v_A - v_B|^2 less its part
+  // along n, over d (the line of centres turning).
+  const Vec3 apart_W =
+      sphere_centre_W(a, contact.surface) - sphere_centre_W(b, contact.other_surface);
+  const Vec3 n = apart_W.normalized();
+  const Vec3 relative_velocity_W = point_velocity_W(a, contact.surface.centre_B) -
+                                   point_velocity_W(b, contact.other_surface.centre_B);
+  const Vec3 relative_acceleration_W =
+      moving_point_acceleration_W(a, contact.surface.centre_B, Vec3::Zero()) -
+      moving_point_acceleration_W(b, contact.other_surface.centre_B, Vec3::Zero());
+  const double along = n.dot(relative_velocity_W);
+  return n.dot(relative_acceleration_W) +
+         (relative_velocity_W.squaredNorm() - along * along) / apart_W.norm();
+}
+
 void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   dynamics_.calc_motion(y, true);
   calc_contact_points();
@@ -164,13 +186,6 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   const ContactStatus& status = s_.contacts[first];
   const double approach = -d_.now[first].support_normal_speed;
   if (!(approach > status.slip_zero)) return;  // the gap closed as they turned away: no impact
-  if (approach <= status.settle_speed) {
-    throw std::runtime_error(fmt::format(
-        "contact '{}': bodies '{}' and '{}' come together at {:.3g} m/s at t = {:.9g} s and would "
-        "press on each other; contact that lasts between two bodies (one resting, sliding or "
-        "rolling on the other) is not built yet, only their impacts",
-        contact.name, bodies_[contact.body].name, bodies_[contact.other_body].name, approach, t));
-  }
   for (int round = 0;; ++round) {
     // The touching pair that approaches fastest (the first in the file among equals).
     std::size_t fastest = contacts_.size();
@@ -186,7 +201,7 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
         fastest_approach = speed;
       }
     }
-    if (fastest == contacts_.size()) return;
+    if (fastest == contacts_.size()) break;
     if (round == kPairImpactRounds) {
       throw std::runtime_error(fmt::format(
           "contact '{}': {} impacts between touching bodies at t = {:.9g} s, and '{}' still "
@@ -197,6 +212,20 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
     pair_impulse(fastest, t, y);
     dynamics_.calc_motion(y, true);
     calc_contact_points();
+  }
+  // A settling touchdown leaves the pair together with no speed between them. Where something
+  // pushes them into each other (a ball resting on another; a plastic strike, whose bodies then
+  // turn into each other), only contact that lasts would hold them, and the run ends here rather
+  // than go on by a chatter of ever smaller impacts.
+  if (approach > status.settle_speed) return;
+  calc_accelerations(y);
+  const double pressing = -pair_gap_acceleration(first);
+  if (pressing > status.slip_zero / status.time_scale) {
+    throw std::runtime_error(fmt::format(
+        "contact '{}': bodies '{}' and '{}' settle against each other at t = {:.9g} s and are "
+        "pushed on at {:.3g} m/s^2: contact that lasts between two bodies (one resting, "
+        "sliding or rolling on the other) is not built yet, only their impacts",
+        contact.name, bodies_[contact.body].name, bodies_[contact.other_body].name, t, pressing));
   }
 }
 
@@ -211,6 +240,9 @@ void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
   const double vn = now.support_normal_speed;
   const Mat3 R_a = dynamics_.motion(a).R_WB, R_b = dynamics_.motion(b).R_WB;
   const double energy_before = dynamics_.kinetic_energy();
+  // As a plane's touchdown: one whose bounce would rise less than a millionth of the size
+  // settles (the cascade of ever smaller bounces ends).
+  const bool settles = -vn <= s_.contacts[c].settle_speed;
 
   // W: the jump of the relative velocity at O per unit impulse (on the body at O, and its
   // opposite on the other body), column by column; a body that does not move with the one
@@ -234,7 +266,7 @@ void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
     double e;
     bool friction;
   };
-  const ImpactLaw laws[] = {{contact.restitution, true}, {0.0, true}, {0.0, false}};
+  const ImpactLaw laws[] = {{settles ? 0.0 : contact.restitution, true}, {0.0, true}, {0.0, false}};
   Vec3 impulse_W = Vec3::Zero();  // on the body, at O
   double work = 0.0;
   for (const ImpactLaw& law : laws) {
@@ -279,12 +311,20 @@ void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
   calc_contact_points();
   const double vn_after = d_.now[c].support_normal_speed;
   const Vec3 O_W = dynamics_.motion(a).r_G_W + R_a * p_a_B;
+  const std::string where =
+      fmt::format("'{}' and '{}' at ({:.4g}, {:.4g}, {:.4g}) m, normal ({:.4g}, {:.4g}, {:.4g})",
+                  bodies_[a].name, bodies_[b].name, O_W.x(), O_W.y(), O_W.z(), n.x(), n.y(), n.z());
+  const ContactImpactNumbers numbers{energy_before, energy_before + work, -vn, vn_after, impulse_W};
+  if (settles) {
+    note_contact(t, c,
+                 fmt::format("touchdown of {} at normal speed {:.3g} m/s: settles", where, -vn),
+                 numbers);
+    return;
+  }
   note_contact(t, c,
-               fmt::format("impact of '{}' and '{}' at ({:.4g}, {:.4g}, {:.4g}) m, normal ({:.4g}, "
-                           "{:.4g}, {:.4g}): normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost",
-                           bodies_[a].name, bodies_[b].name, O_W.x(), O_W.y(), O_W.z(), n.x(),
-                           n.y(), n.z(), -vn, vn_after, work == 0.0 ? 0.0 : -work),
-               ContactImpactNumbers{energy_before, energy_before + work, -vn, vn_after, impulse_W});
+               fmt::format("impact of {}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", where,
+                           -vn, vn_after, work == 0.0 ? 0.0 : -work),
+               numbers);
 }
 
 }  // namespace tumble

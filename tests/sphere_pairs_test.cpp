@@ -15,6 +15,12 @@
 //    a time down the row (docs/scenario.md), each an exchange of equal effective masses, and the
 //    last ball leaves with the first's speed while the other four stay at rest; E through the
 //    impacts to round-off.
+//  - A ball striking a pendulum's bob (a sphere on a hinge, or a composite's sphere part):
+//    Newton's law with the bob's effective mass I_O / L^2, and the angular momentum about the
+//    pivot kept; struck plastically, the two are then pushed together, and the run ends there.
+//  - A rolling cue ball strikes an object ball on a table: both slide, then roll at 2/7 and 5/7
+//    of its speed.
+//  - A millimetre ball at 100 m/s is not stepped through.
 //  - What the reader and the start refuse, located.
 #include <gtest/gtest.h>
 
@@ -293,6 +299,36 @@ TEST(SpherePairs, ABallStrikingAPendulumKeepsTheAngularMomentumAboutThePivot) {
     }
   }
   EXPECT_LT(u_after, 0.0) << "the case this test means: they part";
+}
+
+// The same strike on a pendulum whose bob is a sphere part of one body with its rod (a uniform
+// rod of mass m_rod from the pivot to the bob's centre): the contact is the part's sphere, placed
+// in the body, and the effective mass takes the rod's m_rod L^2 / 3 into I_O.
+TEST(SpherePairs, ABallStrikesACompositesSpherePart) {
+  const double L = 0.5, M = 1.0, Rb = 0.05, m = 0.2, u = 3.0, e = 0.5, m_rod = 0.3;
+  const std::string composite =
+      "  bob:\n"
+      "    parts:\n"
+      "      - {name: rod, shape: rod, length: L, mass: 0.3, position: [0, 0, -L/2]}\n"
+      "      - {name: head, shape: sphere, radius: Rb, mass: M, position: [0, 0, -L]}\n"
+      "    position: [0, 0, 0]\n";
+  const test::ScenarioRun run = test::run_inline_scenario(
+      test::replaced(ballistic_pendulum(e, 0.0),
+                     "  bob: {shape: sphere, radius: Rb, mass: M, position: [0, 0, -L]}\n",
+                     composite),
+      "composite");
+  ASSERT_EQ(run.contact_events.size(), 1u);
+  EXPECT_NEAR(run.contact_events[0].t, (0.5 - Rb - 0.02) / u, 1e-13);
+  const double I_O = m_rod * L * L / 3 + M * L * L + 0.4 * M * Rb * Rb, m_eff = I_O / (L * L);
+  const double u_after = (m - e * m_eff) * u / (m + m_eff);
+  const double V_after = (1 + e) * m * u / (m + m_eff);
+  const double L0 = run.rows.front().quantities.angular_momentum_about_origin.y();
+  for (const test::Row& row : run.rows) {
+    EXPECT_NEAR(row.quantities.angular_momentum_about_origin.y(), L0, 1e-12 * std::abs(L0));
+    if (row.t <= run.contact_events[0].t) continue;
+    EXPECT_NEAR(row.states[0].omega_W.y(), -V_after / L, 1e-12 * u / L) << row.t;
+    EXPECT_NEAR(row.states[1].v_G.x(), u_after, 1e-12 * u) << row.t;
+  }
 }
 
 // With e = 0 the ball stays against the bob, which turns away along its circle while the ball

@@ -18,6 +18,7 @@
 //  - A ball striking a pendulum's bob (a sphere on a hinge, or a composite's sphere part):
 //    Newton's law with the bob's effective mass I_O / L^2, and the angular momentum about the
 //    pivot kept; struck plastically, the two are then pushed together, and the run ends there.
+//  - A ball bounces off a dome (a sphere welded to ground), frictionless and with friction.
 //  - A rolling cue ball strikes an object ball on a table: both slide, then roll at 2/7 and 5/7
 //    of its speed.
 //  - A millimetre ball at 100 m/s is not stepped through.
@@ -351,6 +352,63 @@ TEST(SpherePairs, APlasticStrikeThatLeavesThemPressedTogetherIsRefusedWhereItBeg
   EXPECT_NE(result.report.failure.find("are pushed on at"), std::string::npos)
       << result.report.failure;
   EXPECT_NE(result.report.failure.find("contact that lasts"), std::string::npos);
+}
+
+// A ball dropped from rest onto a dome: a fixed obstacle stated as a sphere welded to ground
+// (its response to any impulse is none). The ball, its centre b off the dome's axis, falls until
+// its centre is R + r from the dome's, at z = sqrt((R + r)^2 - b^2) after t = sqrt(2 (h - z) /
+// g); frictionless, it leaves at v - (1 + e) (v . n) n; with friction, as two balls (the dome's
+// side of W is none: k_n = 1/m, k_t = 1/m + r^2 / I), spinning at (-r n) x p / I. Then it flies
+// under gravity alone.
+void expect_bounce_off_a_dome(double mu) {
+  const double R = 0.5, r = 0.05, m = 0.1, b = 0.2, h = 1.0, e = 0.8, g = test::kG;
+  const std::string yaml =
+      "tumble: 1\n"
+      "gravity: [0, 0, -" +
+      std::to_string(g) +
+      "]\n"
+      "bodies:\n"
+      "  dome: {shape: sphere, radius: 0.5, mass: 10, position: [0, 0, 0]}\n"
+      "  ball: {shape: sphere, radius: 0.05, mass: 0.1, position: [0.2, 0, 1]}\n"
+      "joints:\n"
+      "  footing: {type: fixed, bodies: [ground, dome], at: [0, 0, 0]}\n"
+      "contacts:\n"
+      "  - {name: bounce, type: bodies, bodies: [ball, dome], friction: " +
+      std::to_string(mu) +
+      ", restitution: 0.8}\n"
+      "simulate: {duration: 0.4, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: "
+      "0.01}\n";
+  const test::ScenarioRun run = test::run_inline_scenario(yaml, "dome");
+  ASSERT_EQ(run.contact_events.size(), 1u) << mu;
+  const double z = std::sqrt((R + r) * (R + r) - b * b);
+  const double t_impact = std::sqrt(2 * (h - z) / g);
+  EXPECT_NEAR(run.contact_events[0].t, t_impact, 1e-12) << mu;
+  const Vec3 n = Vec3(b, 0, z) / (R + r);
+  const Vec3 v(0, 0, -g * t_impact);
+  const double vn = v.dot(n);
+  const Vec3 slip = v - vn * n;
+  const double I = 0.4 * m * r * r, k_n = 1 / m, k_t = 1 / m + r * r / I;
+  const double p_n = -(1 + e) * vn / k_n;
+  const Vec3 stop_slip = -slip / k_t;
+  const Vec3 p =
+      p_n * n + (stop_slip.norm() <= mu * p_n ? stop_slip : Vec3(-mu * p_n * slip.normalized()));
+  const Vec3 v_after = v + p / m, w_after = (-r * n).cross(p) / I;
+  if (mu > 0.0) {
+    EXPECT_GT(w_after.norm(), 10.0) << "friction spins it (here it sticks)";
+  }
+  for (const test::Row& row : run.rows) {
+    if (row.t <= t_impact) continue;
+    const BodyState& ball = row.states[1];
+    EXPECT_LT((ball.v_G - (v_after + Vec3(0, 0, -g * (row.t - t_impact)))).norm(), 1e-11 * g)
+        << row.t << " mu " << mu;
+    EXPECT_LT((ball.omega_W - w_after).norm(), 1e-11 * g / r) << row.t << " mu " << mu;
+    EXPECT_LT(row.states[0].v_G.norm() + row.states[0].omega_W.norm(), 1e-15) << "the dome";
+  }
+}
+
+TEST(SpherePairs, ABallBouncesOffADomeWeldedToGround) {
+  expect_bounce_off_a_dome(0.0);
+  expect_bounce_off_a_dome(0.3);
 }
 
 // A cue ball rolling at v0 on a table (friction mu) strikes an object ball at rest head on (the

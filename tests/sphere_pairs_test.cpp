@@ -22,6 +22,9 @@
 //  - A rolling cue ball strikes an object ball on a table: both slide, then roll at 2/7 and 5/7
 //    of its speed.
 //  - A millimetre ball at 100 m/s is not stepped through.
+//  - `tumble find` brackets the restitution at which a striker stops, to 1e-12.
+//  - `tumble modes` takes the cradle hanging with its balls apart (five pendulums), and refuses
+//    it touching.
 //  - What the reader and the start refuse, located.
 #include <gtest/gtest.h>
 
@@ -32,8 +35,12 @@
 #include <string>
 #include <vector>
 
+#include "modes_checks.hpp"
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "tumble/modes/not_steady.hpp"
+#include "tumble/sweep/find.hpp"
+#include "tumble/sweep/outcome.hpp"
 
 namespace tumble {
 namespace {
@@ -126,6 +133,32 @@ TEST(SpherePairs, ObliqueFrictionlessEqualMassesElasticLeaveAtRightAngles) {
   EXPECT_NEAR(run.contact_events[0].t, t_impact, 1e-13);
 }
 
+// `tumble find` on what an impact leaves: a light ball (0.5 kg at 3 m/s) strikes a heavy one at
+// rest (2 kg) head on, and comes to a stop where Newton's law gives it no speed after: e* =
+// (m1 v1 + m2 v2) / (m2 (v1 - v2)) = 1/4. Above it the light ball bounces back: final(a.vx) < 0.
+TEST(SpherePairs, FindTheRestitutionAtWhichTheStrikerStops) {
+  SweepSpec spec;
+  spec.path = "stops.yaml";
+  spec.text =
+      "tumble: 1\n"
+      "parameters: {rest: 0.5}\n"
+      "gravity: [0, 0, 0]\n"
+      "bodies:\n"
+      "  a: {shape: sphere, radius: 0.05, mass: 0.5, position: [0, 0, 0], velocity: [3, 0, 0]}\n"
+      "  b: {shape: sphere, radius: 0.1, mass: 2, position: [1, 0, 0]}\n"
+      "contacts:\n"
+      "  - {name: touch, type: bodies, bodies: [a, b], friction: 0, restitution: rest}\n"
+      "simulate: {duration: 0.5, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: "
+      "0.1}\n";
+  spec.varied = {"rest"};
+  spec.outcomes = {parse_outcome("condition", "final(a.vx) < 0")};
+  const FindResult found = find_change(spec, 0.0, 1.0, 1e-12);
+  EXPECT_FALSE(found.at_lo);
+  EXPECT_TRUE(found.at_hi);
+  const double e_star = (0.5 * 3.0) / (2.0 * 3.0);
+  EXPECT_NEAR(found.lo + 0.5 * (found.hi - found.lo), e_star, 1e-12);
+}
+
 // The spins and velocities after an oblique impact of two solid balls with friction, by the
 // closed form of the header, against the run's.
 void expect_friction_impact(double mu) {
@@ -172,12 +205,12 @@ TEST(SpherePairs, ObliqueWithFrictionTheSpinsAfterAreTheImpulsesClosedForm) {
   expect_friction_impact(0.9);   // the slip stops
 }
 
-// Five balls of radius R on hinges at L below pivots 2R apart, touching in a row; the first
+// Five balls of radius R on hinges at L below pivots s = 2R apart, touching in a row; the first
 // pulled back by theta0 and let go.
 std::string cradle(double theta0_deg) {
   std::string yaml =
       "tumble: 1\n"
-      "parameters: {R: 0.02, m: 0.1, L: 0.3, theta0: " +
+      "parameters: {R: 0.02, s: 2*R, m: 0.1, L: 0.3, theta0: " +
       std::to_string(theta0_deg) + " deg, g: " + std::to_string(test::kG) +
       "}\n"
       "gravity: [0, 0, -g]\n"
@@ -186,12 +219,12 @@ std::string cradle(double theta0_deg) {
       "-L*cos(theta0)]}\n";
   for (int i = 2; i <= 5; ++i) {
     yaml += "  ball" + std::to_string(i) + ": {shape: sphere, radius: R, mass: m, position: [" +
-            std::to_string(2 * (i - 1)) + "*R, 0, -L]}\n";
+            std::to_string(i - 1) + "*s, 0, -L]}\n";
   }
   yaml += "joints:\n";
   for (int i = 1; i <= 5; ++i) {
     yaml += "  string" + std::to_string(i) + ": {type: hinge, body: ball" + std::to_string(i) +
-            ", at: [" + std::to_string(2 * (i - 1)) + "*R, 0, 0], axis: [0, 1, 0]}\n";
+            ", at: [" + std::to_string(i - 1) + "*s, 0, 0], axis: [0, 1, 0]}\n";
   }
   yaml += "contacts:\n";
   for (int i = 1; i <= 4; ++i) {
@@ -247,6 +280,25 @@ TEST(SpherePairs, NewtonsCradleHandsTheStrikeDownTheRowOnePairAtATime) {
     }
   }
   EXPECT_TRUE(seen_after);
+}
+
+// `tumble modes` takes a pair of bodies while they are apart: the cradle hanging at rest with its
+// balls a millimetre apart is five pendulums, each at omega^2 = m g L / I_O. Touching, they would
+// press on each other's motion (contact that lasts), which modes refuses, saying so.
+TEST(SpherePairs, ModesTakeTheCradleApartAndRefuseItTouching) {
+  const double R = 0.02, m = 0.1, L = 0.3;
+  const double omega = std::sqrt(m * test::kG * L / (m * L * L + 0.4 * m * R * R));
+  const ScenarioModes apart = modes_of_scenario(
+      test::load_inline_scenario(test::replaced(cradle(0.0), "s: 2*R", "s: 2*R + 0.001"), "apart"));
+  test::expect_oscillating_at(apart.analysis, std::vector<double>(5, omega), 1e-9);
+  try {
+    modes_of_scenario(test::load_inline_scenario(cradle(0.0), "touching"));
+    ADD_FAILURE() << "touching balls taken";
+  } catch (const NotSteady& refused) {
+    EXPECT_NE(std::string(refused.what()).find("contact touch1: its two bodies touch"),
+              std::string::npos)
+        << refused.what();
+  }
 }
 
 // A ball fired along the line through a hanging pendulum's bob (a sphere on a hinge L below its

@@ -389,7 +389,7 @@ TEST(ContactScenario, TheBackspinExampleWritesContactColumnsAndEvents) {
   std::getline(events, events_header);
   EXPECT_EQ(events_header,
             "t,source,what,KE_before,KE_after,approach_speed,rebound_speed,Px,Py,Pz,normal_speed,"
-            "slip_speed");
+            "slip_speed,point_x,point_y,point_z,normal_x,normal_y,normal_z");
   std::vector<std::string> lines;
   while (std::getline(events, event_line)) lines.push_back(event_line);
   ASSERT_EQ(lines.size(), 3u);

@@ -75,6 +75,10 @@ TEST(SpherePairs, HeadOnTheVelocitiesAfterAreNewtonsAndTheMomentums) {
   ASSERT_TRUE(impact.impact.has_value());
   EXPECT_NEAR(impact.impact->approach_speed, v1 - v2, 1e-12);
   EXPECT_NEAR(impact.impact->rebound_speed, e * (v1 - v2), 1e-12);
+  // Where (events.csv's point and normal): a's surface, 0.1 beyond its centre at v1 t; the normal
+  // from b towards a.
+  EXPECT_LT((impact.point_W - Vec3(v1 * impact.t + 0.1, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((impact.normal_W - Vec3(-1, 0, 0)).norm(), 1e-15);
   const double p = m1 * v1 + m2 * v2;
   const double v1_after = (p - m2 * e * (v1 - v2)) / (m1 + m2);
   const double v2_after = (p + m1 * e * (v1 - v2)) / (m1 + m2);

@@ -108,6 +108,8 @@ py::list contact_and_scenario_events(const Scenario& scenario, const SimulationR
       }
       event["normal_speed"] = contact_event->normal_speed;
       event["slip_speed"] = contact_event->slip_speed;
+      event["point"] = Vec3(contact_event->point_W);
+      event["normal"] = Vec3(contact_event->normal_W);
     }
     out.append(event);
   }

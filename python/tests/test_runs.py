@@ -12,6 +12,22 @@ import tumble
 from conftest import EXAMPLES, csv_text
 
 
+def same_events(a, b):
+    """Events lists equal field by field, bit for bit (a point, a normal, an impulse: arrays)."""
+    if len(a) != len(b):
+        return False
+    for x, y in zip(a, b):
+        if x.keys() != y.keys():
+            return False
+        for key in x:
+            if isinstance(x[key], np.ndarray):
+                if not np.array_equal(x[key], y[key]):
+                    return False
+            elif x[key] != y[key]:
+                return False
+    return True
+
+
 @pytest.mark.parametrize(("example", "t1"), [("tumbling_prism", 9.0), ("backspin_disk", 0.7),
                                               ("cubli", 0.7), ("planar/backspin_disk", 0.7)])
 def test_a_run_gone_on_from_its_saved_state_is_the_uninterrupted_run(example, t1):
@@ -25,7 +41,7 @@ def test_a_run_gone_on_from_its_saved_state_is_the_uninterrupted_run(example, t1
     assert before.t[-1] <= before.state.t < after.t[0]
     # Bit for bit: the rows, the events and the books of the whole run.
     assert np.array_equal(np.vstack([before.data, after.data]), whole.data, equal_nan=True)
-    assert after.events == whole.events and after.jumps == whole.jumps
+    assert same_events(after.events, whole.events) and after.jumps == whole.jumps
     for key in ("accepted_steps", "rhs_evaluations", "rows", "max_energy_change"):
         assert after.summary[key] == whole.summary[key], key
     # A state goes on again as often as asked.

@@ -334,6 +334,9 @@ void ContactSystem::note_event_numbers(std::size_t first, const VecX& y) {
     const Vec3& n = normal_of(e.contact);
     e.normal_speed = now.velocity_W.dot(n);
     e.slip_speed = (now.slip_W - n * n.dot(now.slip_W)).norm();
+    const BodyMotion w = dynamics_.motion(contacts_[e.contact].body);
+    e.point_W = w.r_G_W + w.R_WB * now.reference_B;
+    e.normal_W = n;
   }
 }
 

@@ -89,6 +89,11 @@ struct ContactEventRecord {
   // the size of its part along the plane (the slip; 0 where it rolls or sticks).
   double kinetic_energy_before = 0.0, kinetic_energy_after = 0.0;
   double normal_speed = 0.0, slip_speed = 0.0;
+  // Where, in that state: the contact's reference point (the point of contact, a feature's
+  // centroid; apart, the lowest point) and its normal (the plane's; between two bodies, from the
+  // second body towards the first), world.
+  Vec3 point_W = Vec3::Zero();
+  Vec3 normal_W = Vec3::UnitZ();
 };
 
 // The contact subsystem's part of a run's state: every contact's status and what has happened.

@@ -24,13 +24,15 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
     }
   }
   // After the joints' columns, so that those keep their places: an impact's own numbers.
-  fmt::format_to(out, ",approach_speed,rebound_speed,Px,Py,Pz,normal_speed,slip_speed");
+  fmt::format_to(out,
+                 ",approach_speed,rebound_speed,Px,Py,Pz,normal_speed,slip_speed,point_x,point_y,"
+                 "point_z,normal_x,normal_y,normal_z");
   text.push_back('\n');
   // The cells after a row's joint columns: a contact event's numbers (an impact's landing speeds
   // and impulse; a change of modes has no landing and no impulse), or none.
   const auto write_contact_cells = [&](const ContactEventRecord* e) {
     if (e == nullptr) {
-      fmt::format_to(out, ",,,,,,,");
+      fmt::format_to(out, ",,,,,,,,,,,,,");
       return;
     }
     if (e->impact) {
@@ -42,6 +44,9 @@ void write_events_csv(const std::filesystem::path& path, std::span<const std::st
       fmt::format_to(out, ",,,0,0,0");
     }
     fmt::format_to(out, ",{:.17g},{:.17g}", e->normal_speed, e->slip_speed);
+    for (const Vec3* v : {&e->point_W, &e->normal_W}) {
+      fmt::format_to(out, ",{:.17g},{:.17g},{:.17g}", v->x(), v->y(), v->z());
+    }
   };
   // In time order; at one instant the jump comes first (the contacts' modes are decided again
   // after it).

@@ -14,7 +14,9 @@
 //   impulse the plane gave the body; 0 for a change of modes), and every contact event's
 //   normal_speed and slip_speed (m/s: the contact point's velocity relative to the plane in the
 //   state the event leaves, along the normal, away > 0, and the size of its part along the
-//   plane); empty cells where a row has none.
+//   plane), and its point_x point_y point_z (m) and normal_x normal_y normal_z (world: where it
+//   touches, or apart its lowest point; the plane's normal, or a pair's from its second body
+//   towards its first); empty cells where a row has none.
 // Written through an AtomicFile: it appears only when complete.
 #include <filesystem>
 #include <span>

@@ -119,6 +119,8 @@ void archive_contact_event(StateArchive& a, ContactEventRecord& e) {
   a.number("kinetic_energy_after", e.kinetic_energy_after);
   a.number("normal_speed", e.normal_speed);
   a.number("slip_speed", e.slip_speed);
+  a.vec3("point_W", e.point_W);
+  a.vec3("normal_W", e.normal_W);
 }
 
 void archive_hybrid(StateArchive& a, HybridState& h) {

@@ -17,7 +17,7 @@ namespace tumble {
 
 namespace {
 
-constexpr long kFormat = 2;
+constexpr long kFormat = 3;
 constexpr std::string_view kDigestKey = "digest ";
 
 std::string hex(std::uint64_t value) {

@@ -22,6 +22,7 @@
 //  - A rolling cue ball strikes an object ball on a table: both slide, then roll at 2/7 and 5/7
 //    of its speed.
 //  - A millimetre ball at 100 m/s is not stepped through.
+//  - A group makes every pair of its bodies a contact (but those a joint joins).
 //  - `tumble find` brackets the restitution at which a striker stops, to 1e-12.
 //  - `tumble modes` takes the cradle hanging with its balls apart (five pendulums), and refuses
 //    it touching.
@@ -286,6 +287,45 @@ TEST(SpherePairs, NewtonsCradleHandsTheStrikeDownTheRowOnePairAtATime) {
   EXPECT_TRUE(seen_after);
 }
 
+// A group, `bodies: [ball1, ball2, ball3]`: every pair of it a contact (touch_ball1_ball2,
+// touch_ball1_ball3, touch_ball2_ball3), and a strike down the row as the cradle's: the third ball
+// leaves with the first's speed, the other two at rest. A pair that a joint joins to each other
+// is left out, unless `joined: true`.
+TEST(SpherePairs, AGroupMakesEveryPairOfItAContact) {
+  const std::string yaml =
+      "tumble: 1\n"
+      "gravity: [0, 0, 0]\n"
+      "bodies:\n"
+      "  ball1: {shape: sphere, radius: 0.1, mass: 1, position: [-1, 0, 0], velocity: [2, 0, 0]}\n"
+      "  ball2: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0]}\n"
+      "  ball3: {shape: sphere, radius: 0.1, mass: 1, position: [0.2, 0, 0]}\n"
+      "contacts:\n"
+      "  - {name: touch, type: bodies, bodies: [ball1, ball2, ball3], friction: 0, restitution: "
+      "1}\n"
+      "simulate: {duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.1}\n";
+  const test::ScenarioRun run = test::run_inline_scenario(yaml, "group");
+  ASSERT_EQ(run.contacts.size(), 3u);
+  EXPECT_EQ(run.contacts[0].name, "touch_ball1_ball2");
+  EXPECT_EQ(run.contacts[1].name, "touch_ball1_ball3");
+  EXPECT_EQ(run.contacts[2].name, "touch_ball2_ball3");
+  ASSERT_EQ(run.contact_events.size(), 2u);
+  EXPECT_EQ(run.contact_events[0].contact, 0u);
+  EXPECT_EQ(run.contact_events[1].contact, 2u);
+  const test::Row& last = run.rows.back();
+  EXPECT_NEAR(last.states[0].v_G.norm() + last.states[1].v_G.norm(), 0.0, 1e-14);
+  EXPECT_NEAR(last.states[2].v_G.x(), 2.0, 1e-14);
+
+  const std::string dumbbell = test::replaced(
+      yaml, "contacts:",
+      "joints:\n  bar: {type: ball, bodies: [ball2, ball3], at: [0.1, 0, 0]}\ncontacts:");
+  EXPECT_EQ(test::load_inline_scenario(dumbbell, "joined").contacts.size(), 2u);
+  EXPECT_EQ(test::load_inline_scenario(
+                test::replaced(dumbbell, "restitution: 1}", "restitution: 1, joined: true}"),
+                "joined_too")
+                .contacts.size(),
+            3u);
+}
+
 // `tumble modes` takes a pair of bodies while they are apart: the cradle hanging at rest with its
 // balls a millimetre apart is five pendulums, each at omega^2 = m g L / I_O. Touching, they would
 // press on each other's motion (contact that lasts), which modes refuses, saying so.
@@ -543,6 +583,8 @@ TEST(SpherePairs, TheReaderAndTheStartRefuseWhatTheyCannotTake) {
       {"type: bodies,", "type: bodies, plane: {point: [0, 0, 0]},", 33, "contacts[0].plane",
        "no plane"},
       {"type: bodies,", "type: plane,", 32, "contacts[0].bodies", "`type: bodies`"},
+      {"restitution: 0.500000}", "restitution: 0.500000, joined: true}", 92, "contacts[0].joined",
+       "for a group of more than two"},
       // At the start: overlapping by 0.05 m; touching and closing.
       {"position: [1, 0, 0]", "position: [0.15, 0, 0]", 5, "contacts[0]", "overlapping by 0.05 m"},
       {"position: [1, 0, 0]", "position: [0.2, 0, 0], velocity: [-1, 0, 0]", 5, "contacts[0]",

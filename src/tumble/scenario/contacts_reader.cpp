@@ -104,9 +104,19 @@ int read_touching_sphere(const Reader& reader, const Field& body_field, const Bo
   return found;
 }
 
-// `bodies: [a, b]`: two different bodies (not ground: a fixed surface is a plane's contact).
+// Whether a joint joins the two bodies to each other.
+bool joined(const Scenario& scenario, const std::string& a, const std::string& b) {
+  return std::any_of(scenario.joints.begin(), scenario.joints.end(), [&](const JointSpec& j) {
+    return (j.body_a == a && j.body_b == b) || (j.body_a == b && j.body_b == a);
+  });
+}
+
+// `bodies: [a, b]`: two different bodies (not ground: a fixed surface is a plane's contact); or
+// a group, `bodies: [a, b, c, ...]`: every pair of it, in the list's order (a-b, a-c, ..., b-c,
+// ...), but those a joint joins to each other unless `joined: true`. Each pair into `pairs`
+// (its bodies and parts).
 void read_touching_bodies(const Reader& reader, const MapReader& map, const Scenario& scenario,
-                          ContactSpec& contact) {
+                          std::vector<ContactSpec>& pairs) {
   if (const auto f = map.find("plane")) {
     reader.fail_at_key(*f,
                        "a contact between two bodies has no plane (a body on a plane is "
@@ -121,21 +131,56 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
                        "(no `part:` to name)");
   }
   const Field list = map.require("bodies", "[a, b]: the two bodies that touch");
-  const std::vector<Field> names = reader.items(list, "of two bodies, [a, b]");
-  if (names.size() != 2) {
+  const std::vector<Field> names = reader.items(list, "of two bodies, [a, b], or a group");
+  if (names.size() < 2) {
     reader.fail_at_value(
-        list, fmt::format("a contact between bodies names two, [a, b]; got {}", names.size()));
+        list, fmt::format("a contact between bodies names two, [a, b] (or a group of more, every "
+                          "pair of which may touch); got {}",
+                          names.size()));
   }
-  contact.body = read_body_or_ground(reader, names[0], scenario.bodies, false);
-  contact.other_body = read_body_or_ground(reader, names[1], scenario.bodies, false);
-  if (contact.other_body == contact.body) {
-    reader.fail_at_value(
-        names[1], "body '" + contact.body + "' named twice: a contact is between two bodies");
+  std::vector<std::string> bodies;
+  std::vector<int> parts;
+  for (const Field& name : names) {
+    const std::string body = read_body_or_ground(reader, name, scenario.bodies, false);
+    if (std::find(bodies.begin(), bodies.end(), body) != bodies.end()) {
+      reader.fail_at_value(name,
+                           "body '" + body + "' named twice: a contact is between two bodies");
+    }
+    parts.push_back(
+        read_touching_sphere(reader, name, scenario.bodies[*reader.body_position(body)]));
+    bodies.push_back(body);
   }
-  contact.part =
-      read_touching_sphere(reader, names[0], scenario.bodies[*reader.body_position(contact.body)]);
-  contact.other_part = read_touching_sphere(
-      reader, names[1], scenario.bodies[*reader.body_position(contact.other_body)]);
+  bool with_joined = true;
+  if (const auto f = map.find("joined")) {
+    if (names.size() == 2) {
+      reader.fail_at_key(*f,
+                         "`joined:` is for a group of more than two bodies (a pair named on "
+                         "its own touches whatever joins it)");
+    }
+    const std::string text = reader.text(*f);
+    if (text != "true" && text != "false") {
+      reader.fail_at_value(*f, "joined is true (pairs a joint joins touch too) or false");
+    }
+    with_joined = text == "true";
+  } else {
+    with_joined = names.size() == 2;
+  }
+  for (std::size_t a = 0; a < bodies.size(); ++a) {
+    for (std::size_t b = a + 1; b < bodies.size(); ++b) {
+      if (!with_joined && joined(scenario, bodies[a], bodies[b])) continue;
+      ContactSpec pair;
+      pair.body = bodies[a];
+      pair.other_body = bodies[b];
+      pair.part = parts[a];
+      pair.other_part = parts[b];
+      pairs.push_back(std::move(pair));
+    }
+  }
+  if (pairs.empty()) {
+    reader.fail_at_value(list,
+                         "a joint joins every pair of this group to each other; add "
+                         "`joined: true` to let them touch");
+  }
 }
 
 // `friction:` and `restitution:`, as a plane's contact and a pair's take them.
@@ -155,13 +200,19 @@ void read_coefficients(const Reader& reader, const MapReader& map, ContactSpec& 
   }
 }
 
-ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scenario& scenario) {
+// One contact, or a group's pairs.
+std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map,
+                                      const Scenario& scenario) {
   ContactSpec contact;
   const Field type = map.require("type", "plane, or bodies");
   if (reader.text(type) == "bodies") {
-    read_touching_bodies(reader, map, scenario, contact);
-    read_coefficients(reader, map, contact);
-    return contact;
+    std::vector<ContactSpec> pairs;
+    read_touching_bodies(reader, map, scenario, pairs);
+    for (ContactSpec& pair : pairs) read_coefficients(reader, map, pair);
+    return pairs;
+  }
+  if (const auto f = map.find("joined")) {
+    reader.fail_at_key(*f, "`joined:` is for a group of bodies that touch each other");
   }
   if (reader.text(type) != "plane") {
     reader.fail_at_value(type, "unknown contact type '" + reader.text(type) +
@@ -200,7 +251,7 @@ ContactSpec read_contact(const Reader& reader, const MapReader& map, const Scena
   contact.plane_normal_W = *n;
 
   read_coefficients(reader, map, contact);
-  return contact;
+  return {contact};
 }
 
 }  // namespace
@@ -263,21 +314,29 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
     const MapReader map(reader, items[i],
                         "a contact {type: plane, body:, plane: {point:, normal:}, friction:} or "
                         "{type: bodies, bodies: [a, b], friction:}");
-    map.allow_only({"type", "name", "body", "bodies", "part", "plane", "friction", "restitution"},
-                   "a contact");
+    map.allow_only(
+        {"type", "name", "body", "bodies", "joined", "part", "plane", "friction", "restitution"},
+        "a contact");
     std::string name = "contact" + std::to_string(i + 1);
     const SourceLocation where = reader.location(items[i].key_mark);
-    if (const auto f = map.find("name")) {
-      name = reader.text(*f);
-      check_name(reader, *f, name, "contact");
-      heads.claim(reader, *f, name, "contact", where);
-    } else {
-      heads.claim(reader, items[i], name, "contact", where);
+    const auto name_field = map.find("name");
+    const Field& named_at = name_field ? *name_field : items[i];
+    if (name_field) {
+      name = reader.text(*name_field);
+      check_name(reader, *name_field, name, "contact");
     }
-    ContactSpec contact = read_contact(reader, map, scenario);
-    contact.name = name;
-    contact.where = where;
-    contacts.push_back(std::move(contact));
+    // A group of bodies (more than two named) makes a contact of each pair, named by the group and
+    // its bodies (touch_ball1_ball2), even where the joints leave one pair of it; any other
+    // contact's name is claimed before the rest of it is read.
+    const auto listed = map.find("bodies");
+    const bool group = listed && listed->node.IsSequence() && listed->node.size() > 2;
+    if (!group) heads.claim(reader, named_at, name, "contact", where);
+    for (ContactSpec& contact : read_contact(reader, map, scenario)) {
+      contact.name = group ? name + "_" + contact.body + "_" + contact.other_body : name;
+      contact.where = where;
+      if (group) heads.claim(reader, named_at, contact.name, "contact", where);
+      contacts.push_back(std::move(contact));
+    }
   }
   return contacts;
 }

@@ -203,11 +203,12 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
     }
     if (fastest == contacts_.size()) break;
     if (round == kPairImpactRounds) {
+      const PlaneContact& still = contacts_[fastest];
       throw std::runtime_error(fmt::format(
-          "contact '{}': {} impacts between touching bodies at t = {:.9g} s, and '{}' still "
-          "approach each other at {:.3g} m/s",
-          contacts_[fastest].name, kPairImpactRounds, t, contacts_[fastest].name,
-          fastest_approach));
+          "contact '{}': {} impacts between touching bodies at t = {:.9g} s, and '{}' and '{}' "
+          "still approach each other at {:.3g} m/s",
+          still.name, kPairImpactRounds, t, bodies_[still.body].name,
+          bodies_[still.other_body].name, fastest_approach));
     }
     pair_impulse(fastest, t, y);
     dynamics_.calc_motion(y, true);

@@ -289,6 +289,10 @@ class ContactSystem {
   // While apart: the first time the gap could be the landing height deep (landing_bound.hpp),
   // after a solve.
   double pair_time_to_depth(std::size_t contact) const;
+  // The acceleration of the body's sphere centre (motion a) less the other's (motion b), world,
+  // gravity's included; after a solve.
+  Vec3 centres_relative_acceleration_W(const PlaneContact& contact, const BodyMotion& a,
+                                       const BodyMotion& b) const;
   // The second derivative of the pair's gap (m/s^2), after a solve: < 0, the bodies are pushed
   // into each other.
   double pair_gap_acceleration(std::size_t contact) const;

@@ -145,6 +145,13 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
   return std::nullopt;
 }
 
+Vec3 ContactSystem::centres_relative_acceleration_W(const PlaneContact& contact,
+                                                    const BodyMotion& a,
+                                                    const BodyMotion& b) const {
+  return moving_point_acceleration_W(a, contact.surface.centre_B, Vec3::Zero()) -
+         moving_point_acceleration_W(b, contact.other_surface.centre_B, Vec3::Zero());
+}
+
 double ContactSystem::pair_time_to_depth(std::size_t c) const {
   const PlaneContact& contact = contacts_[c];
   const BodyMotion a = dynamics_.motion(contact.body);
@@ -152,9 +159,7 @@ double ContactSystem::pair_time_to_depth(std::size_t c) const {
   // The gap's second derivative is n . (a_A - a_B), the centres' relative acceleration, plus the
   // square of their relative velocity across n over their distance, which is never negative: the
   // size of that relative acceleration bounds how fast the gap's rate can turn down.
-  const Vec3 relative_acceleration_W =
-      moving_point_acceleration_W(a, contact.surface.centre_B, Vec3::Zero()) -
-      moving_point_acceleration_W(b, contact.other_surface.centre_B, Vec3::Zero());
+  const Vec3 relative_acceleration_W = centres_relative_acceleration_W(contact, a, b);
   const ContactNow& now = d_.now[c];
   return first_root(now.support.height + s_.contacts[c].landing_height, now.support_normal_speed,
                     kGapTurningMargin * relative_acceleration_W.norm());
@@ -171,9 +176,7 @@ double ContactSystem::pair_gap_acceleration(std::size_t c) const {
   const Vec3 n = apart_W.normalized();
   const Vec3 relative_velocity_W = point_velocity_W(a, contact.surface.centre_B) -
                                    point_velocity_W(b, contact.other_surface.centre_B);
-  const Vec3 relative_acceleration_W =
-      moving_point_acceleration_W(a, contact.surface.centre_B, Vec3::Zero()) -
-      moving_point_acceleration_W(b, contact.other_surface.centre_B, Vec3::Zero());
+  const Vec3 relative_acceleration_W = centres_relative_acceleration_W(contact, a, b);
   const double along = n.dot(relative_velocity_W);
   return n.dot(relative_acceleration_W) +
          (relative_velocity_W.squaredNorm() - along * along) / apart_W.norm();

@@ -17,7 +17,8 @@
 //    impacts to round-off.
 //  - A ball striking a pendulum's bob (a sphere on a hinge, or a composite's sphere part):
 //    Newton's law with the bob's effective mass I_O / L^2, and the angular momentum about the
-//    pivot kept; struck plastically, the two are then pushed together, and the run ends there.
+//    pivot kept; struck plastically (a ballistic pendulum), one speed after, then the ball
+//    pressing on the bob, the angular momentum kept throughout.
 //  - A ball bounces off a dome (a sphere welded to ground), frictionless and with friction.
 //  - A rolling cue ball strikes an object ball on a table: both slide, then roll at 2/7 and 5/7
 //    of its speed.
@@ -428,26 +429,53 @@ TEST(SpherePairs, ABallStrikesACompositesSpherePart) {
   }
 }
 
-// With e = 0 the ball stays against the bob, which turns away along its circle while the ball
-// flies on straight: they come together again, slower than a settling touchdown, and are pushed
-// into each other, which impacts alone cannot model. The run says so at that instant, rather
-// than go on by a chatter of ever smaller impacts (or through the bob).
-TEST(SpherePairs, APlasticStrikeThatLeavesThemPressedTogetherIsRefusedWhereItBegins) {
-  PreparedSimulation simulation =
-      prepare_simulation(test::load_inline_scenario(ballistic_pendulum(0.0, 0.0), "plastic"));
-  const SimulationResult result = run_simulation(
-      simulation, [](double, std::span<const BodyState>, const SystemQuantities&) {});
-  ASSERT_FALSE(result.report.completed);
-  ASSERT_EQ(result.contact_events.size(), 2u);
-  EXPECT_NEAR(result.contact_events[0].impact->rebound_speed, 0.0, 1e-12);
-  EXPECT_EQ(result.contact_events[1].what.rfind("touchdown of 'ball' and 'bob'", 0), 0u)
-      << result.contact_events[1].what;
-  EXPECT_NE(result.contact_events[1].what.find("settles"), std::string::npos);
-  // Within a thousandth of a second of the strike (the bob has turned by a milliradian).
-  EXPECT_LT(result.report.t_reached - result.contact_events[0].t, 1e-3);
-  EXPECT_NE(result.report.failure.find("are pushed on at"), std::string::npos)
-      << result.report.failure;
-  EXPECT_NE(result.report.failure.find("contact that lasts"), std::string::npos);
+// With e = 0 (a ballistic pendulum: the ball stays in the bob) and no friction, the two leave
+// the strike at one speed along the line of centres, V = m u / (m + m_eff): the ball's impulse
+// is m (V - u), the bob turns at -V / L, and the angular momentum about the pivot, -L m u, is kept
+// through the strike. Then the bob turns away along its circle while the ball would fly on
+// straight: the ball presses on it, and the contact holds them (sliding) until it lets go.
+// Through all of it the only moment about the pivot is the hinge's, none: the angular momentum
+// is kept at every row, and the energy too from the strike on.
+TEST(SpherePairs, APlasticStrikeOnAPendulumLeavesThemAtOneSpeedThenPressing) {
+  const double L = 0.5, M = 1.0, Rb = 0.05, m = 0.2, u = 3.0;
+  const double I_O = M * L * L + 0.4 * M * Rb * Rb, m_eff = I_O / (L * L);
+  const double V = m * u / (m + m_eff);
+  const test::ScenarioRun run = test::run_inline_scenario(ballistic_pendulum(0.0, 0.0), "plastic");
+  ASSERT_GE(run.contact_events.size(), 3u);
+  const ContactEventRecord& strike = run.contact_events[0];
+  EXPECT_NEAR(strike.t, (0.5 - Rb - 0.02) / u, 1e-13);
+  ASSERT_TRUE(strike.impact.has_value());
+  EXPECT_NEAR(strike.impact->rebound_speed, 0.0, 1e-12 * u);
+  // The impulse on the ball (the contact's first body): m (V - u) along x, to 1e-12.
+  EXPECT_NEAR(strike.impact->impulse_W.x(), m * (V - u), 1e-12 * m * u);
+  EXPECT_NEAR(strike.impact->impulse_W.z(), 0.0, 1e-12 * m * u);
+  // The energy it took: the plastic strike's m m_eff u^2 / (2 (m + m_eff)).
+  EXPECT_NEAR(strike.impact->kinetic_energy_before - strike.impact->kinetic_energy_after,
+              m * m_eff * u * u / (2 * (m + m_eff)), 1e-12 * m * u * u);
+  // They press: the contact holds them after the strike (a settling touch may come first, the
+  // bob's circle leaving the straight line by the cube of the time), and then lets go.
+  double pressed_t = std::nan(""), let_go_t = std::nan("");
+  for (const ContactEventRecord& e : run.contact_events) {
+    if (e.what == "slides" && std::isnan(pressed_t)) pressed_t = e.t;
+    if (e.what == "lifts off" && !std::isnan(pressed_t)) let_go_t = e.t;
+  }
+  EXPECT_LT(pressed_t - strike.t, 1e-3) << "pressed within a millisecond of the strike";
+  EXPECT_GT(let_go_t, pressed_t);
+  const double L0 = run.rows.front().quantities.angular_momentum_about_origin.y();
+  EXPECT_NEAR(L0, -L * m * u, 1e-15);
+  double E_after = std::nan("");
+  for (const test::Row& row : run.rows) {
+    EXPECT_NEAR(row.quantities.angular_momentum_about_origin.y(), L0, 1e-12 * std::abs(L0))
+        << row.t;
+    if (row.t <= strike.t) continue;
+    if (std::isnan(E_after)) E_after = row.quantities.total_energy;
+    EXPECT_NEAR(row.quantities.total_energy, E_after, 1e-12 * m * u * u) << row.t;
+    EXPECT_GE(row.extras.contacts[0].normal_force, 0.0) << row.t << ": it only pushes";
+    if (row.t > pressed_t && row.t < let_go_t) {
+      EXPECT_EQ(row.extras.contacts[0].mode, 1) << row.t;
+      EXPECT_GT(row.extras.contacts[0].normal_force, 0.0) << row.t;
+    }
+  }
 }
 
 // A ball dropped from rest onto a dome: a fixed obstacle stated as a sphere welded to ground

@@ -39,6 +39,7 @@ struct ContactNow {
   // A two-point part: each end's slip, the tangential velocity of the body's point there.
   std::array<Vec3, 2> end_slip_W = {Vec3::Zero(), Vec3::Zero()};
   Vec6 wrench_B = Vec6::Zero();          // the contact's (moment about the COM; force), body axes
+  Vec6 other_wrench_B = Vec6::Zero();    // between two bodies: the other's, in its axes
   Vec3 force_W = Vec3::Zero();           // its force
   double normal_force = 0.0;             // force_W's component along the plane's normal
   Vec3 friction_W = Vec3::Zero();        // force_W's tangential part
@@ -52,13 +53,17 @@ struct ContactNow {
   Vec3 least_point_B = Vec3::Zero();
   // A contact between two bodies: the normal (unit, world) from the other body's sphere towards
   // this body's, and the reference point O (the midpoint of the spheres' nearest points) from
-  // the other body's COM, its axes. velocity_W is this body's point there less the other's.
+  // the other body's COM, its axes, and how fast O moves over that body (as over this one,
+  // reference_rate_B). velocity_W is this body's point there less the other's.
   Vec3 pair_normal_W = Vec3::UnitZ();
   Vec3 other_reference_B = Vec3::Zero();
+  Vec3 other_reference_rate_B = Vec3::Zero();
 };
 
 // One unknown of the contact forces and the constraint row that goes with it: the row is
 // linear_W . (velocity or acceleration of the material point at point_B) + angular_W . omega.
+// Between two bodies, the row is the body's point's less the other body's point's at
+// other_point_B (its axes), and the unknown pushes the other body by other_wrench_B.
 struct ContactUnknown {
   std::size_t contact = 0;
   Vec3 point_B = Vec3::Zero();
@@ -69,6 +74,12 @@ struct ContactUnknown {
   int anchor = -1;      // a sticking polyhedron's row: the ContactStatus::anchor_W it holds
   int end = -1;         // a two-point part's row: the end (0, 1) whose force it carries
   Vec6 wrench_B = Vec6::Zero();  // per unit of the unknown: (moment about the COM; force)
+  Vec3 other_point_B = Vec3::Zero();
+  Vec3 other_point_rate_B = Vec3::Zero();
+  Vec6 other_wrench_B = Vec6::Zero();
+  // What the row's direction turning adds to its rate (m/s^2): between two spheres the normal
+  // turns as the line of their centres does.
+  double turning_acceleration = 0.0;
 };
 
 struct ContactData {

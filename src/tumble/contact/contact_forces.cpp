@@ -57,12 +57,14 @@ ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
     const PlaneContact& contact = contacts_[c];
     reserve_feature(s_.contacts[c].feature, contact.surface.vertices.size());
     pairs_.push_back(&contact_pair(contact.surface.kind));
-    // A pair of bodies has no rows in the force solve (sphere_pairs.cpp): it is apart, or meets
-    // in an impact.
-    const bool held = !contact.touches_a_body() && !dynamics_.moves_freely(contact.body);
-    held_polyhedron_.push_back(held && pairs_.back()->held_point_by_point());
-    any_held_ = any_held_ || held;
+    const bool pair = contact.touches_a_body();
+    const bool held = !dynamics_.moves_freely(contact.body);
+    // A polyhedron's points are held one by one on a held body; two bodies' spheres touch at one
+    // point (sphere_pairs.cpp), which either may hold.
+    held_polyhedron_.push_back(!pair && held && pairs_.back()->held_point_by_point());
+    any_held_ = any_held_ || held || (pair && !dynamics_.moves_freely(contact.other_body));
     heaviest = std::max(heaviest, bodies_[contact.body].mass);
+    if (pair) heaviest = std::max(heaviest, bodies_[contact.other_body].mass);
   }
   // A free body's response to a unit force is at least 1/m: a floor far below every real one.
   if (heaviest > 0.0) least_response_ = kRoundOffResponse / heaviest;
@@ -195,7 +197,9 @@ void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> h
     const ContactNow& now = d_.now[c];
     ContactHold& hold = holds[c];
     hold = ContactHold{};
-    if (status.mode == ContactMode::Apart) continue;
+    // Two bodies touching: the Jacobian leaves their contact out, which costs Newton a little
+    // (more iterations), not the answer (the run's own forces hold it).
+    if (status.mode == ContactMode::Apart || contacts_[c].touches_a_body()) continue;
     if (now.normal_point_count != 1 || now.spin_radius != 0.0) {
       calc_points_hold(c, hold);
       continue;
@@ -264,6 +268,7 @@ Vec3 ContactSystem::moving_point_acceleration_W(const BodyMotion& w, const Vec3&
 Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode mode,
                                                     ContactRows rows, const Vec3& slide_W,
                                                     Eigen::Index count) const {
+  if (contacts_[c].touches_a_body()) return append_pair_unknowns(c, mode, rows, slide_W, count);
   const PlaneContact& contact = contacts_[c];
   const ContactNow& now = d_.now[c];
   const Mat3& R = dynamics_.motion(contact.body).R_WB;
@@ -395,35 +400,61 @@ Eigen::Index ContactSystem::gather_contact_unknowns(ContactRows rows) const {
   return count;
 }
 
-double ContactSystem::row_velocity(const ContactUnknown& row) const {
-  const BodyMotion w = dynamics_.motion(contacts_[row.contact].body);
+namespace {
+
+// A row's value on a body's velocity (w.velocity) or its response to a unit wrench
+// (w.acceleration, the impulsive passes': no velocity terms), at the row's point p_B.
+double row_on_velocity(const ContactUnknown& row, const BodyMotion& w, const Vec3& p_B) {
   const Vec3 omega_B = w.velocity.head<3>();
-  return row.linear_W.dot(w.R_WB * (w.velocity.tail<3>() + omega_B.cross(row.point_B))) +
+  return row.linear_W.dot(w.R_WB * (w.velocity.tail<3>() + omega_B.cross(p_B))) +
          row.angular_W.dot(w.R_WB * omega_B);
+}
+double row_on_response(const ContactUnknown& row, const BodyMotion& w, const Vec3& p_B) {
+  const Vec3 alpha_B = w.acceleration.head<3>();
+  return row.linear_W.dot(w.R_WB * (w.acceleration.tail<3>() + alpha_B.cross(p_B))) +
+         row.angular_W.dot(w.R_WB * alpha_B);
+}
+
+}  // namespace
+
+double ContactSystem::row_velocity(const ContactUnknown& row) const {
+  const PlaneContact& contact = contacts_[row.contact];
+  double velocity = row_on_velocity(row, dynamics_.motion(contact.body), row.point_B);
+  if (contact.touches_a_body()) {
+    velocity -= row_on_velocity(row, dynamics_.motion(contact.other_body), row.other_point_B);
+  }
+  return velocity;
+}
+
+void ContactSystem::add_contact_response(Eigen::Index j, std::size_t body, const Vec6& wrench_B,
+                                         Eigen::Index count) const {
+  // Only the bodies that move with this one (hung through joints from the same ground joint)
+  // respond: the others' rows respond with nothing, and their passes are skipped (three bodies
+  // racing down a ramp: a third of the work).
+  dynamics_.respond_to_unit_wrench({body, wrench_B});
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
+    const PlaneContact& contact = contacts_[row.contact];
+    // The linear response of the row: its body's point's, less the other body's point's.
+    if (dynamics_.moves_with(contact.body, body)) {
+      d_.matrix(i, j) += row_on_response(row, dynamics_.motion(contact.body), row.point_B);
+    }
+    if (contact.touches_a_body() && dynamics_.moves_with(contact.other_body, body)) {
+      d_.matrix(i, j) -=
+          row_on_response(row, dynamics_.motion(contact.other_body), row.other_point_B);
+    }
+  }
 }
 
 void ContactSystem::calc_contact_matrix(Eigen::Index count) const {
   for (Eigen::Index j = 0; j < count; ++j) {
     const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
-    const std::size_t body = contacts_[u.contact].body;
-    // Only the bodies that move with this one (hung through joints from the same ground joint)
-    // respond: the others' rows respond with nothing, and their passes are skipped (three
-    // bodies racing down a ramp: a third of the work).
-    dynamics_.respond_to_unit_wrench({body, u.wrench_B});
-    for (Eigen::Index i = 0; i < count; ++i) {
-      const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
-      const std::size_t row_body = contacts_[row.contact].body;
-      if (!dynamics_.moves_with(row_body, body)) {
-        d_.matrix(i, j) = 0.0;
-        continue;
-      }
-      const BodyMotion w = dynamics_.motion(row_body);
-      // The linear response of the row: no velocity terms in the impulsive passes.
-      const Vec3 alpha_B = w.acceleration.head<3>();
-      d_.matrix(i, j) =
-          row.linear_W.dot(w.R_WB * (w.acceleration.tail<3>() + alpha_B.cross(row.point_B))) +
-          row.angular_W.dot(w.R_WB * alpha_B);
-    }
+    const PlaneContact& contact = contacts_[u.contact];
+    d_.matrix.col(j).head(count).setZero();
+    add_contact_response(j, contact.body, u.wrench_B, count);
+    // Between two bodies, the unknown pushes the other body too (the opposite force).
+    if (contact.touches_a_body())
+      add_contact_response(j, contact.other_body, u.other_wrench_B, count);
   }
 }
 
@@ -436,20 +467,32 @@ void ContactSystem::solve_forces() const {
   // psi_0 for each row: the acceleration of its point, which turns with the body and may also
   // move over it (moving_point_acceleration_W); an angular row's is alpha (its direction is fixed
   // in the world).
+  // Between two bodies, it is the body's point's less the other body's point's, and the normal's
+  // turning adds its own term.
   for (Eigen::Index i = 0; i < count; ++i) {
     const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
-    const BodyMotion w = dynamics_.motion(contacts_[row.contact].body);
+    const PlaneContact& contact = contacts_[row.contact];
+    const BodyMotion w = dynamics_.motion(contact.body);
     d_.rhs(i) = -row.linear_W.dot(moving_point_acceleration_W(w, row.point_B, row.point_rate_B)) -
-                row.angular_W.dot(w.R_WB * w.acceleration.head<3>());
+                row.angular_W.dot(w.R_WB * w.acceleration.head<3>()) - row.turning_acceleration;
+    if (contact.touches_a_body()) {
+      const BodyMotion o = dynamics_.motion(contact.other_body);
+      d_.rhs(i) += row.linear_W.dot(
+                       moving_point_acceleration_W(o, row.other_point_B, row.other_point_rate_B)) +
+                   row.angular_W.dot(o.R_WB * o.acceleration.head<3>());
+    }
   }
   calc_contact_matrix(count);
   solve_contact_system(count, d_.rhs, RowQuantity::Acceleration);
   set_contact_resultants(count, d_.rhs);
+  std::size_t wrench_count = 0;
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
-    d_.wrenches[c] = {contacts_[c].body, d_.now[c].wrench_B};
+    d_.wrenches[wrench_count++] = {contacts_[c].body, d_.now[c].wrench_B};
+    if (contacts_[c].touches_a_body()) {
+      d_.wrenches[wrench_count++] = {contacts_[c].other_body, d_.now[c].other_wrench_B};
+    }
   }
-  dynamics_.solve_under_loads_and(
-      std::span<const BodyWrench>(d_.wrenches.data(), contacts_.size()));
+  dynamics_.solve_under_loads_and(std::span<const BodyWrench>(d_.wrenches.data(), wrench_count));
 }
 
 void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantity rows) const {
@@ -506,6 +549,7 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
 void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) const {
   for (ContactNow& now : d_.now) {
     now.wrench_B.setZero();
+    now.other_wrench_B.setZero();
     now.end_normal_force = {0.0, 0.0};
     now.end_friction_W = {Vec3::Zero(), Vec3::Zero()};
   }
@@ -513,6 +557,7 @@ void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) co
     const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
     ContactNow& now = d_.now[u.contact];
     now.wrench_B += x(j) * u.wrench_B;
+    now.other_wrench_B += x(j) * u.other_wrench_B;
     if (u.end >= 0) {
       const auto k = static_cast<std::size_t>(u.end);
       const Vec3& n = contacts_[u.contact].normal_W;
@@ -523,7 +568,7 @@ void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) co
   }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     ContactNow& now = d_.now[c];
-    const Vec3& n = contacts_[c].normal_W;
+    const Vec3& n = normal_of(c);
     const Mat3& R = dynamics_.motion(contacts_[c].body).R_WB;
     const Vec3 F_B = now.wrench_B.tail<3>();
     now.force_W = R * F_B;
@@ -551,13 +596,16 @@ void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) co
 }
 
 void ContactSystem::respond_to_contact_impulses(Eigen::Index count, const VecX& impulses) const {
+  std::size_t wrench_count = 0;
   for (Eigen::Index j = 0; j < count; ++j) {
     const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
-    d_.wrenches[static_cast<std::size_t>(j)] = {contacts_[u.contact].body,
-                                                impulses(j) * u.wrench_B};
+    const PlaneContact& contact = contacts_[u.contact];
+    d_.wrenches[wrench_count++] = {contact.body, impulses(j) * u.wrench_B};
+    if (contact.touches_a_body()) {
+      d_.wrenches[wrench_count++] = {contact.other_body, impulses(j) * u.other_wrench_B};
+    }
   }
-  dynamics_.respond_to_impulses(
-      std::span<const BodyWrench>(d_.wrenches.data(), static_cast<std::size_t>(count)));
+  dynamics_.respond_to_impulses(std::span<const BodyWrench>(d_.wrenches.data(), wrench_count));
 }
 
 void ContactSystem::apply_contact_impulses(Eigen::Index count, const VecX& impulses,
@@ -569,7 +617,11 @@ void ContactSystem::apply_contact_impulses(Eigen::Index count, const VecX& impul
 void ContactSystem::write_powers(VecX& rates, Eigen::Index offset) const {
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const BodyMotion w = dynamics_.motion(contacts_[c].body);
-    rates(offset + dynamics_.work_entry(c)) = d_.now[c].wrench_B.dot(w.velocity);
+    double power = d_.now[c].wrench_B.dot(w.velocity);
+    if (contacts_[c].touches_a_body()) {
+      power += d_.now[c].other_wrench_B.dot(dynamics_.motion(contacts_[c].other_body).velocity);
+    }
+    rates(offset + dynamics_.work_entry(c)) = power;
   }
 }
 
@@ -589,7 +641,9 @@ void ContactSystem::project_feature_positions(VecX& y) const {
     const ContactStatus& status = s_.contacts[row.contact];
     const BodyMotion w = dynamics_.motion(contact.body);
     const Vec3 x_P = w.r_G_W + w.R_WB * row.point_B;
-    if (row.anchor < 0) {
+    if (contact.touches_a_body()) {
+      d_.x(i) = -d_.now[row.contact].support.height;  // the gap: a pair's one position row
+    } else if (row.anchor < 0) {
       d_.x(i) = -(x_P - contact.point_W).dot(contact.normal_W);
     } else {
       // Off the anchor: the point's offset, and the small turn R_WB R_anchor^T as a vector.
@@ -616,8 +670,8 @@ void ContactSystem::project(double t, VecX& y) const {
   bool features = false;
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     if (s_.contacts[c].mode == ContactMode::Apart) continue;
-    features |=
-        !pairs_[c]->projects_along_normal(view(c)) || !dynamics_.moves_freely(contacts_[c].body);
+    features |= contacts_[c].touches_a_body() || !pairs_[c]->projects_along_normal(view(c)) ||
+                !dynamics_.moves_freely(contacts_[c].body);
   }
   if (features) {
     dynamics_.calc_motion(y, true);

@@ -110,6 +110,8 @@ ContactSystem::EndFrictions ContactSystem::end_frictions(std::size_t c, double e
 }
 
 double ContactSystem::stick_margin(std::size_t c, double edge) const {
+  // Friction without a limit (`friction: inf`, between two bodies): it never slips.
+  if (std::isinf(contacts_[c].friction)) return 1.0;
   if (!two_point(c)) {
     return edge * contacts_[c].friction * d_.now[c].normal_force - friction_demand(c).norm();
   }
@@ -180,14 +182,14 @@ void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
     const ContactStatus& status = s_.contacts[c];
     const PlaneContact& contact = contacts_[c];
     g(base) = g(base + 1) = g(base + 2) = 1.0;
-    if (contact.touches_a_body()) {  // apart, its spheres' gap; they meet in impacts
-      g(base) = watched_height(c, now.support.height, now.support_normal_speed);
-      continue;
-    }
-    // Apart, the point nearest to landing; touching, a polyhedron or a round body watches the
-    // part that may land next.
+    // Apart, the point nearest to landing (two bodies: their spheres' gap); touching, a
+    // polyhedron or a round body watches the part that may land next.
     Vec3 landing_B = Vec3::Zero();
-    if (status.mode == ContactMode::Apart) {
+    if (contact.touches_a_body()) {
+      if (status.mode == ContactMode::Apart) {
+        g(base) = watched_height(c, now.support.height, now.support_normal_speed);
+      }
+    } else if (status.mode == ContactMode::Apart) {
       g(base) = landing_watch(c, landing_B);
     } else if (pairs_[c]->lands_while_touching()) {
       g(base) = watched_height(c, now.support.height, now.support_normal_speed);
@@ -905,6 +907,8 @@ void ContactSystem::begin(double t0, const VecX& y) {
     pairs_[c]->find_touching_part(v, status.touching_height, false);
     classify_contact(c, t0, y_start);
   }
+  // Two bodies touching at the start press on each other if they are pushed together.
+  enter_pressed_pairs(t0, y_start);
   note_event_numbers(0, y_start);
 }
 
@@ -932,6 +936,7 @@ bool ContactSystem::still_touches_after_jump(std::size_t c, const VecX& y) {
   dynamics_.calc_motion(y, true);
   calc_contact_points();
   const ContactNow& now = d_.now[c];
+  if (contacts_[c].touches_a_body()) return !(now.support_normal_speed > status.slip_zero);
   int leaving = 0;
   for (int k = 0; k < now.normal_point_count; ++k) {
     if (normal_speed(c, now.normal_points_B[static_cast<std::size_t>(k)]) > status.slip_zero) {

@@ -118,6 +118,9 @@ class ContactSystem {
   // The constraint matrix A (rows: the unknowns' rows, columns: their forces) from the responses
   // to unit wrenches.
   void calc_contact_matrix(Eigen::Index count) const;
+  // Adds to A's column j the leading count rows' response to a unit wrench on one body.
+  void add_contact_response(Eigen::Index j, std::size_t body, const Vec6& wrench_B,
+                            Eigen::Index count) const;
   // What the rows measure: their zero is the contacts' own (the largest touching height, slip
   // zero, or slip zero over the time scale): dependent rows whose right-hand sides differ by
   // less agree.
@@ -294,8 +297,19 @@ class ContactSystem {
   Vec3 centres_relative_acceleration_W(const PlaneContact& contact, const BodyMotion& a,
                                        const BodyMotion& b) const;
   // The second derivative of the pair's gap (m/s^2), after a solve: < 0, the bodies are pushed
-  // into each other.
+  // into each other. Its part from the line of centres turning, |v_t|^2 / d (after calc_motion).
   double pair_gap_acceleration(std::size_t contact) const;
+  double pair_normal_turning(std::size_t contact) const;
+  // A touching pair's unknowns (append_contact_unknowns' for two bodies): the normal row, and
+  // rolling or sticking, the two tangential ones.
+  Eigen::Index append_pair_unknowns(std::size_t contact, ContactMode mode, ContactRows rows,
+                                    const Vec3& slide_W, Eigen::Index count) const;
+  // A touching pair's slip acceleration (slip_acceleration's), after a solve.
+  Vec3 pair_slip_acceleration(std::size_t contact) const;
+  // Each pair apart at y that touches with no normal speed, and that with no force between them
+  // would be pushed into each other, is classified (it rolls, sticks or slides); the others stay
+  // apart.
+  void enter_pressed_pairs(double t, VecX& y);
   // The impacts at a pair's touchdown: one pair at a time, the touching pair that approaches
   // fastest first, until no touching pair approaches (docs/scenario.md, "Bodies that touch").
   void pair_impacts(std::size_t contact, double t, VecX& y);

@@ -63,7 +63,7 @@ bool ContactSystem::start_sliding(std::size_t c, double t, const VecX& y) {
 bool ContactSystem::turn_starting_slip(std::size_t c, double t, const VecX& y) {
   ContactStatus& status = s_.contacts[c];
   const Vec3 d0 = status.slide_direction_W;
-  const Vec3& n = contacts_[c].normal_W;
+  const Vec3 n = normal_of(c);  // (a pair's turns with the states tried below)
 
   // The jerk with the direction held, along the motion the derivative gives.
   const double dt = kOnsetTimeStep * status.time_scale;
@@ -166,15 +166,16 @@ void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& 
   ContactStatus& status = s_.contacts[c];
   const ContactStatus sliding = status;
   const ContactNow& now = d_.now[c];
+  const bool pair = contacts_[c].touches_a_body();
   // The part's points, as the body's points there, and the other end's lowest rim point, which
-  // moves over the body as it turns.
+  // moves over the body as it turns. (Two bodies: their gap.)
   std::array<SurfacePoint, 4> points;
   std::size_t count = 0;
-  for (int k = 0; k < now.normal_point_count; ++k) {
+  for (int k = 0; k < now.normal_point_count && !pair; ++k) {
     points[count++] = {now.normal_points_B[static_cast<std::size_t>(k)], Vec3::Zero()};
   }
   SurfacePoint other;
-  if (pairs_[c]->other_end_B(view(c), other) &&
+  if (!pair && pairs_[c]->other_end_B(view(c), other) &&
       height_above_plane(c, other.p_B) <= status.touching_height) {
     points[count++] = other;
   }
@@ -182,7 +183,7 @@ void ContactSystem::lift_off_or_hold_slide(std::size_t c, double t, const VecX& 
   calc_accelerations(y);
   // A zero of what the normal acceleration is measured against (gravity's scale).
   const double tolerance = status.slip_zero / status.time_scale;
-  bool leaves = true;
+  bool leaves = !pair || pair_gap_acceleration(c) >= -tolerance;
   for (std::size_t k = 0; k < count; ++k) {
     leaves = leaves && normal_acceleration(c, points[k].p_B, points[k].rate_B) >= -tolerance;
   }
@@ -207,6 +208,7 @@ Vec3 ContactSystem::slip_acceleration_at(std::size_t c, const VecX& y, const Vec
 Vec3 ContactSystem::slip_acceleration(std::size_t c) const {
   // slip_W = the tangential part of O's velocity + rho (omega . n) n, with O moving over the
   // body at its rate and n fixed in the world.
+  if (contacts_[c].touches_a_body()) return pair_slip_acceleration(c);
   const ContactNow& now = d_.now[c];
   const BodyMotion w = dynamics_.motion(contacts_[c].body);
   const Vec3& n = contacts_[c].normal_W;

@@ -1,13 +1,19 @@
 // Two bodies touching at their spheres (docs/scenario.md, "Bodies that touch each other"): a
-// contact between two bodies, free or held by joints, in one tree or not. For now the pair is
-// apart, its gap watched by the touchdown event, or meets in an impact; contact that lasts
-// (pressing, sliding, rolling on each other) ends the run where it would begin.
+// contact between two bodies, free or held by joints, in one tree or not. The pair is apart, its
+// gap watched by the touchdown event, meets in an impact, or presses, slides and rolls on itself
+// in the modes a plane's contact has (contact_modes.cpp), with the same events.
 //
 // The gap is the distance between the spheres' centres less their radii, and the normal n runs
 // from the other body's sphere towards the body's. Both spheres' points on the line of centres
 // move along it as the centres do, so the gap's rate is n . (the bodies' relative velocity at
 // any point of that line); the reference point O is the midpoint of the spheres' nearest points,
 // which is the contact point when they touch.
+//
+// Touching, the rows are a plane's, relative: the normal row holds the gap's rate, measured at
+// the two centres, and its rate gains the line of centres' turning, |v_t|^2 / d (v_t the
+// centres' relative velocity across n, d their distance); rolling or sticking, two more hold
+// the tangential velocity of the body's point at O less the other's, O moving over each body as
+// n turns. Each unknown pushes the body at O and the other body at O the opposite way.
 //
 // Impacts: Newton's restitution on the normal motion and Coulomb's friction on the impulse, as a
 // plane's (contact_modes.cpp, impact): the impulse that leaves no slip if it lies in the cone,
@@ -62,6 +68,25 @@ Vec3 point_response_W(const BodyMotion& w, const Vec3& p_B) {
   return w.R_WB * (w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p_B));
 }
 
+// The line of a pair's sphere centres, the body's (motion a) and the other's (motion b): the unit
+// n from the other's centre to the body's (any, where they coincide), their distance, and their
+// relative velocity (the body's centre's less the other's).
+struct CentresLine {
+  Vec3 n_W = Vec3::UnitZ();
+  double distance = 0.0;
+  Vec3 relative_velocity_W = Vec3::Zero();
+};
+CentresLine centres_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
+  CentresLine line;
+  const Vec3 apart_W =
+      sphere_centre_W(a, contact.surface) - sphere_centre_W(b, contact.other_surface);
+  line.distance = apart_W.norm();
+  if (line.distance > 0.0) line.n_W = apart_W / line.distance;
+  line.relative_velocity_W = point_velocity_W(a, contact.surface.centre_B) -
+                             point_velocity_W(b, contact.other_surface.centre_B);
+  return line;
+}
+
 }  // namespace
 
 ContactScales pair_contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
@@ -85,19 +110,27 @@ void ContactSystem::calc_pair_point(std::size_t c) const {
   const PlaneContact& contact = contacts_[c];
   const BodyMotion a = dynamics_.motion(contact.body);
   const BodyMotion b = dynamics_.motion(contact.other_body);
-  const Vec3 centre_a_W = sphere_centre_W(a, contact.surface);
-  const Vec3 centre_b_W = sphere_centre_W(b, contact.other_surface);
-  const Vec3 apart_W = centre_a_W - centre_b_W;
-  const double distance = apart_W.norm();
-  ContactNow& now = d_.now[c];
   // Concentric spheres have no normal (they overlap, which the start refuses): any will do.
-  now.pair_normal_W = distance > 0.0 ? Vec3(apart_W / distance) : Vec3::UnitZ();
+  const CentresLine line = centres_line(contact, a, b);
+  ContactNow& now = d_.now[c];
+  now.pair_normal_W = line.n_W;
   const Vec3& n = now.pair_normal_W;
+  const double distance = line.distance;
   const double gap = distance - contact.surface.radius - contact.other_surface.radius;
-  const Vec3 O_W = centre_b_W + (contact.other_surface.radius + 0.5 * gap) * n;
+  const Vec3 O_W =
+      sphere_centre_W(b, contact.other_surface) + (contact.other_surface.radius + 0.5 * gap) * n;
   now.reference_B = a.R_WB.transpose() * (O_W - a.r_G_W);
   now.other_reference_B = b.R_WB.transpose() * (O_W - b.r_G_W);
-  now.reference_rate_B.setZero();
+  // How fast O moves over each body: n turns at (v_t / d), and over a body turning at omega it
+  // turns at that less omega x n.
+  const Vec3& v_W = line.relative_velocity_W;
+  const Vec3 n_rate_W =
+      distance > 0.0 ? Vec3((v_W - n * n.dot(v_W)) / distance) : Vec3(Vec3::Zero());
+  const Vec3 omega_a_W = a.R_WB * a.velocity.head<3>(), omega_b_W = b.R_WB * b.velocity.head<3>();
+  now.reference_rate_B =
+      -(contact.surface.radius + 0.5 * gap) * a.R_WB.transpose() * (n_rate_W - omega_a_W.cross(n));
+  now.other_reference_rate_B = (contact.other_surface.radius + 0.5 * gap) * b.R_WB.transpose() *
+                               (n_rate_W - omega_b_W.cross(n));
   now.n_B = a.R_WB.transpose() * n;
   now.support = {now.reference_B, gap};
   now.normal_points_B[0] = now.reference_B;
@@ -109,6 +142,7 @@ void ContactSystem::calc_pair_point(std::size_t c) const {
   now.support_normal_speed = n.dot(now.velocity_W);
   now.slip_W = now.velocity_W - n * now.support_normal_speed;
   now.wrench_B.setZero();
+  now.other_wrench_B.setZero();
   now.force_W.setZero();
   now.friction_W.setZero();
   now.moment_about_O_B.setZero();
@@ -165,31 +199,108 @@ double ContactSystem::pair_time_to_depth(std::size_t c) const {
                     kGapTurningMargin * relative_acceleration_W.norm());
 }
 
+double ContactSystem::pair_normal_turning(std::size_t c) const {
+  const PlaneContact& contact = contacts_[c];
+  // n = (c_A - c_B) / d turns at v_t / d, v_t the centres' relative velocity across n: n' . v is
+  // |v_t|^2 / d.
+  const CentresLine line =
+      centres_line(contact, dynamics_.motion(contact.body), dynamics_.motion(contact.other_body));
+  if (!(line.distance > 0.0)) return 0.0;
+  const double along = line.n_W.dot(line.relative_velocity_W);
+  return (line.relative_velocity_W.squaredNorm() - along * along) / line.distance;
+}
+
 double ContactSystem::pair_gap_acceleration(std::size_t c) const {
   const PlaneContact& contact = contacts_[c];
   const BodyMotion a = dynamics_.motion(contact.body);
   const BodyMotion b = dynamics_.motion(contact.other_body);
-  // The distance d between the centres: d'' = n . (a_A - a_B) + |v_A - v_B|^2 less its part
-  // along n, over d (the line of centres turning).
-  const Vec3 apart_W =
-      sphere_centre_W(a, contact.surface) - sphere_centre_W(b, contact.other_surface);
-  const Vec3 n = apart_W.normalized();
-  const Vec3 relative_velocity_W = point_velocity_W(a, contact.surface.centre_B) -
-                                   point_velocity_W(b, contact.other_surface.centre_B);
-  const Vec3 relative_acceleration_W = centres_relative_acceleration_W(contact, a, b);
-  const double along = n.dot(relative_velocity_W);
-  return n.dot(relative_acceleration_W) +
-         (relative_velocity_W.squaredNorm() - along * along) / apart_W.norm();
+  // The distance d between the centres: d'' = n . (a_A - a_B) + n' . (v_A - v_B).
+  return centres_line(contact, a, b).n_W.dot(centres_relative_acceleration_W(contact, a, b)) +
+         pair_normal_turning(c);
+}
+
+Eigen::Index ContactSystem::append_pair_unknowns(std::size_t c, ContactMode mode, ContactRows rows,
+                                                 const Vec3& slide_W, Eigen::Index count) const {
+  if (mode == ContactMode::Apart) return count;
+  const PlaneContact& contact = contacts_[c];
+  const ContactNow& now = d_.now[c];
+  const Mat3& R_a = dynamics_.motion(contact.body).R_WB;
+  const Mat3& R_b = dynamics_.motion(contact.other_body).R_WB;
+  const Vec3& n = now.pair_normal_W;
+  const Vec3 zero = Vec3::Zero();
+  const auto add = [&](const Vec3& p_B, const Vec3& rate_B, const Vec3& other_p_B,
+                       const Vec3& other_rate_B, const Vec3& linear_W, bool normal,
+                       const Vec3& force_W, double turning) {
+    ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(count++)];
+    u = ContactUnknown{};
+    u.contact = c;
+    u.point_B = p_B;
+    u.point_rate_B = rate_B;
+    u.linear_W = linear_W;
+    u.normal = normal;
+    u.wrench_B = wrench_at(R_a, now.reference_B, force_W, zero);
+    u.other_point_B = other_p_B;
+    u.other_point_rate_B = other_rate_B;
+    u.other_wrench_B = wrench_at(R_b, now.other_reference_B, -force_W, zero);
+    u.turning_acceleration = turning;
+  };
+  // The normal row: the gap's rate, at the centres (the same as at O: n is along both radii).
+  // Sliding, its force carries Coulomb's friction mu N against the slip at O.
+  const bool slides = mode == ContactMode::Sliding && rows == ContactRows::Motion;
+  const double mu = slides ? contact.friction : 0.0;
+  const Vec3 along_W = slide_W - n * n.dot(slide_W);
+  const double turning = rows == ContactRows::Motion ? pair_normal_turning(c) : 0.0;
+  add(contact.surface.centre_B, zero, contact.other_surface.centre_B, zero, n, true,
+      n - mu * along_W, turning);
+  if (mode == ContactMode::Sliding || rows == ContactRows::Position) return count;
+  // Rolling or sticking: O's tangential velocity on the body less that on the other, as O moves
+  // over both. (The tangents turn with n too, which adds t' . v_O: zero while the rows hold.)
+  Vec3 t1, t2;
+  plane_basis(n, t1, t2);
+  for (const Vec3* t : {&t1, &t2}) {
+    add(now.reference_B, now.reference_rate_B, now.other_reference_B, now.other_reference_rate_B,
+        *t, false, *t, 0.0);
+  }
+  return count;
+}
+
+Vec3 ContactSystem::pair_slip_acceleration(std::size_t c) const {
+  // The slip's rate: O's relative acceleration, its part across n (the slip being ~0 where this
+  // is asked, n's turning adds nothing to it).
+  const PlaneContact& contact = contacts_[c];
+  const ContactNow& now = d_.now[c];
+  const Vec3 a_W = moving_point_acceleration_W(dynamics_.motion(contact.body), now.reference_B,
+                                               now.reference_rate_B) -
+                   moving_point_acceleration_W(dynamics_.motion(contact.other_body),
+                                               now.other_reference_B, now.other_reference_rate_B);
+  const Vec3& n = now.pair_normal_W;
+  return a_W - n * n.dot(a_W);
+}
+
+void ContactSystem::enter_pressed_pairs(double t, VecX& y) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const ContactStatus& status = s_.contacts[c];
+    if (!contacts_[c].touches_a_body() || status.mode != ContactMode::Apart) continue;
+    calc_accelerations(y);
+    const ContactNow& now = d_.now[c];
+    if (now.support.height > status.touching_height ||
+        std::abs(now.support_normal_speed) > status.slip_zero) {
+      continue;
+    }
+    // Touching with nothing between them: pushed into each other (the gap's acceleration with
+    // no force there below zero), the contact holds them from here; otherwise they stay apart.
+    if (-pair_gap_acceleration(c) > status.slip_zero / status.time_scale) {
+      classify_contact(c, t, y, true);
+    }
+  }
 }
 
 void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   dynamics_.calc_motion(y, true);
   calc_contact_points();
-  const PlaneContact& contact = contacts_[first];
-  const ContactStatus& status = s_.contacts[first];
-  const double approach = -d_.now[first].support_normal_speed;
-  if (!(approach > status.slip_zero)) return;  // the gap closed as they turned away: no impact
-  for (int round = 0;; ++round) {
+  // A gap that closed as they turned away (or that something slowly pushes shut) needs no impact.
+  const bool strikes = -d_.now[first].support_normal_speed > s_.contacts[first].slip_zero;
+  for (int round = 0; strikes; ++round) {
     // The touching pair that approaches fastest (the first in the file among equals).
     std::size_t fastest = contacts_.size();
     double fastest_approach = 0.0;
@@ -217,20 +328,11 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
     dynamics_.calc_motion(y, true);
     calc_contact_points();
   }
-  // A settling touchdown leaves the pair together with no speed between them. Where something
-  // pushes them into each other (a ball resting on another; a plastic strike, whose bodies then
-  // turn into each other), only contact that lasts would hold them, and the run ends here rather
-  // than go on by a chatter of ever smaller impacts.
-  if (approach > status.settle_speed) return;
-  calc_accelerations(y);
-  const double pressing = -pair_gap_acceleration(first);
-  if (pressing > status.slip_zero / status.time_scale) {
-    throw std::runtime_error(fmt::format(
-        "contact '{}': bodies '{}' and '{}' settle against each other at t = {:.9g} s and are "
-        "pushed on at {:.3g} m/s^2: contact that lasts between two bodies (one resting, "
-        "sliding or rolling on the other) is not built yet, only their impacts",
-        contact.name, bodies_[contact.body].name, bodies_[contact.other_body].name, t, pressing));
-  }
+  // A settling touchdown or a plastic strike leaves a pair together with no speed between them.
+  // Where something pushes them into each other (a ball resting on another; a bullet in a
+  // pendulum's bob, which then swings up and away from its straight path), the contact holds them
+  // from here, rather than a chatter of ever smaller impacts.
+  enter_pressed_pairs(t, y);
 }
 
 void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
@@ -281,13 +383,13 @@ void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
       impulse_W = sticking.solve(vn_after * n - velocity_W);
       const double p_n = n.dot(impulse_W);
       sticking_friction_W = impulse_W - p_n * n;
-      found = sticking_friction_W.norm() <= contact.friction * p_n;
+      found = std::isinf(contact.friction) || sticking_friction_W.norm() <= contact.friction * p_n;
     }
     if (!found) {
       // Sliding: mu of the normal impulse against the slip (or, with none, against the friction
       // sticking would need); frictionless, along the normal alone.
       Vec3 along_W = n;
-      if (law.friction && contact.friction > 0.0) {
+      if (law.friction && contact.friction > 0.0 && std::isfinite(contact.friction)) {
         const double slip = slip_W.norm();
         const double needed = sticking_friction_W.norm();
         if (slip > 0.0) {

@@ -35,8 +35,8 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     const PlaneContact& contact = model.contacts[c];
     if (contact.touches_a_body()) {
-      // Two bodies' spheres: apart, no force; touching, they would press, which only impacts
-      // model for now.
+      // Two bodies' spheres: apart, no force; touching, the linearisation would need the pair's
+      // rows over dual numbers (the run has them, modes not yet).
       const auto centre = [&](std::size_t body, const ContactSurface& sphere) {
         return Vec3(r_G_W[body] + R_WB[body] * sphere.centre_B);
       };
@@ -50,7 +50,7 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       }
       throw NotSteady(fmt::format(
           "contact {}: its two bodies touch; tumble modes takes bodies that touch planes, and two "
-          "bodies only apart (contact that lasts between bodies is not built yet)",
+          "bodies only apart (a contact between two touching bodies is not linearised yet)",
           contact.name));
     }
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);

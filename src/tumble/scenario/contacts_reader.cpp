@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
+#include <limits>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -183,10 +184,22 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
   }
 }
 
-// `friction:` and `restitution:`, as a plane's contact and a pair's take them.
-void read_coefficients(const Reader& reader, const MapReader& map, ContactSpec& contact) {
+// `friction:` and `restitution:`, as a plane's contact and a pair's take them. Between two
+// bodies, `friction: inf` is friction without a limit: the two never slip on each other (a ball
+// rolling off a dome, as the textbook states it).
+void read_coefficients(const Reader& reader, const MapReader& map, ContactSpec& contact,
+                       bool between_bodies) {
   const Field friction = map.require("friction", "Coulomb's mu >= 0; 0 is frictionless");
-  contact.friction = reader.number(friction);
+  if (friction.node.IsScalar() && friction.node.Scalar() == "inf") {
+    if (!between_bodies) {
+      reader.fail_at_value(friction,
+                           "friction: inf (no slip, ever) is for contacts between two bodies; a "
+                           "plane's contact takes a number >= 0");
+    }
+    contact.friction = std::numeric_limits<double>::infinity();
+  } else {
+    contact.friction = reader.number(friction);
+  }
   if (!(contact.friction >= 0.0)) {
     reader.fail_at_value(
         friction, fmt::format("friction must be >= 0; got {}", format_number(contact.friction)));
@@ -208,7 +221,7 @@ std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map
   if (reader.text(type) == "bodies") {
     std::vector<ContactSpec> pairs;
     read_touching_bodies(reader, map, scenario, pairs);
-    for (ContactSpec& pair : pairs) read_coefficients(reader, map, pair);
+    for (ContactSpec& pair : pairs) read_coefficients(reader, map, pair, true);
     return pairs;
   }
   if (const auto f = map.find("joined")) {
@@ -250,7 +263,7 @@ std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map
   if (!n) reader.fail_at_value(normal, "the normal must not be zero");
   contact.plane_normal_W = *n;
 
-  read_coefficients(reader, map, contact);
+  read_coefficients(reader, map, contact, false);
   return {contact};
 }
 

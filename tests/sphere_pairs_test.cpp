@@ -606,8 +606,8 @@ TEST(SpherePairs, TheReaderAndTheStartRefuseWhatTheyCannotTake) {
       {"bodies: [a, b]", "bodies: [a, c]", 45, "contacts[0].bodies[1]", "'c'"},
       {"bodies: [a, b]", "bodies: [a, a]", 45, "contacts[0].bodies[1]", "named twice"},
       {"bodies: [a, b]", "bodies: [a]", 41, "contacts[0].bodies", "names two"},
-      {"b: {shape: sphere, radius: 0.1,", "b: {shape: box, size: [1, 1, 1],", 45,
-       "contacts[0].bodies[1]", "is a box"},
+      {"b: {shape: sphere, radius: 0.1,", "b: {shape: cylinder, length: 0.2, radius: 0.1,", 45,
+       "contacts[0].bodies[1]", "is a cylinder"},
       {"type: bodies,", "type: bodies, plane: {point: [0, 0, 0]},", 33, "contacts[0].plane",
        "no plane"},
       {"type: bodies,", "type: plane,", 32, "contacts[0].bodies", "`type: bodies`"},
@@ -621,6 +621,22 @@ TEST(SpherePairs, TheReaderAndTheStartRefuseWhatTheyCannotTake) {
   for (const Refused& r : refused) {
     test::expect_error(test::replaced(base, r.from, r.to), 7, r.column, r.key, r.why);
   }
+  // Two boxes; a sphere inside a box at the start; `friction: inf` on a plane's contact.
+  const std::string boxes = test::replaced(
+      test::replaced(base, "a: {shape: sphere, radius: 0.1,", "a: {shape: box, size: [1, 1, 1],"),
+      "b: {shape: sphere, radius: 0.1,", "b: {shape: box, size: [1, 1, 1],");
+  test::expect_error(boxes, 7, 41, "contacts[0].bodies", "two boxes do not touch");
+  test::expect_error(
+      test::replaced(base, "a: {shape: sphere, radius: 0.1,", "a: {shape: box, size: [1.9, 1, 1],"),
+      7, 5, "contacts[0]", "overlapping by 0.05 m (the sphere's centre is 0.05 m from the box");
+  test::expect_error(
+      "tumble: 1\n"
+      "bodies:\n"
+      "  a: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}\n"
+      "contacts:\n"
+      "  - {type: plane, body: a, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: inf}\n"
+      "simulate: {duration: 1}\n",
+      5, 84, "contacts[0].friction", "for contacts between two bodies");
 }
 
 }  // namespace

@@ -58,6 +58,12 @@ struct ContactNow {
   Vec3 pair_normal_W = Vec3::UnitZ();
   Vec3 other_reference_B = Vec3::Zero();
   Vec3 other_reference_rate_B = Vec3::Zero();
+  // The other body's core's point nearest the sphere's centre (its axes, from its COM: a
+  // sphere's centre, a box's nearest point) and how fast it slides over that body; and what n's
+  // turning adds to the gap's second derivative, n' . (the centre's velocity less that point's).
+  Vec3 other_core_B = Vec3::Zero();
+  Vec3 other_core_rate_B = Vec3::Zero();
+  double pair_turning = 0.0;
 };
 
 // One unknown of the contact forces and the constraint row that goes with it: the row is

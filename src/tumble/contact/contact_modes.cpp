@@ -706,8 +706,13 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
       if (contacts_[c].touches_a_body()) {
         pair_impacts(c, t, y);
         // The bodies' contacts with planes, in the speeds the impulses left (a ball rolling on a
-        // table, struck, slides).
+        // table, struck, slides; a ball rolling into a step leaves the floor).
         classify_touching(t, y, true, "lifts off: an impact between bodies sends it away");
+        // A settling touchdown or a plastic strike leaves a pair together with no speed between
+        // them. Where something pushes them into each other (a ball resting on another; a ball
+        // struck into a pendulum's bob, which then swings away from its straight path), the
+        // contact holds them from here, rather than a chatter of ever smaller impacts.
+        enter_pressed_pairs(t, y);
         break;
       }
       impact(c, t, y);

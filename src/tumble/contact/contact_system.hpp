@@ -292,12 +292,11 @@ class ContactSystem {
   // While apart: the first time the gap could be the landing height deep (landing_bound.hpp),
   // after a solve.
   double pair_time_to_depth(std::size_t contact) const;
-  // The acceleration of the body's sphere centre (motion a) less the other's (motion b), world,
-  // gravity's included; after a solve.
-  Vec3 centres_relative_acceleration_W(const PlaneContact& contact, const BodyMotion& a,
-                                       const BodyMotion& b) const;
+  // The acceleration of the body's sphere centre less the other body's point at its core's
+  // nearest point (sliding over it), world, gravity's included; after a solve.
+  Vec3 core_relative_acceleration_W(std::size_t contact) const;
   // The second derivative of the pair's gap (m/s^2), after a solve: < 0, the bodies are pushed
-  // into each other. Its part from the line of centres turning, |v_t|^2 / d (after calc_motion).
+  // into each other. Its part from the normal turning, n' . v (after calc_contact_points).
   double pair_gap_acceleration(std::size_t contact) const;
   double pair_normal_turning(std::size_t contact) const;
   // A touching pair's unknowns (append_contact_unknowns' for two bodies): the normal row, and
@@ -308,7 +307,8 @@ class ContactSystem {
   Vec3 pair_slip_acceleration(std::size_t contact) const;
   // Each pair apart at y that touches with no normal speed, and that with no force between them
   // would be pushed into each other, is classified (it rolls, sticks or slides); the others stay
-  // apart.
+  // apart. After the impacts (and the planes' contacts classified in the speeds they left), and
+  // at the start.
   void enter_pressed_pairs(double t, VecX& y);
   // The impacts at a pair's touchdown: one pair at a time, the touching pair that approaches
   // fastest first, until no touching pair approaches (docs/scenario.md, "Bodies that touch").

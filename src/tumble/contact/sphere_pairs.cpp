@@ -35,6 +35,7 @@
 #include "tumble/contact/contact_scales.hpp"
 #include "tumble/contact/contact_system.hpp"
 #include "tumble/contact/landing_bound.hpp"
+#include "tumble/contact/pair_core.hpp"
 
 namespace tumble {
 
@@ -48,10 +49,6 @@ constexpr int kPairImpactRounds = 100000;
 // centres changes within a step the bound allows (as the bodies turn, a pendulum swings); this
 // factor covers that.
 constexpr double kGapTurningMargin = 2.0;
-
-double smaller_radius(const PlaneContact& contact) {
-  return std::min(contact.surface.radius, contact.other_surface.radius);
-}
 
 Vec3 sphere_centre_W(const BodyMotion& w, const ContactSurface& sphere) {
   return w.r_G_W + w.R_WB * sphere.centre_B;
@@ -68,22 +65,59 @@ Vec3 point_response_W(const BodyMotion& w, const Vec3& p_B) {
   return w.R_WB * (w.acceleration.tail<3>() + w.acceleration.head<3>().cross(p_B));
 }
 
-// The line of a pair's sphere centres, the body's (motion a) and the other's (motion b): the unit
-// n from the other's centre to the body's (any, where they coincide), their distance, and their
-// relative velocity (the body's centre's less the other's).
-struct CentresLine {
+// Where a pair's sphere (on the body, motion a) is against the other body's core (motion b;
+// pair_core.hpp): the normal n (world) from the core's nearest point p to the sphere's centre,
+// and how fast it turns; the centre's distance from the core; p (the other body's axes, from its
+// COM) and how fast it slides over that body; and the velocity of the sphere's centre less the
+// other body's point at p. n turns with the centre's motion relative to the other body that p
+// does not follow, over the distance, and with that body's turning.
+struct PairLine {
   Vec3 n_W = Vec3::UnitZ();
+  Vec3 n_rate_W = Vec3::Zero();
   double distance = 0.0;
+  Vec3 p_B = Vec3::Zero();
+  Vec3 p_rate_B = Vec3::Zero();
   Vec3 relative_velocity_W = Vec3::Zero();
+  // n_rate_W . relative_velocity_W: what n's turning adds to the gap's second derivative.
+  double turning = 0.0;
 };
-CentresLine centres_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
-  CentresLine line;
-  const Vec3 apart_W =
-      sphere_centre_W(a, contact.surface) - sphere_centre_W(b, contact.other_surface);
-  line.distance = apart_W.norm();
-  if (line.distance > 0.0) line.n_W = apart_W / line.distance;
-  line.relative_velocity_W = point_velocity_W(a, contact.surface.centre_B) -
-                             point_velocity_W(b, contact.other_surface.centre_B);
+PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
+  PairLine line;
+  const Vec3 centre_W = sphere_centre_W(a, contact.surface);
+  if (contact.other_surface.kind == ContactSurface::Kind::Sphere) {
+    // Two spheres: the line of their centres, in world axes.
+    const Vec3 apart_W = centre_W - sphere_centre_W(b, contact.other_surface);
+    line.distance = apart_W.norm();
+    if (line.distance > 0.0) line.n_W = apart_W / line.distance;
+    line.p_B = contact.other_surface.centre_B;
+    const Vec3& v_W = line.relative_velocity_W =
+        point_velocity_W(a, contact.surface.centre_B) - point_velocity_W(b, line.p_B);
+    if (!(line.distance > 0.0)) return line;
+    const double along = line.n_W.dot(v_W);
+    line.n_rate_W = (v_W - line.n_W * along) / line.distance;
+    line.turning = (v_W.squaredNorm() - along * along) / line.distance;
+    return line;
+  }
+  // A box: in its body's axes, where the nearest point slides along the feature's free
+  // directions, and the normal turns with what is left of the centre's relative motion.
+  const Vec3 x_B = b.R_WB.transpose() * (centre_W - b.r_G_W);
+  const CoreClosest closest = core_closest(contact.other_surface, x_B);
+  line.distance = closest.distance;
+  line.n_W = b.R_WB * closest.n_B;
+  line.p_B = closest.p_B;
+  const Vec3 centre_velocity_W = point_velocity_W(a, contact.surface.centre_B);
+  const Vec3 u_B = b.R_WB.transpose() * (centre_velocity_W - point_velocity_W(b, x_B));
+  for (int k = 0; k < closest.slide_count; ++k) {
+    const Vec3& e = closest.slide_B[static_cast<std::size_t>(k)];
+    line.p_rate_B += e * e.dot(u_B);
+  }
+  Vec3 n_rate_B = Vec3::Zero();  // over the other body
+  if (line.distance > 0.0) {
+    n_rate_B = (u_B - line.p_rate_B - closest.n_B * closest.n_B.dot(u_B)) / line.distance;
+  }
+  line.n_rate_W = (b.R_WB * b.velocity.head<3>()).cross(line.n_W) + b.R_WB * n_rate_B;
+  line.relative_velocity_W = centre_velocity_W - point_velocity_W(b, line.p_B);
+  line.turning = line.n_rate_W.dot(line.relative_velocity_W);
   return line;
 }
 
@@ -91,7 +125,7 @@ CentresLine centres_line(const PlaneContact& contact, const BodyMotion& a, const
 
 ContactScales pair_contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
                                   const BodyState& a, const BodyState& b) {
-  const double size = std::max(smaller_radius(contact), 1e-300);
+  const double size = std::max(pair_size(contact), 1e-300);
   ContactScales scales;
   scales.size = size;
   scales.speed =
@@ -111,26 +145,25 @@ void ContactSystem::calc_pair_point(std::size_t c) const {
   const BodyMotion a = dynamics_.motion(contact.body);
   const BodyMotion b = dynamics_.motion(contact.other_body);
   // Concentric spheres have no normal (they overlap, which the start refuses): any will do.
-  const CentresLine line = centres_line(contact, a, b);
+  const PairLine line = pair_line(contact, a, b);
   ContactNow& now = d_.now[c];
   now.pair_normal_W = line.n_W;
   const Vec3& n = now.pair_normal_W;
-  const double distance = line.distance;
-  const double gap = distance - contact.surface.radius - contact.other_surface.radius;
-  const Vec3 O_W =
-      sphere_centre_W(b, contact.other_surface) + (contact.other_surface.radius + 0.5 * gap) * n;
+  const double other_radius = core_radius(contact.other_surface);
+  const double gap = line.distance - contact.surface.radius - other_radius;
+  const Vec3 O_W = b.r_G_W + b.R_WB * line.p_B + (other_radius + 0.5 * gap) * n;
   now.reference_B = a.R_WB.transpose() * (O_W - a.r_G_W);
   now.other_reference_B = b.R_WB.transpose() * (O_W - b.r_G_W);
-  // How fast O moves over each body: n turns at (v_t / d), and over a body turning at omega it
-  // turns at that less omega x n.
-  const Vec3& v_W = line.relative_velocity_W;
-  const Vec3 n_rate_W =
-      distance > 0.0 ? Vec3((v_W - n * n.dot(v_W)) / distance) : Vec3(Vec3::Zero());
+  // How fast O moves over each body: n turns at n_rate_W, and over a body turning at omega at
+  // that less omega x n; on the other body O moves with p as well.
   const Vec3 omega_a_W = a.R_WB * a.velocity.head<3>(), omega_b_W = b.R_WB * b.velocity.head<3>();
-  now.reference_rate_B =
-      -(contact.surface.radius + 0.5 * gap) * a.R_WB.transpose() * (n_rate_W - omega_a_W.cross(n));
-  now.other_reference_rate_B = (contact.other_surface.radius + 0.5 * gap) * b.R_WB.transpose() *
-                               (n_rate_W - omega_b_W.cross(n));
+  now.reference_rate_B = -(contact.surface.radius + 0.5 * gap) * a.R_WB.transpose() *
+                         (line.n_rate_W - omega_a_W.cross(n));
+  now.other_reference_rate_B = line.p_rate_B + (other_radius + 0.5 * gap) * b.R_WB.transpose() *
+                                                   (line.n_rate_W - omega_b_W.cross(n));
+  now.other_core_B = line.p_B;
+  now.other_core_rate_B = line.p_rate_B;
+  now.pair_turning = line.turning;
   now.n_B = a.R_WB.transpose() * n;
   now.support = {now.reference_B, gap};
   now.normal_points_B[0] = now.reference_B;
@@ -162,12 +195,17 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
   const std::string& b = bodies_[contact.other_body].name;
   const double gap = now.support.height;
   if (gap < -scales.touching_height) {
-    const double radii = contact.surface.radius + contact.other_surface.radius;
+    const double radii = contact.surface.radius + core_radius(contact.other_surface);
+    const bool spheres = contact.other_surface.kind == ContactSurface::Kind::Sphere;
     return StartProblem{
-        c, fmt::format("bodies '{}' and '{}' start overlapping by {:.6g} m (their spheres' centres "
-                       "are {:.6g} m apart, their radii add to {:.6g} m); place them apart or just "
-                       "touching",
-                       a, b, -gap, radii + gap, radii)};
+        c, spheres ? fmt::format("bodies '{}' and '{}' start overlapping by {:.6g} m (their "
+                                 "spheres' centres are {:.6g} m apart, their radii add to {:.6g} "
+                                 "m); place them apart or just touching",
+                                 a, b, -gap, radii + gap, radii)
+                   : fmt::format("bodies '{}' and '{}' start overlapping by {:.6g} m (the "
+                                 "sphere's centre is {:.6g} m from the box, below 0 inside it, "
+                                 "its radius {:.6g} m); place them apart or just touching",
+                                 a, b, -gap, radii + gap, radii)};
   }
   const double vn = now.support_normal_speed;
   if (gap <= scales.touching_height && vn < -scales.slip_zero) {
@@ -179,44 +217,36 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
   return std::nullopt;
 }
 
-Vec3 ContactSystem::centres_relative_acceleration_W(const PlaneContact& contact,
-                                                    const BodyMotion& a,
-                                                    const BodyMotion& b) const {
-  return moving_point_acceleration_W(a, contact.surface.centre_B, Vec3::Zero()) -
-         moving_point_acceleration_W(b, contact.other_surface.centre_B, Vec3::Zero());
+Vec3 ContactSystem::core_relative_acceleration_W(std::size_t c) const {
+  const PlaneContact& contact = contacts_[c];
+  const ContactNow& now = d_.now[c];
+  return moving_point_acceleration_W(dynamics_.motion(contact.body), contact.surface.centre_B,
+                                     Vec3::Zero()) -
+         moving_point_acceleration_W(dynamics_.motion(contact.other_body), now.other_core_B,
+                                     now.other_core_rate_B);
 }
 
 double ContactSystem::pair_time_to_depth(std::size_t c) const {
-  const PlaneContact& contact = contacts_[c];
-  const BodyMotion a = dynamics_.motion(contact.body);
-  const BodyMotion b = dynamics_.motion(contact.other_body);
-  // The gap's second derivative is n . (a_A - a_B), the centres' relative acceleration, plus the
-  // square of their relative velocity across n over their distance, which is never negative: the
-  // size of that relative acceleration bounds how fast the gap's rate can turn down.
-  const Vec3 relative_acceleration_W = centres_relative_acceleration_W(contact, a, b);
+  // The gap's second derivative is n . (the sphere's centre's acceleration less the other body's
+  // at the core's nearest point p, which slides), plus n's turning, n' . (their relative
+  // velocity): never negative but where the other body turns. Their sizes bound how fast the
+  // gap's rate can turn down.
   const ContactNow& now = d_.now[c];
+  const bool spheres = contacts_[c].other_surface.kind == ContactSurface::Kind::Sphere;
+  const double bound =
+      spheres ? core_relative_acceleration_W(c).norm()
+              : core_relative_acceleration_W(c).norm() + std::max(0.0, -pair_normal_turning(c));
   return first_root(now.support.height + s_.contacts[c].landing_height, now.support_normal_speed,
-                    kGapTurningMargin * relative_acceleration_W.norm());
+                    kGapTurningMargin * bound);
 }
 
 double ContactSystem::pair_normal_turning(std::size_t c) const {
-  const PlaneContact& contact = contacts_[c];
-  // n = (c_A - c_B) / d turns at v_t / d, v_t the centres' relative velocity across n: n' . v is
-  // |v_t|^2 / d.
-  const CentresLine line =
-      centres_line(contact, dynamics_.motion(contact.body), dynamics_.motion(contact.other_body));
-  if (!(line.distance > 0.0)) return 0.0;
-  const double along = line.n_W.dot(line.relative_velocity_W);
-  return (line.relative_velocity_W.squaredNorm() - along * along) / line.distance;
+  return d_.now[c].pair_turning;
 }
 
 double ContactSystem::pair_gap_acceleration(std::size_t c) const {
-  const PlaneContact& contact = contacts_[c];
-  const BodyMotion a = dynamics_.motion(contact.body);
-  const BodyMotion b = dynamics_.motion(contact.other_body);
-  // The distance d between the centres: d'' = n . (a_A - a_B) + n' . (v_A - v_B).
-  return centres_line(contact, a, b).n_W.dot(centres_relative_acceleration_W(contact, a, b)) +
-         pair_normal_turning(c);
+  // The gap's rate is n . (v_centre - v_p): d'' = n . (a_centre - a_p) + n' . (v_centre - v_p).
+  return d_.now[c].pair_normal_W.dot(core_relative_acceleration_W(c)) + pair_normal_turning(c);
 }
 
 Eigen::Index ContactSystem::append_pair_unknowns(std::size_t c, ContactMode mode, ContactRows rows,
@@ -244,13 +274,14 @@ Eigen::Index ContactSystem::append_pair_unknowns(std::size_t c, ContactMode mode
     u.other_wrench_B = wrench_at(R_b, now.other_reference_B, -force_W, zero);
     u.turning_acceleration = turning;
   };
-  // The normal row: the gap's rate, at the centres (the same as at O: n is along both radii).
+  // The normal row: the gap's rate, at the sphere's centre and the core's nearest point (the same
+  // as at O: n is along the radii).
   // Sliding, its force carries Coulomb's friction mu N against the slip at O.
   const bool slides = mode == ContactMode::Sliding && rows == ContactRows::Motion;
   const double mu = slides ? contact.friction : 0.0;
   const Vec3 along_W = slide_W - n * n.dot(slide_W);
   const double turning = rows == ContactRows::Motion ? pair_normal_turning(c) : 0.0;
-  add(contact.surface.centre_B, zero, contact.other_surface.centre_B, zero, n, true,
+  add(contact.surface.centre_B, zero, now.other_core_B, now.other_core_rate_B, n, true,
       n - mu * along_W, turning);
   if (mode == ContactMode::Sliding || rows == ContactRows::Position) return count;
   // Rolling or sticking: O's tangential velocity on the body less that on the other, as O moves
@@ -328,11 +359,6 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
     dynamics_.calc_motion(y, true);
     calc_contact_points();
   }
-  // A settling touchdown or a plastic strike leaves a pair together with no speed between them.
-  // Where something pushes them into each other (a ball resting on another; a bullet in a
-  // pendulum's bob, which then swings up and away from its straight path), the contact holds them
-  // from here, rather than a chatter of ever smaller impacts.
-  enter_pressed_pairs(t, y);
 }
 
 void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {

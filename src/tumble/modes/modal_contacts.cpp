@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "tumble/contact/contact_pair.hpp"
+#include "tumble/contact/pair_core.hpp"
 #include "tumble/modes/not_steady.hpp"
 
 namespace tumble {
@@ -37,17 +38,14 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
     if (contact.touches_a_body()) {
       // Two bodies' spheres: apart, no force; touching, the linearisation would need the pair's
       // rows over dual numbers (the run has them, modes not yet).
-      const auto centre = [&](std::size_t body, const ContactSurface& sphere) {
-        return Vec3(r_G_W[body] + R_WB[body] * sphere.centre_B);
-      };
-      const double gap = (centre(contact.body, contact.surface) -
-                          centre(contact.other_body, contact.other_surface))
-                             .norm() -
-                         contact.surface.radius - contact.other_surface.radius;
-      if (gap >
-          kTouchingHeightPerSize * std::min(contact.surface.radius, contact.other_surface.radius)) {
-        continue;
-      }
+      // The sphere's centre from the other body's core (pair_core.hpp), less the radii.
+      const std::size_t b = contact.other_body;
+      const Vec3 centre_W = r_G_W[contact.body] + R_WB[contact.body] * contact.surface.centre_B;
+      const double gap =
+          core_closest(contact.other_surface, R_WB[b].transpose() * (centre_W - r_G_W[b]))
+              .distance -
+          contact.surface.radius - core_radius(contact.other_surface);
+      if (gap > kTouchingHeightPerSize * pair_size(contact)) continue;
       throw NotSteady(fmt::format(
           "contact {}: its two bodies touch; tumble modes takes bodies that touch planes, and two "
           "bodies only apart (a contact between two touching bodies is not linearised yet)",

@@ -75,32 +75,42 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
   return found;
 }
 
-// Whether the shape touches another body's: for now a sphere's or a shell's surface.
-bool touches_a_body(ShapeKind kind) {
+// Whether the shape touches another body's: a sphere's or a shell's surface, or a box's (which
+// touches a sphere).
+bool is_round_ball(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell;
 }
+bool touches_a_body(ShapeKind kind) {
+  return is_round_ball(kind) || kind == ShapeKind::Box;
+}
 
-// One of the two bodies of a `type: bodies` contact, and its sphere part where it is a
-// composite (-1: the body is the sphere).
-int read_touching_sphere(const Reader& reader, const Field& body_field, const BodySpec& body) {
+// One of the two bodies of a `type: bodies` contact: its touching part where it is a composite
+// (-1: the body itself), and whether that is a sphere (else a box).
+struct TouchingShape {
+  int part = -1;
+  bool sphere = true;
+};
+TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
+                                  const BodySpec& body) {
   const char* what =
-      "two bodies touch at their spheres for now (a sphere or shell each, or a "
-      "composite's sphere part)";
+      "two bodies touch at a sphere (or shell) and a sphere or a box, each a body's shape or a "
+      "composite's one such part";
   if (body.parts.empty()) {
-    if (touches_a_body(body.shape.kind)) return -1;
+    if (touches_a_body(body.shape.kind)) return {-1, is_round_ball(body.shape.kind)};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
                                          std::string(shape_name(body.shape.kind)) + "; " + what);
   }
-  int found = -1, count = 0;
+  TouchingShape found;
+  int count = 0;
   for (std::size_t p = 0; p < body.parts.size(); ++p) {
     if (!touches_a_body(body.parts[p].shape.kind)) continue;
-    found = static_cast<int>(p);
+    found = {static_cast<int>(p), is_round_ball(body.parts[p].shape.kind)};
     ++count;
   }
   if (count != 1) {
     reader.fail_at_value(body_field, "body '" + body.name + "' is a composite with " +
-                                         std::to_string(count) + " sphere parts; " + what +
-                                         ", one sphere part to a body");
+                                         std::to_string(count) + " sphere or box parts; " + what +
+                                         ", one such part to a body");
   }
   return found;
 }
@@ -140,15 +150,15 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
                           names.size()));
   }
   std::vector<std::string> bodies;
-  std::vector<int> parts;
+  std::vector<TouchingShape> shapes;
   for (const Field& name : names) {
     const std::string body = read_body_or_ground(reader, name, scenario.bodies, false);
     if (std::find(bodies.begin(), bodies.end(), body) != bodies.end()) {
       reader.fail_at_value(name,
                            "body '" + body + "' named twice: a contact is between two bodies");
     }
-    parts.push_back(
-        read_touching_sphere(reader, name, scenario.bodies[*reader.body_position(body)]));
+    shapes.push_back(
+        read_touching_shape(reader, name, scenario.bodies[*reader.body_position(body)]));
     bodies.push_back(body);
   }
   bool with_joined = true;
@@ -169,11 +179,24 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = a + 1; b < bodies.size(); ++b) {
       if (!with_joined && joined(scenario, bodies[a], bodies[b])) continue;
+      if (!shapes[a].sphere && !shapes[b].sphere) {
+        if (names.size() == 2) {
+          reader.fail_at_value(list,
+                               "two boxes do not touch each other yet: one of the two "
+                               "bodies must be a sphere (or shell)");
+        }
+        continue;  // a group's boxes touch its spheres only
+      }
+      // The sphere is the contact's body (its columns are the sphere's): a box named first goes
+      // second.
+      const bool swap = !shapes[a].sphere;
+      const std::size_t first = swap ? b : a, second = swap ? a : b;
       ContactSpec pair;
-      pair.body = bodies[a];
-      pair.other_body = bodies[b];
-      pair.part = parts[a];
-      pair.other_part = parts[b];
+      pair.name = bodies[a] + "_" + bodies[b];  // a group's: NAME_a_b, in the list's order
+      pair.body = bodies[first];
+      pair.other_body = bodies[second];
+      pair.part = shapes[first].part;
+      pair.other_part = shapes[second].part;
       pairs.push_back(std::move(pair));
     }
   }
@@ -345,7 +368,7 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
     const bool group = listed && listed->node.IsSequence() && listed->node.size() > 2;
     if (!group) heads.claim(reader, named_at, name, "contact", where);
     for (ContactSpec& contact : read_contact(reader, map, scenario)) {
-      contact.name = group ? name + "_" + contact.body + "_" + contact.other_body : name;
+      contact.name = group ? name + "_" + contact.name : name;
       contact.where = where;
       if (group) heads.claim(reader, named_at, contact.name, "contact", where);
       contacts.push_back(std::move(contact));

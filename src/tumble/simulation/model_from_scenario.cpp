@@ -47,6 +47,7 @@ ContactSurface contact_surface(const Shape& shape) {
       // The corners; a plate's two faces share its four.
       surface.kind = ContactSurface::Kind::Polyhedron;
       const Vec3 half = shape.size / 2;
+      if (shape.kind == ShapeKind::Box) surface.half_size = half;
       for (const double z : shape.kind == ShapeKind::Box ? std::vector<double>{-1.0, 1.0}
                                                          : std::vector<double>{0.0}) {
         for (const double y : {-1.0, 1.0}) {
@@ -90,6 +91,7 @@ ContactSurface part_contact_surface(const BodySpec& body, const PartSpec& part) 
   const Vec3 centre_B = part.mass_properties.com - body.mass_properties.com;
   surface.centre_B = centre_B;
   for (Vec3& p : surface.vertices) p = centre_B + part.R_BP * p;
+  if (!surface.half_size.isZero(0.0)) surface.axes_B = part.R_BP;  // a box part, turned
   if (surface.kind == ContactSurface::Kind::Circle ||
       surface.kind == ContactSurface::Kind::Cylinder ||
       surface.kind == ContactSurface::Kind::Cone) {

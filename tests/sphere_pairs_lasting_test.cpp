@@ -11,6 +11,8 @@
 //    cos theta), and it leaves where cos theta = 2/3 + v0^2 / (3 g rho).
 //  - A ball resting on top of another that rests on the floor: the pair's push is m_top g, the
 //    floor's (m_top + m_bottom) g, and neither moves.
+//  - A ball dropped onto a ball resting on the floor rebounds at e of its speed: the floor holds
+//    the lower ball in the same instant.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,25 +121,35 @@ TEST(SpherePairsLasting, AFrictionlessBallSlidesOffADomeWhereCosThetaIsTwoThirds
   }
 }
 
+// A ball of radius 0.2 m (0.7 kg) on the floor and one of 0.1 m (0.3 kg) above it, its centre
+// `top_z` up, straight above the lower one's; restitution e between them.
+std::string two_balls_on_the_floor(double top_z, double e, double duration) {
+  return "tumble: 1\n"
+         "gravity: [0, 0, -" +
+         std::to_string(test::kG) +
+         "]\n"
+         "bodies:\n"
+         "  bottom: {shape: sphere, radius: 0.2, mass: 0.7, position: [0, 0, 0.2]}\n"
+         "  top: {shape: sphere, radius: 0.1, mass: 0.3, position: [0, 0, " +
+         std::to_string(top_z) +
+         "]}\n"
+         "contacts:\n"
+         "  - {name: floor, type: plane, body: bottom, plane: {point: [0, 0, 0], normal: [0, 0, "
+         "1]}, friction: 0.5}\n"
+         "  - {name: stack, type: bodies, bodies: [top, bottom], friction: 0.5, restitution: " +
+         std::to_string(e) +
+         "}\n"
+         "simulate: {duration: " +
+         std::to_string(duration) +
+         ", integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.01}\n";
+}
+
 // Two balls stacked on the floor, the top one's centre straight above the bottom one's: the
 // pair presses with the top ball's weight and the floor with both, and nothing moves (an
 // unstable rest, held exactly: nothing breaks its symmetry).
 TEST(SpherePairsLasting, ABallRestingOnABallOnTheFloorPressesWithItsWeight) {
   const double g = test::kG, m_top = 0.3, m_bottom = 0.7;
-  const std::string yaml =
-      "tumble: 1\n"
-      "gravity: [0, 0, -" +
-      std::to_string(g) +
-      "]\n"
-      "bodies:\n"
-      "  bottom: {shape: sphere, radius: 0.2, mass: 0.7, position: [0, 0, 0.2]}\n"
-      "  top: {shape: sphere, radius: 0.1, mass: 0.3, position: [0, 0, 0.5]}\n"
-      "contacts:\n"
-      "  - {name: floor, type: plane, body: bottom, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, "
-      "friction: "
-      "0.5}\n"
-      "  - {name: stack, type: bodies, bodies: [top, bottom], friction: 0.5}\n"
-      "simulate: {duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: 0.1}\n";
+  const std::string yaml = two_balls_on_the_floor(0.5, 0.0, 1.0);
   const test::ScenarioRun run = test::run_inline_scenario(yaml, "stack");
   ASSERT_EQ(run.contact_events.size(), 2u);
   for (const test::Row& row : run.rows) {
@@ -146,6 +158,37 @@ TEST(SpherePairsLasting, ABallRestingOnABallOnTheFloorPressesWithItsWeight) {
     EXPECT_NEAR(row.states[0].r_G.z(), 0.2, 1e-12) << row.t;
     EXPECT_NEAR(row.states[1].r_G.z(), 0.5, 1e-12) << row.t;
     EXPECT_LT(row.states[0].v_G.norm() + row.states[1].v_G.norm(), 1e-12) << row.t;
+  }
+}
+
+// A ball dropped onto a ball resting on the floor, straight down through its centre: the floor
+// takes its part of the blow in the same instant (it holds the lower ball), so the top ball
+// rebounds at e of its speed as off the floor itself, the lower ball stays at rest, and the
+// impact takes (1 - e^2) m v^2 / 2. (Struck first as two free balls and held by the floor after,
+// the lower ball would be driven into the floor and stopped there, and the top ball would leave
+// at (m_top - e m_bottom) v / (m_top + m_bottom).)
+TEST(SpherePairsLasting, ABallDroppedOnABallOnTheFloorReboundsAsOffTheFloorItself) {
+  const double g = test::kG, m_top = 0.3, e = 0.6, drop = 0.2;
+  const std::string yaml = two_balls_on_the_floor(0.7, e, 0.25);
+  const test::ScenarioRun run = test::run_inline_scenario(yaml, "dropped");
+  const double t_hit = std::sqrt(2 * drop / g), v = g * t_hit;
+  ASSERT_GE(run.contact_events.size(), 2u);
+  const ContactEventRecord& hit = run.contact_events[1];
+  EXPECT_EQ(hit.contact, 1u);
+  EXPECT_NEAR(hit.t, t_hit, 1e-12);
+  ASSERT_TRUE(hit.impact.has_value());
+  EXPECT_NEAR(hit.impact->rebound_speed, e * v, 1e-12 * v);
+  EXPECT_NEAR(hit.impact->impulse_W.z(), (1 + e) * m_top * v, 1e-12 * m_top * v);
+  EXPECT_NEAR(hit.impact->kinetic_energy_before - hit.impact->kinetic_energy_after,
+              (1 - e * e) * m_top * v * v / 2, 1e-12 * m_top * v * v);
+  for (const test::Row& row : run.rows) {
+    // The lower ball never moves; the top one, after the blow, flies up at e v less g t.
+    EXPECT_LT(row.states[0].v_G.norm(), 1e-12) << row.t;
+    EXPECT_NEAR(row.states[0].r_G.z(), 0.2, 1e-12) << row.t;
+    EXPECT_EQ(row.extras.contacts[0].mode, 2) << row.t;
+    if (row.t > t_hit) {
+      EXPECT_NEAR(row.states[1].v_G.z(), e * v - g * (row.t - t_hit), 1e-11 * v) << row.t;
+    }
   }
 }
 

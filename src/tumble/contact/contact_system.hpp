@@ -317,6 +317,13 @@ class ContactSystem {
   // together slower than a settling touchdown), Coulomb on the tangential impulse; noted as an
   // event.
   void pair_impulse(std::size_t contact, double t, VecX& y);
+  // Whether the pair's impulse, applied at d_.impact_y, drives a touching plane contact of a body
+  // that moves with either of the pair's into its plane (marked in d_.held_in_impact).
+  bool drives_into_planes(std::size_t contact);
+  // The pair's impulse (world, on its body) with Newton's e on its normal motion, Coulomb's
+  // friction if `friction`, and the marked planes held (their normal motion stopped); from y into
+  // d_.impact_y.
+  Vec3 pair_impulse_holding_planes(std::size_t contact, double e, bool friction, const VecX& y);
 
   std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run
   std::vector<const ContactPair*> pairs_;   // per contact: its pair, from contact_pair()'s table

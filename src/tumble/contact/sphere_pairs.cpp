@@ -36,6 +36,7 @@
 #include "tumble/contact/contact_system.hpp"
 #include "tumble/contact/landing_bound.hpp"
 #include "tumble/contact/pair_core.hpp"
+#include "tumble/math/constraint_solve.hpp"
 
 namespace tumble {
 
@@ -49,6 +50,9 @@ constexpr int kPairImpactRounds = 100000;
 // centres changes within a step the bound allows (as the bodies turn, a pendulum swings); this
 // factor covers that.
 constexpr double kGapTurningMargin = 2.0;
+// Rounds of letting go the planes that would pull, and holding those driven in, in one impact:
+// each changes the set of held planes, of which a body has a few.
+constexpr int kHoldingRounds = 20;
 
 Vec3 sphere_centre_W(const BodyMotion& w, const ContactSurface& sphere) {
   return w.r_G_W + w.R_WB * sphere.centre_B;
@@ -361,6 +365,101 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   }
 }
 
+bool ContactSystem::drives_into_planes(std::size_t c) {
+  // At d_.impact_y: the touching plane contacts of the bodies that move with either of the
+  // pair's whose points go into their planes.
+  const PlaneContact& pair = contacts_[c];
+  dynamics_.calc_motion(d_.impact_y, true);
+  calc_contact_points();
+  bool any = false;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    d_.held_in_impact[k] = 0;
+    const ContactStatus& status = s_.contacts[k];
+    const PlaneContact& contact = contacts_[k];
+    if (contact.touches_a_body() || status.mode == ContactMode::Apart) continue;
+    if (!dynamics_.moves_with(contact.body, pair.body) &&
+        !dynamics_.moves_with(contact.body, pair.other_body)) {
+      continue;
+    }
+    const ContactNow& now = d_.now[k];
+    for (int i = 0; i < now.normal_point_count; ++i) {
+      if (normal_speed(k, now.normal_points_B[static_cast<std::size_t>(i)]) < -status.slip_zero) {
+        d_.held_in_impact[k] = 1;
+        any = true;
+      }
+    }
+  }
+  return any;
+}
+
+Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool friction,
+                                                const VecX& y) {
+  const PlaneContact& contact = contacts_[c];
+  // The impulses that give the pair's normal motion -e of what it had (its slip stopped, if that
+  // fits in the cone; else mu of the normal impulse against the slip) and stop the held planes'
+  // normal motion, frictionless (their friction is theirs to take after, as they are classified
+  // again). A plane that would pull is let go, one driven in by the result is held, until
+  // neither changes.
+  Vec3 impulse_W = Vec3::Zero();
+  for (int round = 0; round < kHoldingRounds; ++round) {
+    dynamics_.calc_motion(y, true);
+    calc_contact_points();
+    const auto solve = [&](ContactMode mode, ContactRows rows, const Vec3& slide_W) {
+      Eigen::Index count = append_contact_unknowns(c, mode, rows, slide_W, 0);
+      for (std::size_t k = 0; k < contacts_.size(); ++k) {
+        if (d_.held_in_impact[k] == 0) continue;
+        count = append_contact_unknowns(k, ContactMode::Sliding, ContactRows::Projection,
+                                        Vec3::Zero(), count);
+      }
+      for (Eigen::Index i = 0; i < count; ++i) {
+        const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
+        d_.x(i) = -(row.normal && row.contact == c ? 1.0 + e : 1.0) * row_velocity(row);
+      }
+      calc_contact_matrix(count);
+      solve_contact_system(count, d_.x, RowQuantity::Velocity);
+      set_contact_resultants(count, d_.x);
+      return count;
+    };
+    Eigen::Index count = 0;
+    bool sticks = friction && contact.friction > 0.0;
+    if (sticks) {
+      try {
+        count = solve(ContactMode::Rolling, ContactRows::Projection, Vec3::Zero());
+        sticks = stick_margin(c, 1.0) >= 0.0;
+      } catch (const InconsistentConstraints&) {
+        sticks = false;
+      }
+    }
+    if (!sticks) {
+      const Vec3 slip_W = d_.now[c].slip_W;
+      const bool slides = friction && contact.friction > 0.0 && std::isfinite(contact.friction);
+      const Vec3 slide_W = slip_W.norm() > 0.0 ? Vec3(slip_W.normalized()) : pushed_direction(c);
+      count = slides ? solve(ContactMode::Sliding, ContactRows::Motion, slide_W)
+                     : solve(ContactMode::Sliding, ContactRows::Projection, Vec3::Zero());
+    }
+    impulse_W = d_.now[c].force_W;  // the impulse, as a force would be
+    bool changed = false;
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+      if (d_.held_in_impact[k] != 0 && d_.now[k].normal_force < 0.0) {
+        d_.held_in_impact[k] = 0;  // it would pull: the body leaves that plane
+        changed = true;
+      }
+    }
+    d_.impact_y = y;
+    apply_contact_impulses(count, d_.x, d_.impact_y);
+    if (changed) continue;
+    // A plane not held that the result drives in is held too.
+    for (std::size_t k = 0; k < contacts_.size(); ++k) d_.held_before[k] = d_.held_in_impact[k];
+    drives_into_planes(c);
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+      if (d_.held_in_impact[k] != 0 && d_.held_before[k] == 0) changed = true;
+      d_.held_in_impact[k] = static_cast<char>(d_.held_in_impact[k] | d_.held_before[k]);
+    }
+    if (!changed) break;
+  }
+  return impulse_W;
+}
+
 void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
   const PlaneContact& contact = contacts_[c];
   const std::size_t a = contact.body, b = contact.other_body;
@@ -433,6 +532,9 @@ void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
     dynamics_.respond_to_impulses(std::span<const BodyWrench>(d_.wrenches.data(), 2));
     d_.impact_y = y;
     dynamics_.apply_speed_jumps(d_.impact_y);
+    // A body resting on a plane that this impulse would drive into it (a ball struck from above,
+    // on the floor): the plane takes its part of the blow in the same instant.
+    if (drives_into_planes(c)) impulse_W = pair_impulse_holding_planes(c, law.e, law.friction, y);
     dynamics_.calc_motion(d_.impact_y, true);
     work = dynamics_.kinetic_energy() - energy_before;
     if (work <= kWorkRoundOff * energy_before) break;

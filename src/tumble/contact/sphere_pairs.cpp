@@ -313,10 +313,13 @@ Vec3 ContactSystem::pair_slip_acceleration(std::size_t c) const {
 }
 
 void ContactSystem::enter_pressed_pairs(double t, VecX& y) {
+  const auto is_pair = [](const PlaneContact& contact) { return contact.touches_a_body(); };
+  if (std::none_of(contacts_.begin(), contacts_.end(), is_pair)) return;
+  // One solve for them all, and another after each pair that enters (its force moves the rest).
+  calc_accelerations(y);
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const ContactStatus& status = s_.contacts[c];
     if (!contacts_[c].touches_a_body() || status.mode != ContactMode::Apart) continue;
-    calc_accelerations(y);
     const ContactNow& now = d_.now[c];
     if (now.support.height > status.touching_height ||
         std::abs(now.support_normal_speed) > status.slip_zero) {
@@ -326,6 +329,7 @@ void ContactSystem::enter_pressed_pairs(double t, VecX& y) {
     // no force there below zero), the contact holds them from here; otherwise they stay apart.
     if (-pair_gap_acceleration(c) > status.slip_zero / status.time_scale) {
       classify_contact(c, t, y, true);
+      calc_accelerations(y);
     }
   }
 }

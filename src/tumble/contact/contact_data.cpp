@@ -26,7 +26,6 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
   saved_rhs.resize(rows);
   impact_y.resize(dimension);
   held_in_impact.assign(contacts.size(), 0);
-  held_before.assign(contacts.size(), 0);
   onset_y.resize(dimension);
   onset_dydt.resize(dimension);
 }

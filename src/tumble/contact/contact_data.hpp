@@ -103,9 +103,8 @@ struct ContactData {
   std::vector<BodyWrench> wrenches;      // as many: forces or impulses on bodies
   std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                         // impact()'s
-  // Per contact, a pair's impulse (sphere_pairs.cpp): whether a touching plane is held in it,
-  // and as it was before a round.
-  std::vector<char> held_in_impact, held_before;
+  // Per contact, a pair's impulse (sphere_pairs.cpp): whether a touching plane is held in it.
+  std::vector<char> held_in_impact;
   ContactStatus landing;     // impact()'s: the part it lands on, reserved for the most vertices
   VecX onset_y, onset_dydt;  // turn_starting_slip()'s
   // The time of the state being evaluated: a starting slip's direction turns with it.

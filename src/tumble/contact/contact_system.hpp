@@ -296,9 +296,8 @@ class ContactSystem {
   // nearest point (sliding over it), world, gravity's included; after a solve.
   Vec3 core_relative_acceleration_W(std::size_t contact) const;
   // The second derivative of the pair's gap (m/s^2), after a solve: < 0, the bodies are pushed
-  // into each other. Its part from the normal turning, n' . v (after calc_contact_points).
+  // into each other (its part from the normal turning is d_.now's pair_turning).
   double pair_gap_acceleration(std::size_t contact) const;
-  double pair_normal_turning(std::size_t contact) const;
   // A touching pair's unknowns (append_contact_unknowns' for two bodies): the normal row, and
   // rolling or sticking, the two tangential ones.
   Eigen::Index append_pair_unknowns(std::size_t contact, ContactMode mode, ContactRows rows,
@@ -317,9 +316,10 @@ class ContactSystem {
   // together slower than a settling touchdown), Coulomb on the tangential impulse; noted as an
   // event.
   void pair_impulse(std::size_t contact, double t, VecX& y);
-  // Whether the pair's impulse, applied at d_.impact_y, drives a touching plane contact of a body
-  // that moves with either of the pair's into its plane (marked in d_.held_in_impact).
-  bool drives_into_planes(std::size_t contact);
+  // Marks in d_.held_in_impact each touching plane contact, not marked yet, of a body that moves
+  // with either of the pair's, that the pair's impulse applied at d_.impact_y drives into its
+  // plane; whether it marked any.
+  bool hold_planes_driven_in(std::size_t contact);
   // The pair's impulse (world, on its body) with Newton's e on its normal motion, Coulomb's
   // friction if `friction`, and the marked planes held (their normal motion stopped); from y into
   // d_.impact_y.

@@ -1,29 +1,31 @@
-// Two bodies touching at their spheres (docs/scenario.md, "Bodies that touch each other"): a
-// contact between two bodies, free or held by joints, in one tree or not. The pair is apart, its
-// gap watched by the touchdown event, meets in an impact, or presses, slides and rolls on itself
-// in the modes a plane's contact has (contact_modes.cpp), with the same events.
+// A body's sphere touching another body's sphere or box (docs/scenario.md, "Bodies that touch
+// each other"): a contact between two bodies, free or held by joints, in one tree or not. The
+// pair is apart, its gap watched by the touchdown event, meets in an impact, or presses, slides
+// and rolls on itself in the modes a plane's contact has (contact_modes.cpp), with the same
+// events.
 //
-// The gap is the distance between the spheres' centres less their radii, and the normal n runs
-// from the other body's sphere towards the body's. Both spheres' points on the line of centres
-// move along it as the centres do, so the gap's rate is n . (the bodies' relative velocity at
-// any point of that line); the reference point O is the midpoint of the spheres' nearest points,
-// which is the contact point when they touch.
+// The other surface is a core swept by a radius (pair_core.hpp): the gap is the sphere's
+// centre's distance from the core less the radii, and the normal n runs from the core's nearest
+// point p towards the centre. The gap's rate is n . (the centre's velocity less the other body's
+// point at p); the reference point O is the midpoint of the two surfaces' nearest points, which
+// is the contact point when they touch.
 //
 // Touching, the rows are a plane's, relative: the normal row holds the gap's rate, measured at
-// the two centres, and its rate gains the line of centres' turning, |v_t|^2 / d (v_t the
-// centres' relative velocity across n, d their distance); rolling or sticking, two more hold
-// the tangential velocity of the body's point at O less the other's, O moving over each body as
-// n turns. Each unknown pushes the body at O and the other body at O the opposite way.
+// the centre and at p (p sliding over the other body), and its rate gains n's turning, n' . v
+// (|v_t|^2 / d for two spheres); rolling or sticking, two more hold the tangential velocity of
+// the body's point at O less the other's, O moving over each body as n turns. Each unknown
+// pushes the body at O and the other body at O the opposite way.
 //
 // Impacts: Newton's restitution on the normal motion and Coulomb's friction on the impulse, as a
 // plane's (contact_modes.cpp, impact): the impulse that leaves no slip if it lies in the cone,
 // else one along n - mu s against the slip s before it (exact for two spheres on free bodies,
 // whose slip keeps its direction through the impact); should the impulse add energy, it is taken
-// plastic, then plastic and frictionless. A pair that comes together slower than a plane's
-// settling touchdown settles (e = 0); if the two are then pushed into each other, the run ends
-// there. Simultaneous impacts (balls touching in a row, one struck) go one pair at a time: the
-// touching pair that approaches fastest first (the first in the file among equals), until no
-// touching pair approaches.
+// plastic, then plastic and frictionless. Where it would drive a body resting on a plane into
+// the plane, the plane holds that body in the same solve. A pair that comes together slower than
+// a plane's settling touchdown settles (e = 0), and if the two are then pushed into each other
+// the contact holds them (enter_pressed_pairs). Simultaneous impacts (balls touching in a row,
+// one struck) go one pair at a time: the touching pair that approaches fastest first (the first
+// in the file among equals), until no touching pair approaches.
 #include <fmt/format.h>
 
 #include <Eigen/LU>
@@ -236,21 +238,18 @@ double ContactSystem::pair_time_to_depth(std::size_t c) const {
   // velocity): never negative but where the other body turns. Their sizes bound how fast the
   // gap's rate can turn down.
   const ContactNow& now = d_.now[c];
+  // (Two spheres' turning is never negative: its round-off is left out.)
   const bool spheres = contacts_[c].other_surface.kind == ContactSurface::Kind::Sphere;
   const double bound =
-      spheres ? core_relative_acceleration_W(c).norm()
-              : core_relative_acceleration_W(c).norm() + std::max(0.0, -pair_normal_turning(c));
+      core_relative_acceleration_W(c).norm() + (spheres ? 0.0 : std::max(0.0, -now.pair_turning));
   return first_root(now.support.height + s_.contacts[c].landing_height, now.support_normal_speed,
                     kGapTurningMargin * bound);
 }
 
-double ContactSystem::pair_normal_turning(std::size_t c) const {
-  return d_.now[c].pair_turning;
-}
-
 double ContactSystem::pair_gap_acceleration(std::size_t c) const {
   // The gap's rate is n . (v_centre - v_p): d'' = n . (a_centre - a_p) + n' . (v_centre - v_p).
-  return d_.now[c].pair_normal_W.dot(core_relative_acceleration_W(c)) + pair_normal_turning(c);
+  const ContactNow& now = d_.now[c];
+  return now.pair_normal_W.dot(core_relative_acceleration_W(c)) + now.pair_turning;
 }
 
 Eigen::Index ContactSystem::append_pair_unknowns(std::size_t c, ContactMode mode, ContactRows rows,
@@ -284,7 +283,7 @@ Eigen::Index ContactSystem::append_pair_unknowns(std::size_t c, ContactMode mode
   const bool slides = mode == ContactMode::Sliding && rows == ContactRows::Motion;
   const double mu = slides ? contact.friction : 0.0;
   const Vec3 along_W = slide_W - n * n.dot(slide_W);
-  const double turning = rows == ContactRows::Motion ? pair_normal_turning(c) : 0.0;
+  const double turning = rows == ContactRows::Motion ? now.pair_turning : 0.0;
   add(contact.surface.centre_B, zero, now.other_core_B, now.other_core_rate_B, n, true,
       n - mu * along_W, turning);
   if (mode == ContactMode::Sliding || rows == ContactRows::Position) return count;
@@ -369,18 +368,20 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   }
 }
 
-bool ContactSystem::drives_into_planes(std::size_t c) {
+bool ContactSystem::hold_planes_driven_in(std::size_t c) {
   // At d_.impact_y: the touching plane contacts of the bodies that move with either of the
   // pair's whose points go into their planes.
   const PlaneContact& pair = contacts_[c];
   dynamics_.calc_motion(d_.impact_y, true);
   calc_contact_points();
-  bool any = false;
+  bool more = false;
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    d_.held_in_impact[k] = 0;
     const ContactStatus& status = s_.contacts[k];
     const PlaneContact& contact = contacts_[k];
-    if (contact.touches_a_body() || status.mode == ContactMode::Apart) continue;
+    if (d_.held_in_impact[k] != 0 || contact.touches_a_body() ||
+        status.mode == ContactMode::Apart) {
+      continue;
+    }
     if (!dynamics_.moves_with(contact.body, pair.body) &&
         !dynamics_.moves_with(contact.body, pair.other_body)) {
       continue;
@@ -389,11 +390,11 @@ bool ContactSystem::drives_into_planes(std::size_t c) {
     for (int i = 0; i < now.normal_point_count; ++i) {
       if (normal_speed(k, now.normal_points_B[static_cast<std::size_t>(i)]) < -status.slip_zero) {
         d_.held_in_impact[k] = 1;
-        any = true;
+        more = true;
       }
     }
   }
-  return any;
+  return more;
 }
 
 Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool friction,
@@ -451,15 +452,8 @@ Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool fr
     }
     d_.impact_y = y;
     apply_contact_impulses(count, d_.x, d_.impact_y);
-    if (changed) continue;
     // A plane not held that the result drives in is held too.
-    for (std::size_t k = 0; k < contacts_.size(); ++k) d_.held_before[k] = d_.held_in_impact[k];
-    drives_into_planes(c);
-    for (std::size_t k = 0; k < contacts_.size(); ++k) {
-      if (d_.held_in_impact[k] != 0 && d_.held_before[k] == 0) changed = true;
-      d_.held_in_impact[k] = static_cast<char>(d_.held_in_impact[k] | d_.held_before[k]);
-    }
-    if (!changed) break;
+    if (!changed && !hold_planes_driven_in(c)) break;
   }
   return impulse_W;
 }
@@ -538,7 +532,10 @@ void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
     dynamics_.apply_speed_jumps(d_.impact_y);
     // A body resting on a plane that this impulse would drive into it (a ball struck from above,
     // on the floor): the plane takes its part of the blow in the same instant.
-    if (drives_into_planes(c)) impulse_W = pair_impulse_holding_planes(c, law.e, law.friction, y);
+    std::fill(d_.held_in_impact.begin(), d_.held_in_impact.end(), 0);
+    if (hold_planes_driven_in(c)) {
+      impulse_W = pair_impulse_holding_planes(c, law.e, law.friction, y);
+    }
     dynamics_.calc_motion(d_.impact_y, true);
     work = dynamics_.kinetic_energy() - energy_before;
     if (work <= kWorkRoundOff * energy_before) break;

@@ -77,11 +77,11 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
 
 // Whether the shape touches another body's: a sphere's or a shell's surface, or a box's (which
 // touches a sphere).
-bool is_round_ball(ShapeKind kind) {
+bool is_sphere_or_shell(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell;
 }
 bool touches_a_body(ShapeKind kind) {
-  return is_round_ball(kind) || kind == ShapeKind::Box;
+  return is_sphere_or_shell(kind) || kind == ShapeKind::Box;
 }
 
 // One of the two bodies of a `type: bodies` contact: its touching part where it is a composite
@@ -96,7 +96,7 @@ TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
       "two bodies touch at a sphere (or shell) and a sphere or a box, each a body's shape or a "
       "composite's one such part";
   if (body.parts.empty()) {
-    if (touches_a_body(body.shape.kind)) return {-1, is_round_ball(body.shape.kind)};
+    if (touches_a_body(body.shape.kind)) return {-1, is_sphere_or_shell(body.shape.kind)};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
                                          std::string(shape_name(body.shape.kind)) + "; " + what);
   }
@@ -104,7 +104,7 @@ TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
   int count = 0;
   for (std::size_t p = 0; p < body.parts.size(); ++p) {
     if (!touches_a_body(body.parts[p].shape.kind)) continue;
-    found = {static_cast<int>(p), is_round_ball(body.parts[p].shape.kind)};
+    found = {static_cast<int>(p), is_sphere_or_shell(body.parts[p].shape.kind)};
     ++count;
   }
   if (count != 1) {

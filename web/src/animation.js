@@ -68,6 +68,8 @@ function partGeometry(part, notes, bodyName) {
       return new THREE.BoxGeometry(part.size[0], part.size[1], 0.002 * Math.max(...part.size));
     case 'cylinder':
       return alongZ(new THREE.CylinderGeometry(part.radius, part.radius, part.length, seg));
+    case 'capsule':
+      return alongZ(new THREE.CapsuleGeometry(part.radius, part.length, seg / 4, seg));
     case 'disk':
       return alongZ(new THREE.CylinderGeometry(part.radius, part.radius, 0.01 * part.radius, seg));
     case 'tube': {

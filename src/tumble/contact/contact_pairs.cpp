@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
 
 namespace tumble {
 
@@ -13,15 +14,21 @@ const ContactPair& contact_pair(ContactSurface::Kind surface, TouchedSurface tou
   constexpr std::size_t kTouched = static_cast<std::size_t>(TouchedSurface::Plane) + 1;
   using Row = std::array<const ContactPair*, kTouched>;
   // Rows in the order of ContactSurface::Kind; columns in the order of TouchedSurface.
-  static const std::array<Row, 5> table = {
+  static const std::array<Row, 6> table = {
       Row{&sphere_on_plane()},      // Sphere
       Row{&round_on_plane()},       // Circle
       Row{&round_on_plane()},       // Cylinder
       Row{&polyhedron_on_plane()},  // Polyhedron
       Row{&round_on_plane()},       // Cone
+      Row{nullptr},                 // Capsule: another body's sphere touches it (pair_core.hpp)
   };
-  static_assert(static_cast<std::size_t>(Kind::Cone) + 1 == 5, "a row for every surface kind");
-  return *table[static_cast<std::size_t>(surface)][static_cast<std::size_t>(touched)];
+  static_assert(static_cast<std::size_t>(Kind::Capsule) + 1 == 6, "a row for every surface kind");
+  const ContactPair* pair =
+      table[static_cast<std::size_t>(surface)][static_cast<std::size_t>(touched)];
+  if (pair == nullptr) {
+    throw std::logic_error("no contact pair for this surface; the scenario reader refuses it");
+  }
+  return *pair;
 }
 
 double ContactPair::point_height(const PairView& v) const {

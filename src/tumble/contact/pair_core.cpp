@@ -6,13 +6,15 @@
 namespace tumble {
 
 double core_radius(const ContactSurface& surface) {
-  return surface.kind == ContactSurface::Kind::Sphere ? surface.radius : 0.0;
+  return surface.kind == ContactSurface::Kind::Sphere ||
+                 surface.kind == ContactSurface::Kind::Capsule
+             ? surface.radius
+             : 0.0;
 }
 
 double pair_size(const PlaneContact& contact) {
-  return contact.other_surface.kind == ContactSurface::Kind::Sphere
-             ? std::min(contact.surface.radius, contact.other_surface.radius)
-             : contact.surface.radius;
+  const double other = core_radius(contact.other_surface);
+  return other > 0.0 ? std::min(contact.surface.radius, other) : contact.surface.radius;
 }
 
 CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
@@ -20,6 +22,19 @@ CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
   if (surface.kind == ContactSurface::Kind::Sphere) {
     closest.p_B = surface.centre_B;
     const Vec3 apart_B = x_B - surface.centre_B;
+    closest.distance = apart_B.norm();
+    if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
+    return closest;
+  }
+  if (surface.kind == ContactSurface::Kind::Capsule) {
+    // The segment's point nearest: clamped to its ends, where it no longer slides.
+    const Vec3 axis_B = surface.axes_B.col(2);
+    const double along = axis_B.dot(x_B - surface.centre_B);
+    const double h = surface.half_length;
+    closest.p_B = surface.centre_B + std::clamp(along, -h, h) * axis_B;
+    if (std::abs(along) < h)
+      closest.slide_B[static_cast<std::size_t>(closest.slide_count++)] = axis_B;
+    const Vec3 apart_B = x_B - closest.p_B;
     closest.distance = apart_B.norm();
     if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
     return closest;

@@ -1,12 +1,13 @@
 #pragma once
 // The other surface of a contact between two bodies as a core swept by a radius: a sphere is its
-// centre swept by its radius, a box its own solid (radius 0). The body's sphere touches it where
+// centre swept by its radius, a capsule its axis's segment between its caps' centres swept by
+// its radius, a box its own solid (radius 0). The body's sphere touches it where
 // the sphere's centre comes within the two radii of the core, so the gap is the centre's
 // distance from the core less the radii, and the normal runs from the core's closest point to
 // the centre. As the centre moves, that closest point slides over the core along the directions
-// its feature leaves free (a box's face: both of the face's; an edge: the edge's; a vertex or a
-// sphere's centre: none), and the normal turns with what is left of the centre's motion across
-// it (sphere_pairs.cpp).
+// its feature leaves free (a box's face: both of the face's; an edge or a capsule's segment: its
+// direction; a vertex, a segment's end or a sphere's centre: none), and the normal turns with what
+// is left of the centre's motion across it (sphere_pairs.cpp).
 #include <array>
 
 #include "tumble/contact/plane_contact.hpp"
@@ -18,15 +19,15 @@ struct CoreClosest {
   Vec3 p_B = Vec3::Zero();   // the core's point nearest the centre (body axes, from the COM)
   Vec3 n_B = Vec3::UnitZ();  // unit, from p_B towards the centre (any, where they coincide)
   double distance = 0.0;     // m, of the centre from the core (< 0: inside a box, by that much)
-  int slide_count = 0;       // how many directions p_B slides along: 2 a face, 1 an edge
+  int slide_count = 0;       // how many directions p_B slides along: 2 a face, 1 an edge or segment
   std::array<Vec3, 2> slide_B = {Vec3::Zero(), Vec3::Zero()};  // unit, body axes
 };
 
-// The core's point nearest x_B (body axes, from the COM), of a sphere or a box surface.
+// The core's point nearest x_B (body axes, from the COM), of a sphere, capsule or box surface.
 CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B);
-// The radius that sweeps the core: a sphere's; a box's 0.
+// The radius that sweeps the core: a sphere's or capsule's; a box's 0.
 double core_radius(const ContactSurface& surface);
-// The length that sets a pair's tolerances: the smaller sphere's radius (a box's core has none).
+// The length that sets a pair's tolerances: the smaller radius (a box's core has none).
 double pair_size(const PlaneContact& contact);
 
 }  // namespace tumble

@@ -19,20 +19,23 @@ namespace tumble {
 // A polyhedron's support point is its lowest vertex; a round body's, the lower of its two ends'
 // lowest rim points (round_contact.hpp).
 struct ContactSurface {
-  enum class Kind { Sphere, Circle, Cylinder, Polyhedron, Cone } kind = Kind::Sphere;
-  double radius = 0.0;               // m; a cone's base
-  double half_length = 0.0;          // m, cylinder: the end rims are at z = +-half_length
+  // A capsule touches only another body's sphere (pair_core.hpp), not a plane.
+  enum class Kind { Sphere, Circle, Cylinder, Polyhedron, Cone, Capsule } kind = Kind::Sphere;
+  double radius = 0.0;  // m; a cone's base
+  // m, cylinder: the end rims are at z = +-half_length; capsule: its caps' centres
+  double half_length = 0.0;
   std::vector<Vec3> vertices;        // m, polyhedron: from the COM, body axes; a cone: its apex
   Vec3 rim_centre_B = Vec3::Zero();  // m, a cone's base centre (its rim about the z axis)
   // m: a ring's or tube's end faces are annuli from this radius out (0: full disks)
   double face_inner_radius = 0.0;
-  Vec3 centre_B = Vec3::Zero();  // m, a sphere's or box's centre from the COM (a composite's part)
+  Vec3 centre_B = Vec3::Zero();  // m, a sphere's, box's or capsule's centre from the COM (a part's)
   // m, a box's half-sizes along its axes (axes_B: the body's own, or a composite's box part's):
   // what touches another body's sphere (pair_core.hpp); zero for every other shape.
   Vec3 half_size = Vec3::Zero();
-  // A composite's round part (a disk or ring, a cylinder or tube, a cone): its own axes in the
-  // body's (its axis of symmetry the third), and centre_B its centre (a cylinder's middle, a disk's
-  // centre; a cone's apex and base centre are in `vertices` and rim_centre_B, placed already).
+  // A composite's round part (a disk or ring, a cylinder or tube, a cone) or capsule: its own
+  // axes in the body's (its axis of symmetry the third), and centre_B its centre (a cylinder's
+  // middle, a disk's centre; a cone's apex and base centre are in `vertices` and rim_centre_B,
+  // placed already).
   // Otherwise the body's own axes and COM (`turned` false).
   Mat3 axes_B = Mat3::Identity();
   bool turned = false;
@@ -43,8 +46,8 @@ struct ContactSurface {
 
 // A contact between two bodies' surfaces (`type: bodies`) is one of these too, so that every
 // contact has its place in the model's list, its columns, events and ledger entry: `body`'s
-// surface (a sphere) touches `other_body`'s other_surface (a sphere or a box: pair_core.hpp), and
-// point_W and normal_W are unused (sphere_pairs.cpp).
+// surface (a sphere) touches `other_body`'s other_surface (a sphere, a box or a capsule:
+// pair_core.hpp), and point_W and normal_W are unused (sphere_pairs.cpp).
 struct PlaneContact {
   static constexpr std::size_t kNoOtherBody = static_cast<std::size_t>(-1);
 

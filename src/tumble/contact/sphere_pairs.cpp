@@ -1,5 +1,5 @@
-// A body's sphere touching another body's sphere or box (docs/scenario.md, "Bodies that touch
-// each other"): a contact between two bodies, free or held by joints, in one tree or not. The
+// A body's sphere touching another body's sphere, capsule or box (docs/scenario.md, "Bodies that
+// touch each other"): a contact between two bodies, free or held by joints, in one tree or not. The
 // pair is apart, its gap watched by the touchdown event, meets in an impact, or presses, slides
 // and rolls on itself in the modes a plane's contact has (contact_modes.cpp), with the same
 // events.
@@ -104,8 +104,8 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
     line.turning = (v_W.squaredNorm() - along * along) / line.distance;
     return line;
   }
-  // A box: in its body's axes, where the nearest point slides along the feature's free
-  // directions, and the normal turns with what is left of the centre's relative motion.
+  // A capsule or a box: in its body's axes, where the nearest point slides along the feature's
+  // free directions, and the normal turns with what is left of the centre's relative motion.
   const Vec3 x_B = b.R_WB.transpose() * (centre_W - b.r_G_W);
   const CoreClosest closest = core_closest(contact.other_surface, x_B);
   line.distance = closest.distance;
@@ -202,16 +202,27 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
   const double gap = now.support.height;
   if (gap < -scales.touching_height) {
     const double radii = contact.surface.radius + core_radius(contact.other_surface);
-    const bool spheres = contact.other_surface.kind == ContactSurface::Kind::Sphere;
-    return StartProblem{
-        c, spheres ? fmt::format("bodies '{}' and '{}' start overlapping by {:.6g} m (their "
-                                 "spheres' centres are {:.6g} m apart, their radii add to {:.6g} "
-                                 "m); place them apart or just touching",
-                                 a, b, -gap, radii + gap, radii)
-                   : fmt::format("bodies '{}' and '{}' start overlapping by {:.6g} m (the "
-                                 "sphere's centre is {:.6g} m from the box, below 0 inside it, "
-                                 "its radius {:.6g} m); place them apart or just touching",
-                                 a, b, -gap, radii + gap, radii)};
+    std::string how;
+    switch (contact.other_surface.kind) {
+      case ContactSurface::Kind::Sphere:
+        how = fmt::format("their spheres' centres are {:.6g} m apart, their radii add to {:.6g} m",
+                          radii + gap, radii);
+        break;
+      case ContactSurface::Kind::Capsule:
+        how = fmt::format(
+            "the sphere's centre is {:.6g} m from the capsule's axis between its caps' centres, "
+            "their radii add to {:.6g} m",
+            radii + gap, radii);
+        break;
+      default:
+        how = fmt::format(
+            "the sphere's centre is {:.6g} m from the box, below 0 inside it, its radius {:.6g} m",
+            radii + gap, radii);
+        break;
+    }
+    return StartProblem{c, fmt::format("bodies '{}' and '{}' start overlapping by {:.6g} m ({}); "
+                                       "place them apart or just touching",
+                                       a, b, -gap, how)};
   }
   const double vn = now.support_normal_speed;
   if (gap <= scales.touching_height && vn < -scales.slip_zero) {

@@ -11,7 +11,7 @@
 namespace tumble {
 namespace {
 
-constexpr std::array<std::pair<ShapeKind, std::string_view>, 13> kShapeNames = {{
+constexpr std::array<std::pair<ShapeKind, std::string_view>, 14> kShapeNames = {{
     {ShapeKind::Point, "point"},
     {ShapeKind::Rod, "rod"},
     {ShapeKind::Ring, "ring"},
@@ -25,6 +25,7 @@ constexpr std::array<std::pair<ShapeKind, std::string_view>, 13> kShapeNames = {
     {ShapeKind::Plate, "plate"},
     {ShapeKind::Mesh, "mesh"},
     {ShapeKind::Torus, "torus"},
+    {ShapeKind::Capsule, "capsule"},
 }};
 
 using inertia_detail::format_number;
@@ -53,6 +54,7 @@ void check_dimensions(const Shape& shape) {
       require_positive(shape, "radius", shape.radius);
       return;
     case ShapeKind::Cylinder:
+    case ShapeKind::Capsule:
       require_positive(shape, "radius", shape.radius);
       require_positive(shape, "length", shape.length);
       return;
@@ -163,6 +165,8 @@ double shape_measure(const Shape& shape) {
       return shape.size.x() * shape.size.y();
     case ShapeKind::Mesh:
       return mesh_volume(load_closed_mesh(shape));
+    case ShapeKind::Capsule:  // the cylinder and the two caps, a sphere between them
+      return std::numbers::pi * R * R * (shape.length + 4.0 * R / 3.0);
     case ShapeKind::Torus:  // Pappus: the tube's section times the path of its centre
       return std::numbers::pi * shape.tube_radius * shape.tube_radius * 2.0 * std::numbers::pi * R;
   }
@@ -247,6 +251,20 @@ MassProperties shape_mass_properties(const Shape& shape, double mass) {
       const double r = shape.tube_radius;
       const double transverse = M * (R * R / 2.0 + 5.0 * r * r / 8.0);
       mp.inertia_about_com = diagonal(transverse, transverse, M * (R * R + 3.0 * r * r / 4.0));
+      break;
+    }
+    case ShapeKind::Capsule: {
+      // The mass shared by volume: the cylinder's m_c (length L), the two caps' m_s (a sphere's
+      // worth). About the axis: m_c R^2 / 2 + 2 m_s R^2 / 5. About a diameter through the COM:
+      // the cylinder's m_c (3 R^2 + L^2) / 12, and each cap's 2 (m_s / 2) R^2 / 5 about its flat
+      // face's centre, moved to its own COM (3R/8 out) and then to the capsule's (L/2 + 3R/8
+      // from it): m_s (2 R^2 / 5 + L^2 / 4 + 3 L R / 8) for the two.
+      const double cylinder = L / (L + 4.0 * R / 3.0), caps = 1.0 - cylinder;
+      const double m_c = M * cylinder, m_s = M * caps;
+      const double transverse = m_c * (3.0 * R * R + L * L) / 12.0 +
+                                m_s * (2.0 * R * R / 5.0 + L * L / 4.0 + 3.0 * L * R / 8.0);
+      mp.inertia_about_com =
+          diagonal(transverse, transverse, m_c * R * R / 2.0 + 2.0 * m_s * R * R / 5.0);
       break;
     }
   }

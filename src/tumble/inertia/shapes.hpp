@@ -1,7 +1,8 @@
 #pragma once
 // The shapes of the scenario contract, each with its frame at the COM and its axis of symmetry z
 // (a rod lies along x; a plate in the x-y plane; a cone has its base at z = -h/4 and its apex at
-// z = 3h/4; a torus's centre circle lies in the x-y plane). Closed forms of the chapter's table in
+// z = 3h/4; a torus's centre circle lies in the x-y plane; a capsule is a cylinder of the given
+// length along z capped by two hemispheres of its radius). Closed forms of the chapter's table in
 // section 6.7.2.
 #include <optional>
 #include <string>
@@ -24,13 +25,16 @@ enum class ShapeKind {
   Cone,
   Plate,
   Mesh,
-  Torus
+  Torus,
+  Capsule
 };
 
 struct Shape {
   ShapeKind kind = ShapeKind::Point;
-  double length = 0.0;  // m: rod, cylinder, tube
-  double radius = 0.0;  // m: ring, disk, cylinder, sphere, shell, cone; a torus's centre circle
+  double length =
+      0.0;  // m: rod, cylinder, tube; a capsule's straight part (its caps' centres apart)
+  double radius = 0.0;  // m: ring, disk, cylinder, sphere, shell, cone, capsule; a torus's centre
+                        // circle
   double tube_radius = 0.0;   // m: torus, its tube (less than its radius)
   double inner_radius = 0.0;  // m: tube
   double outer_radius = 0.0;  // m: tube

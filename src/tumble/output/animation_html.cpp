@@ -29,6 +29,8 @@ double part_radius(const AnimationPart& part) {
       return 0.5 * s.size.norm();
     case ShapeKind::Cylinder:
       return std::hypot(s.radius, 0.5 * s.length);
+    case ShapeKind::Capsule:
+      return s.radius + 0.5 * s.length;
     case ShapeKind::Tube:
       return std::hypot(s.outer_radius, 0.5 * s.length);
     case ShapeKind::Rod:

@@ -2,8 +2,8 @@
 // and {type: bodies, bodies: [a, b], friction:, restitution:}. On a plane the body must be of a
 // shape whose contact with a plane tumble resolves: a sphere or shell, a round body (disk, ring,
 // torus, cylinder, tube, cone) or a polyhedron (docs/scenario.md, Contacts), or a composite whose
-// touching part is one of these. Two bodies touch at their spheres (for now: a sphere or shell
-// each, or a composite's sphere part).
+// touching part is one of these. Two bodies touch at a sphere (or shell) and a sphere, a capsule
+// or a box (each a body's shape or a composite's one such part).
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -75,28 +75,29 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
   return found;
 }
 
-// Whether the shape touches another body's: a sphere's or a shell's surface, or a box's (which
-// touches a sphere).
+// Whether the shape touches another body's: a sphere's or a shell's surface, or a capsule's or a
+// box's (which touch a sphere).
 bool is_sphere_or_shell(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell;
 }
 bool touches_a_body(ShapeKind kind) {
-  return is_sphere_or_shell(kind) || kind == ShapeKind::Box;
+  return is_sphere_or_shell(kind) || kind == ShapeKind::Capsule || kind == ShapeKind::Box;
 }
 
 // One of the two bodies of a `type: bodies` contact: its touching part where it is a composite
-// (-1: the body itself), and whether that is a sphere (else a box).
+// (-1: the body itself), its shape, and whether that is a sphere (else a capsule or a box).
 struct TouchingShape {
   int part = -1;
-  bool sphere = true;
+  ShapeKind kind = ShapeKind::Sphere;
+  bool sphere() const { return is_sphere_or_shell(kind); }
 };
 TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
                                   const BodySpec& body) {
   const char* what =
-      "two bodies touch at a sphere (or shell) and a sphere or a box, each a body's shape or a "
-      "composite's one such part";
+      "two bodies touch at a sphere (or shell) and a sphere, a capsule or a box, each a body's "
+      "shape or a composite's one such part";
   if (body.parts.empty()) {
-    if (touches_a_body(body.shape.kind)) return {-1, is_sphere_or_shell(body.shape.kind)};
+    if (touches_a_body(body.shape.kind)) return {-1, body.shape.kind};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
                                          std::string(shape_name(body.shape.kind)) + "; " + what);
   }
@@ -104,13 +105,13 @@ TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
   int count = 0;
   for (std::size_t p = 0; p < body.parts.size(); ++p) {
     if (!touches_a_body(body.parts[p].shape.kind)) continue;
-    found = {static_cast<int>(p), is_sphere_or_shell(body.parts[p].shape.kind)};
+    found = {static_cast<int>(p), body.parts[p].shape.kind};
     ++count;
   }
   if (count != 1) {
     reader.fail_at_value(body_field, "body '" + body.name + "' is a composite with " +
-                                         std::to_string(count) + " sphere or box parts; " + what +
-                                         ", one such part to a body");
+                                         std::to_string(count) + " sphere, capsule or box parts; " +
+                                         what + ", one such part to a body");
   }
   return found;
 }
@@ -179,17 +180,22 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = a + 1; b < bodies.size(); ++b) {
       if (!with_joined && joined(scenario, bodies[a], bodies[b])) continue;
-      if (!shapes[a].sphere && !shapes[b].sphere) {
+      if (!shapes[a].sphere() && !shapes[b].sphere()) {
         if (names.size() == 2) {
-          reader.fail_at_value(list,
-                               "two boxes do not touch each other yet: one of the two "
-                               "bodies must be a sphere (or shell)");
+          reader.fail_at_value(
+              list, shapes[a].kind == shapes[b].kind
+                        ? fmt::format("two {} do not touch each other yet: one of the two "
+                                      "bodies must be a sphere (or shell)",
+                                      shapes[a].kind == ShapeKind::Box ? "boxes" : "capsules")
+                        : fmt::format("a {} and a {} do not touch each other yet: one of the two "
+                                      "bodies must be a sphere (or shell)",
+                                      shape_name(shapes[a].kind), shape_name(shapes[b].kind)));
         }
-        continue;  // a group's boxes touch its spheres only
+        continue;  // a group's capsules and boxes touch its spheres only
       }
-      // The sphere is the contact's body (its columns are the sphere's): a box named first goes
-      // second.
-      const bool swap = !shapes[a].sphere;
+      // The sphere is the contact's body (its columns are the sphere's): a capsule or box named
+      // first goes second.
+      const bool swap = !shapes[a].sphere();
       const std::size_t first = swap ? b : a, second = swap ? a : b;
       ContactSpec pair;
       pair.name = bodies[a] + "_" + bodies[b];  // a group's: NAME_a_b, in the list's order
@@ -266,10 +272,14 @@ std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map
   if (!body.parts.empty()) {
     contact.part = read_touching_part(reader, map, body_field, body);
   } else if (!touches_a_plane(body.shape.kind)) {
-    reader.fail_at_value(body_field, "body '" + contact.body + "' is a " +
-                                         std::string(shape_name(body.shape.kind)) +
-                                         "; contact with a plane is for " + kTouchingShapes +
-                                         ", or a composite's part of one of these shapes");
+    reader.fail_at_value(
+        body_field,
+        "body '" + contact.body + "' is a " + std::string(shape_name(body.shape.kind)) +
+            "; contact with a plane is for " + kTouchingShapes +
+            ", or a composite's part of one of these shapes" +
+            (body.shape.kind == ShapeKind::Capsule ? " (a capsule touches another body's sphere, "
+                                                     "`type: bodies`, not yet a plane)"
+                                                   : ""));
   } else if (const auto f = map.find("part")) {
     reader.fail_at_value(*f, "body '" + contact.body +
                                  "' is one shape, not a composite: it has "

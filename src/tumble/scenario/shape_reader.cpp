@@ -17,9 +17,9 @@ namespace {
 constexpr double kRotationTolerance = 1e-9;
 
 const std::vector<ShapeKind> kAllShapes = {
-    ShapeKind::Point, ShapeKind::Rod,    ShapeKind::Ring,  ShapeKind::Disk, ShapeKind::Cylinder,
-    ShapeKind::Tube,  ShapeKind::Sphere, ShapeKind::Shell, ShapeKind::Box,  ShapeKind::Cone,
-    ShapeKind::Plate, ShapeKind::Mesh,   ShapeKind::Torus};
+    ShapeKind::Point, ShapeKind::Rod,    ShapeKind::Ring,  ShapeKind::Disk,   ShapeKind::Cylinder,
+    ShapeKind::Tube,  ShapeKind::Sphere, ShapeKind::Shell, ShapeKind::Box,    ShapeKind::Cone,
+    ShapeKind::Plate, ShapeKind::Mesh,   ShapeKind::Torus, ShapeKind::Capsule};
 
 // What a density is per unit of: a curve's length, a surface's area, a solid's volume.
 std::string_view density_unit(ShapeKind kind) {
@@ -49,6 +49,8 @@ std::optional<std::string_view> synonym(std::string_view word) {
       {"stick", "rod"},
       {"hoop", "ring"},
       {"pipe", "tube"},
+      {"pill", "capsule"},
+      {"spherocylinder", "capsule"},
       {"cylinder_shell", "tube"},
       {"sheet", "plate"},
       {"rectangle", "plate"},
@@ -114,6 +116,7 @@ void read_dimensions(const Reader& reader, const MapReader& map, Shape& shape,
       shape.radius = positive_length(reader, dimension("radius"));
       return;
     case ShapeKind::Cylinder:
+    case ShapeKind::Capsule:
       shape.radius = positive_length(reader, dimension("radius"));
       shape.length = positive_length(reader, dimension("length"));
       return;
@@ -187,6 +190,7 @@ const std::vector<std::string>& dimension_keys(ShapeKind kind) {
     case ShapeKind::Shell:
       return radius;
     case ShapeKind::Cylinder:
+    case ShapeKind::Capsule:
       return radius_length;
     case ShapeKind::Tube:
       return tube;

@@ -42,6 +42,12 @@ ContactSurface contact_surface(const Shape& shape) {
       surface.half_length = shape.length / 2;
       if (shape.kind == ShapeKind::Tube) surface.face_inner_radius = shape.inner_radius;
       break;
+    case ShapeKind::Capsule:
+      // Its axis's segment between the caps' centres, swept by its radius (pair_core.hpp).
+      surface.kind = ContactSurface::Kind::Capsule;
+      surface.radius = shape.radius;
+      surface.half_length = shape.length / 2;
+      break;
     case ShapeKind::Box:
     case ShapeKind::Plate: {
       // The corners; a plate's two faces share its four.
@@ -86,15 +92,15 @@ ContactSurface part_contact_surface(const BodySpec& body, const PartSpec& part) 
   // The surface is the part's from its own COM (a sphere's or box's centre; a mesh's vertices
   // less its COM in its file's frame; a disk's or cylinder's centre; a cone's, a quarter of its
   // height above its base): a sphere's centre, a polyhedron's vertices and a cone's apex and
-  // base centre turned into the body's axes about the part's COM there, and a round part's axes
-  // those of the part.
+  // base centre turned into the body's axes about the part's COM there, and a round part's (a
+  // capsule's) axes those of the part.
   const Vec3 centre_B = part.mass_properties.com - body.mass_properties.com;
   surface.centre_B = centre_B;
   for (Vec3& p : surface.vertices) p = centre_B + part.R_BP * p;
   if (!surface.half_size.isZero(0.0)) surface.axes_B = part.R_BP;  // a box part, turned
   if (surface.kind == ContactSurface::Kind::Circle ||
       surface.kind == ContactSurface::Kind::Cylinder ||
-      surface.kind == ContactSurface::Kind::Cone) {
+      surface.kind == ContactSurface::Kind::Cone || surface.kind == ContactSurface::Kind::Capsule) {
     surface.rim_centre_B = centre_B + part.R_BP * surface.rim_centre_B;
     surface.axes_B = part.R_BP;
     surface.turned = true;

@@ -116,6 +116,8 @@ const bodies = data.bodies.map((spec, b) => {
     color, roughness: 0.6, metalness: 0.05, side: THREE.DoubleSide,
     transparent: false, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
   });
+  const shellMaterial = material.clone();
+  Object.assign(shellMaterial, {transparent: true, opacity: 0.3, depthWrite: false});
   // Edges a shade darker than the body, so a composite reads as one body of its colour; thin
   // parts (a rod, a ring, a point) are all edge and get none.
   const edgeMaterial = new THREE.LineBasicMaterial({
@@ -123,7 +125,8 @@ const bodies = data.bodies.map((spec, b) => {
   });
   for (const part of spec.parts) {
     const geometry = partGeometry(part, notes, spec.name);
-    const mesh = new THREE.Mesh(geometry, material);
+    // A shell is drawn see-through: what moves inside it (a ball in a bowl) stays in view.
+    const mesh = new THREE.Mesh(geometry, part.shape === 'shell' ? shellMaterial : material);
     const holder = new THREE.Group();
     holder.add(mesh);
     if (!['rod', 'ring', 'point'].includes(part.shape)) {

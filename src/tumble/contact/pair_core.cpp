@@ -6,6 +6,7 @@
 namespace tumble {
 
 double core_radius(const ContactSurface& surface) {
+  if (surface.touched_inside) return -surface.radius;
   return surface.kind == ContactSurface::Kind::Sphere ||
                  surface.kind == ContactSurface::Kind::Capsule
              ? surface.radius
@@ -13,7 +14,7 @@ double core_radius(const ContactSurface& surface) {
 }
 
 double pair_size(const PlaneContact& contact) {
-  const double other = core_radius(contact.other_surface);
+  const double other = std::abs(core_radius(contact.other_surface));
   return other > 0.0 ? std::min(contact.surface.radius, other) : contact.surface.radius;
 }
 
@@ -24,6 +25,10 @@ CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
     const Vec3 apart_B = x_B - surface.centre_B;
     closest.distance = apart_B.norm();
     if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
+    if (surface.touched_inside) {
+      closest.distance = -closest.distance;
+      closest.n_B = -closest.n_B;
+    }
     return closest;
   }
   if (surface.kind == ContactSurface::Kind::Capsule) {

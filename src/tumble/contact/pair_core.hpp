@@ -8,6 +8,12 @@
 // its feature leaves free (a box's face: both of the face's; an edge or a capsule's segment: its
 // direction; a vertex, a segment's end or a sphere's centre: none), and the normal turns with what
 // is left of the centre's motion across it (sphere_pairs.cpp).
+//
+// A shell touched from inside (a bowl) is its centre swept by minus its radius: the distance is
+// measured along the normal, which runs from the centre towards the shell's wall (away from the
+// sphere's centre, at minus the centres' distance), so that the gap, the distance less the radii,
+// is R - d - r there, and every formula in the normal, its turning and the contact point holds
+// with these signs.
 #include <array>
 
 #include "tumble/contact/plane_contact.hpp"
@@ -18,14 +24,17 @@ namespace tumble {
 struct CoreClosest {
   Vec3 p_B = Vec3::Zero();   // the core's point nearest the centre (body axes, from the COM)
   Vec3 n_B = Vec3::UnitZ();  // unit, from p_B towards the centre (any, where they coincide)
-  double distance = 0.0;     // m, of the centre from the core (< 0: inside a box, by that much)
-  int slide_count = 0;       // how many directions p_B slides along: 2 a face, 1 an edge or segment
+  // m, of the centre from the core along n (< 0: inside a box, by that much; inside a shell,
+  // minus the centres' distance)
+  double distance = 0.0;
+  int slide_count = 0;  // how many directions p_B slides along: 2 a face, 1 an edge or segment
   std::array<Vec3, 2> slide_B = {Vec3::Zero(), Vec3::Zero()};  // unit, body axes
 };
 
 // The core's point nearest x_B (body axes, from the COM), of a sphere, capsule or box surface.
 CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B);
-// The radius that sweeps the core: a sphere's or capsule's; a box's 0.
+// The radius that sweeps the core: a sphere's or capsule's; a box's 0; a shell's touched from
+// inside, minus its radius.
 double core_radius(const ContactSurface& surface);
 // The length that sets a pair's tolerances: the smaller radius (a box's core has none).
 double pair_size(const PlaneContact& contact);

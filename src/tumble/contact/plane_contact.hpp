@@ -42,6 +42,9 @@ struct ContactSurface {
   // m, a torus (kind Circle): its surface is the points within this of its centre circle, so
   // what touches is the circle's point that a ring would touch, this much further down.
   double tube_radius = 0.0;
+  // A shell that another body's sphere touches from inside (a bowl, a spherical cavity): the
+  // sphere started within it (pair_core.hpp).
+  bool touched_inside = false;
 };
 
 // A contact between two bodies' surfaces (`type: bodies`) is one of these too, so that every

@@ -91,14 +91,19 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
   PairLine line;
   const Vec3 centre_W = sphere_centre_W(a, contact.surface);
   if (contact.other_surface.kind == ContactSurface::Kind::Sphere) {
-    // Two spheres: the line of their centres, in world axes.
+    // Two spheres: the line of their centres, in world axes (inside a shell, n and the distance
+    // along it turned round: pair_core.hpp).
     const Vec3 apart_W = centre_W - sphere_centre_W(b, contact.other_surface);
     line.distance = apart_W.norm();
     if (line.distance > 0.0) line.n_W = apart_W / line.distance;
+    if (contact.other_surface.touched_inside) {
+      line.distance = -line.distance;
+      line.n_W = -line.n_W;
+    }
     line.p_B = contact.other_surface.centre_B;
     const Vec3& v_W = line.relative_velocity_W =
         point_velocity_W(a, contact.surface.centre_B) - point_velocity_W(b, line.p_B);
-    if (!(line.distance > 0.0)) return line;
+    if (line.distance == 0.0) return line;
     const double along = line.n_W.dot(v_W);
     line.n_rate_W = (v_W - line.n_W * along) / line.distance;
     line.turning = (v_W.squaredNorm() - along * along) / line.distance;
@@ -205,6 +210,13 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
     std::string how;
     switch (contact.other_surface.kind) {
       case ContactSurface::Kind::Sphere:
+        if (contact.other_surface.touched_inside) {
+          how = fmt::format(
+              "the sphere is inside the shell, its centre {:.6g} m from the shell's; its radius "
+              "{:.6g} m, the shell's {:.6g} m",
+              -(gap + radii), contact.surface.radius, contact.other_surface.radius);
+          break;
+        }
         how = fmt::format("their spheres' centres are {:.6g} m apart, their radii add to {:.6g} m",
                           radii + gap, radii);
         break;
@@ -249,8 +261,9 @@ double ContactSystem::pair_time_to_depth(std::size_t c) const {
   // velocity): never negative but where the other body turns. Their sizes bound how fast the
   // gap's rate can turn down.
   const ContactNow& now = d_.now[c];
-  // (Two spheres' turning is never negative: its round-off is left out.)
-  const bool spheres = contacts_[c].other_surface.kind == ContactSurface::Kind::Sphere;
+  // (Two spheres' turning is never negative, but inside a shell: its round-off is left out.)
+  const ContactSurface& other = contacts_[c].other_surface;
+  const bool spheres = other.kind == ContactSurface::Kind::Sphere && !other.touched_inside;
   const double bound =
       core_relative_acceleration_W(c).norm() + (spheres ? 0.0 : std::max(0.0, -now.pair_turning));
   return first_root(now.support.height + s_.contacts[c].landing_height, now.support_normal_speed,

@@ -112,6 +112,19 @@ Vec3 com_position_W(const BodySpec& body) {
   return body.position_W + body.R_WB * body.mass_properties.com;
 }
 
+// Whether the sphere (sphere_body's surface) starts inside the shell (shell_body's, the shell
+// its shape or its `shell_part`): then it touches the shell's inside, as a ball in a bowl.
+bool starts_inside(const BodySpec& shell_body, int shell_part, const ContactSurface& shell,
+                   const BodySpec& sphere_body, const ContactSurface& sphere) {
+  const ShapeKind kind = shell_part < 0
+                             ? shell_body.shape.kind
+                             : shell_body.parts[static_cast<std::size_t>(shell_part)].shape.kind;
+  if (kind != ShapeKind::Shell || sphere.kind != ContactSurface::Kind::Sphere) return false;
+  const Vec3 shell_centre_W = com_position_W(shell_body) + shell_body.R_WB * shell.centre_B;
+  const Vec3 sphere_centre_W = com_position_W(sphere_body) + sphere_body.R_WB * sphere.centre_B;
+  return (sphere_centre_W - shell_centre_W).norm() < shell.radius;
+}
+
 // The bodies' numbers by name (ground's is kGround), found in constant time: building stays
 // linear in the number of joints, forces and contacts.
 class BodyNumbers {
@@ -278,6 +291,15 @@ Model build_model(const Scenario& scenario) {
           spec.other_part < 0
               ? contact_surface(other.shape)
               : part_contact_surface(other, other.parts[static_cast<std::size_t>(spec.other_part)]);
+      // A sphere inside a shell touches its inside, and is the contact's body whichever of the
+      // two `bodies:` names first.
+      if (starts_inside(other, spec.other_part, contact.other_surface, body, contact.surface)) {
+        contact.other_surface.touched_inside = true;
+      } else if (starts_inside(body, spec.part, contact.surface, other, contact.other_surface)) {
+        std::swap(contact.body, contact.other_body);
+        std::swap(contact.surface, contact.other_surface);
+        contact.other_surface.touched_inside = true;
+      }
     }
     contact.point_W = spec.plane_point_W;
     contact.normal_W = spec.plane_normal_W;

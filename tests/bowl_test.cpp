@@ -15,9 +15,11 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "test_files.hpp"
 
 namespace tumble {
 namespace {

@@ -19,13 +19,18 @@
 
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "test_files.hpp"
 #include "tumble/inertia/shapes.hpp"
 
 namespace tumble {
 namespace {
 
 TEST(Capsule, InertiaIsTheSumOfItsSlices) {
-  for (const auto& [r, L] : {std::pair{0.1, 0.5}, std::pair{0.3, 0.05}, std::pair{0.02, 1.4}}) {
+  // (Plain names, not a structured binding: clang's lambdas do not capture those before C++20's
+  // last revision.)
+  for (const std::pair<double, double>& sizes :
+       {std::pair{0.1, 0.5}, std::pair{0.3, 0.05}, std::pair{0.02, 1.4}}) {
+    const double r = sizes.first, L = sizes.second;
     Shape shape;
     shape.kind = ShapeKind::Capsule;
     shape.radius = r;

@@ -5,6 +5,69 @@
 
 namespace tumble {
 
+namespace {
+
+// A cylinder (a disk: of length 0) in its own axes about its centre, the axis the third: the
+// point clamped to its length and to its radius. Held at an end (|z| > h) and within the radius,
+// on that face; beyond the radius and within the length, on the side; beyond both, on that end's
+// rim. Within both (inside it, by round-off: the start refuses it), on the nearer of the side and
+// the face.
+CoreClosest cylinder_closest(const ContactSurface& surface, const Vec3& x_B) {
+  CoreClosest closest;
+  const Mat3& A = surface.axes_B;
+  const Vec3 q = A.transpose() * (x_B - surface.centre_B);
+  const double R = surface.radius,
+               h = surface.kind == ContactSurface::Kind::Cylinder ? surface.half_length : 0.0;
+  const double rho = std::hypot(q.x(), q.y());
+  // Out from the axis towards the centre, and round the axis (any, on the axis).
+  const Vec3 out = rho > 0.0 ? Vec3(q.x() / rho, q.y() / rho, 0.0) : Vec3::UnitX();
+  const Vec3 round(-out.y(), out.x(), 0.0);
+  const bool beyond_end = std::abs(q.z()) > h, beyond_side = rho > R;
+  Vec3 p = q;
+  if (beyond_end) p.z() = std::copysign(h, q.z());
+  if (beyond_side) p.head<2>() = R * out.head<2>();
+  const auto slide = [&](const Vec3& e, double scale) {
+    const std::size_t k = static_cast<std::size_t>(closest.slide_count++);
+    closest.slide_B[k] = A * e;
+    closest.slide_scale[k] = scale;
+  };
+  if (!beyond_end && !beyond_side) {
+    // Inside: the nearer of the side and the face, at minus the depth.
+    const double to_side = R - rho, to_face = h - std::abs(q.z());
+    if (to_side < to_face) {
+      p.head<2>() = R * out.head<2>();
+      closest.n_B = A * out;
+      closest.distance = -to_side;
+      slide(Vec3::UnitZ(), 1.0);
+      slide(round, 1.0);
+    } else {
+      p.z() = std::copysign(h, q.z());
+      closest.n_B = std::copysign(1.0, q.z()) * A.col(2);
+      closest.distance = -to_face;
+      slide(Vec3::UnitX(), 1.0);
+      slide(Vec3::UnitY(), 1.0);
+    }
+    closest.p_B = surface.centre_B + A * p;
+    return closest;
+  }
+  if (!beyond_side) {  // a face: flat
+    slide(Vec3::UnitX(), 1.0);
+    slide(Vec3::UnitY(), 1.0);
+  } else if (!beyond_end) {  // the side: along the axis, and round it
+    slide(Vec3::UnitZ(), 1.0);
+    slide(round, R / rho);
+  } else {  // a rim: round the axis
+    slide(round, R / rho);
+  }
+  closest.p_B = surface.centre_B + A * p;
+  const Vec3 apart_B = x_B - closest.p_B;
+  closest.distance = apart_B.norm();
+  if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
+  return closest;
+}
+
+}  // namespace
+
 double core_radius(const ContactSurface& surface) {
   if (surface.touched_inside) return -surface.radius;
   return surface.kind == ContactSurface::Kind::Sphere ||
@@ -43,6 +106,10 @@ CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
     closest.distance = apart_B.norm();
     if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
     return closest;
+  }
+  if (surface.kind == ContactSurface::Kind::Cylinder ||
+      surface.kind == ContactSurface::Kind::Circle) {
+    return cylinder_closest(surface, x_B);
   }
   // A box: in its own axes (about its centre), the point clamped to its half-sizes. Each
   // coordinate held at a side fixes the normal's component there; the others slide.

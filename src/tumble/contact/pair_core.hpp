@@ -7,7 +7,10 @@
 // the centre. As the centre moves, that closest point slides over the core along the directions
 // its feature leaves free (a box's face: both of the face's; an edge or a capsule's segment: its
 // direction; a vertex, a segment's end or a sphere's centre: none), and the normal turns with what
-// is left of the centre's motion across it (sphere_pairs.cpp).
+// is left of the centre's motion across it (sphere_pairs.cpp). A cylinder or a disk is its own
+// solid too (radius 0): its nearest point is on a flat face, on its round side (sliding along the
+// axis and round it) or on a rim (round it); round a circle p_B moves at R / rho of the centre's
+// motion round the axis, rho the centre's distance from the axis.
 //
 // A shell touched from inside (a bowl) is its centre swept by minus its radius: the distance is
 // measured along the normal, which runs from the centre towards the shell's wall (away from the
@@ -29,12 +32,17 @@ struct CoreClosest {
   double distance = 0.0;
   int slide_count = 0;  // how many directions p_B slides along: 2 a face, 1 an edge or segment
   std::array<Vec3, 2> slide_B = {Vec3::Zero(), Vec3::Zero()};  // unit, body axes
+  // How fast p_B moves along each direction per unit of the centre's motion along it: 1 over a
+  // flat feature; round a circle of radius R (a cylinder's side or rim) whose axis the centre is
+  // rho from, R / rho.
+  std::array<double, 2> slide_scale = {1.0, 1.0};
 };
 
-// The core's point nearest x_B (body axes, from the COM), of a sphere, capsule or box surface.
+// The core's point nearest x_B (body axes, from the COM), of a sphere, capsule, box, cylinder or
+// disk surface.
 CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B);
-// The radius that sweeps the core: a sphere's or capsule's; a box's 0; a shell's touched from
-// inside, minus its radius.
+// The radius that sweeps the core: a sphere's or capsule's; a box's, cylinder's or disk's 0; a
+// shell's touched from inside, minus its radius.
 double core_radius(const ContactSurface& surface);
 // The length that sets a pair's tolerances: the smaller radius (a box's core has none).
 double pair_size(const PlaneContact& contact);

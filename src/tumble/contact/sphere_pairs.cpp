@@ -109,8 +109,9 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
     line.turning = (v_W.squaredNorm() - along * along) / line.distance;
     return line;
   }
-  // A capsule or a box: in its body's axes, where the nearest point slides along the feature's
-  // free directions, and the normal turns with what is left of the centre's relative motion.
+  // A capsule, a box, a cylinder or a disk: in its body's axes, where the nearest point slides
+  // along the feature's free directions (round a circle, at R / rho of the centre's motion), and
+  // the normal turns with what is left of the centre's relative motion.
   const Vec3 x_B = b.R_WB.transpose() * (centre_W - b.r_G_W);
   const CoreClosest closest = core_closest(contact.other_surface, x_B);
   line.distance = closest.distance;
@@ -118,9 +119,9 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
   line.p_B = closest.p_B;
   const Vec3 centre_velocity_W = point_velocity_W(a, contact.surface.centre_B);
   const Vec3 u_B = b.R_WB.transpose() * (centre_velocity_W - point_velocity_W(b, x_B));
-  for (int k = 0; k < closest.slide_count; ++k) {
-    const Vec3& e = closest.slide_B[static_cast<std::size_t>(k)];
-    line.p_rate_B += e * e.dot(u_B);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(closest.slide_count); ++k) {
+    const Vec3& e = closest.slide_B[k];
+    line.p_rate_B += e * (closest.slide_scale[k] * e.dot(u_B));
   }
   Vec3 n_rate_B = Vec3::Zero();  // over the other body
   if (line.distance > 0.0) {
@@ -228,8 +229,12 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
         break;
       default:
         how = fmt::format(
-            "the sphere's centre is {:.6g} m from the box, below 0 inside it, its radius {:.6g} m",
-            radii + gap, radii);
+            "the sphere's centre is {:.6g} m from the {}, below 0 inside it, its radius {:.6g} m",
+            radii + gap,
+            contact.other_surface.kind == ContactSurface::Kind::Cylinder ? "cylinder"
+            : contact.other_surface.kind == ContactSurface::Kind::Circle ? "disk"
+                                                                         : "box",
+            radii);
         break;
     }
     return StartProblem{c, fmt::format("bodies '{}' and '{}' start overlapping by {:.6g} m ({}); "

@@ -2,8 +2,8 @@
 // and {type: bodies, bodies: [a, b], friction:, restitution:}. On a plane the body must be of a
 // shape whose contact with a plane tumble resolves: a sphere or shell, a round body (disk, ring,
 // torus, cylinder, tube, cone) or a polyhedron (docs/scenario.md, Contacts), or a composite whose
-// touching part is one of these. Two bodies touch at a sphere (or shell) and a sphere, a capsule
-// or a box (each a body's shape or a composite's one such part).
+// touching part is one of these. Two bodies touch at a sphere (or shell) and a sphere, a capsule,
+// a box, a cylinder or a disk (each a body's shape or a composite's one such part).
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -76,16 +76,20 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
 }
 
 // Whether the shape touches another body's: a sphere's or a shell's surface, or a capsule's or a
-// box's (which touch a sphere).
+// box's (which touch a sphere), as a body's shape or a composite's part; a cylinder's or a disk's
+// (which touch a sphere) as a body's shape. (A composite's wheel or axle beside its sphere part
+// leaves that sphere its one part that touches.)
 bool is_sphere_or_shell(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell;
 }
-bool touches_a_body(ShapeKind kind) {
-  return is_sphere_or_shell(kind) || kind == ShapeKind::Capsule || kind == ShapeKind::Box;
+bool touches_a_body(ShapeKind kind, bool as_part) {
+  return is_sphere_or_shell(kind) || kind == ShapeKind::Capsule || kind == ShapeKind::Box ||
+         (!as_part && (kind == ShapeKind::Cylinder || kind == ShapeKind::Disk));
 }
 
 // One of the two bodies of a `type: bodies` contact: its touching part where it is a composite
-// (-1: the body itself), its shape, and whether that is a sphere (else a capsule or a box).
+// (-1: the body itself), its shape, and whether that is a sphere (else a capsule, a box, a
+// cylinder or a disk).
 struct TouchingShape {
   int part = -1;
   ShapeKind kind = ShapeKind::Sphere;
@@ -94,24 +98,25 @@ struct TouchingShape {
 TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
                                   const BodySpec& body) {
   const char* what =
-      "two bodies touch at a sphere (or shell) and a sphere, a capsule or a box, each a body's "
-      "shape or a composite's one such part";
+      "two bodies touch at a sphere (or shell) and a sphere, a capsule, a box, a cylinder or a "
+      "disk, each a body's shape (or a composite's one sphere, shell, capsule or box part)";
   if (body.parts.empty()) {
-    if (touches_a_body(body.shape.kind)) return {-1, body.shape.kind};
+    if (touches_a_body(body.shape.kind, false)) return {-1, body.shape.kind};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
                                          std::string(shape_name(body.shape.kind)) + "; " + what);
   }
   TouchingShape found;
   int count = 0;
   for (std::size_t p = 0; p < body.parts.size(); ++p) {
-    if (!touches_a_body(body.parts[p].shape.kind)) continue;
+    if (!touches_a_body(body.parts[p].shape.kind, true)) continue;
     found = {static_cast<int>(p), body.parts[p].shape.kind};
     ++count;
   }
   if (count != 1) {
     reader.fail_at_value(body_field, "body '" + body.name + "' is a composite with " +
-                                         std::to_string(count) + " sphere, capsule or box parts; " +
-                                         what + ", one such part to a body");
+                                         std::to_string(count) +
+                                         " sphere, shell, capsule or box parts; " + what +
+                                         ", one such part to a body");
   }
   return found;
 }
@@ -186,15 +191,17 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
               list, shapes[a].kind == shapes[b].kind
                         ? fmt::format("two {} do not touch each other yet: one of the two "
                                       "bodies must be a sphere (or shell)",
-                                      shapes[a].kind == ShapeKind::Box ? "boxes" : "capsules")
+                                      shapes[a].kind == ShapeKind::Box
+                                          ? std::string("boxes")
+                                          : std::string(shape_name(shapes[a].kind)) + "s")
                         : fmt::format("a {} and a {} do not touch each other yet: one of the two "
                                       "bodies must be a sphere (or shell)",
                                       shape_name(shapes[a].kind), shape_name(shapes[b].kind)));
         }
-        continue;  // a group's capsules and boxes touch its spheres only
+        continue;  // a group's other shapes touch its spheres only
       }
-      // The sphere is the contact's body (its columns are the sphere's): a capsule or box named
-      // first goes second.
+      // The sphere is the contact's body (its columns are the sphere's): another shape named first
+      // goes second.
       const bool swap = !shapes[a].sphere();
       const std::size_t first = swap ? b : a, second = swap ? a : b;
       ContactSpec pair;

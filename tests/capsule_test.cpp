@@ -5,10 +5,10 @@
 //    dm (rho^2 / 4 + z^2) about a diameter;
 //  - a sphere striking its side at right angles, frictionless, at the axial distance b from its
 //    COM: the impulse J = (1 + e) u / (1/m + 1/M + b^2 / I_t), both free and untouched by gravity;
-//  - a frictionless ball sliding off a fixed capsule lying level, started at its top and moving
-//    along its axis at w as well: the axis takes no force, so the ball keeps w along it, and across
-//    it slides as a particle off a circle of radius rho = r + R, leaving where cos theta = 2/3 +
-//    v0^2 / (3 g rho);
+//  - a frictionless ball sliding off a fixed capsule or cylinder lying level, started at its top
+//    and moving along its axis at w as well: the axis takes no force, so the ball keeps w along it,
+//    and across it slides as a particle off a circle of radius rho = r + R, leaving where cos theta
+//    = 2/3 + v0^2 / (3 g rho);
 //  - examples/billiard_cue.yaml: a cue whose tip does not slip strikes a ball on the table; the
 //    ball rolls at once where the blow's line passes 2R/5 above its centre (below).
 #include <gtest/gtest.h>
@@ -119,17 +119,19 @@ TEST(Capsule, ABallStrikingItsSideAtRightAnglesTakesTheClosedFormsImpulse) {
   }
 }
 
-// A fixed capsule (r 0.2, L 3) lying along x; a ball (R 0.1) on its top, moving at w along it
-// and v0 across it.
-std::string ball_on_a_log() {
+// A fixed log of radius 0.2 and length 3, a capsule or a cylinder, lying along x; a ball (R 0.1)
+// on its top, moving at w along it and v0 across it. (On a cylinder's side the nearest point moves
+// round the axis as well as along it.)
+std::string ball_on_a_log(const std::string& shape) {
   return "tumble: 1\n"
          "parameters: {w: 0.4, v0: 0.02}\n"
          "gravity: [0, 0, -" +
          std::to_string(test::kG) +
          "]\n"
          "bodies:\n"
-         "  log: {shape: capsule, radius: 0.2, length: 3, mass: 50, orientation: {axis: [0, 1, "
-         "0], angle: 90 deg}}\n"
+         "  log: {shape: " +
+         shape +
+         ", radius: 0.2, length: 3, mass: 50, orientation: {axis: [0, 1, 0], angle: 90 deg}}\n"
          "  ball: {shape: sphere, radius: 0.1, mass: 0.5, position: [-1, 0, 0.3], velocity: [w, "
          "v0, 0]}\n"
          "joints:\n"
@@ -140,9 +142,9 @@ std::string ball_on_a_log() {
          "0.01}\n";
 }
 
-TEST(Capsule, AFrictionlessBallSlidesOffALogAlongItsAxisWhereCosThetaIsTwoThirds) {
+// The ball slides off the log, as a particle off a circle, keeping its motion along the axis.
+void slides_off_a_log(const test::ScenarioRun& run) {
   const double g = test::kG, rho = 0.3, m = 0.5, w = 0.4, v0 = 0.02;
-  const test::ScenarioRun run = test::run_inline_scenario(ball_on_a_log(), "log");
   ASSERT_EQ(run.contact_events.size(), 2u);
   EXPECT_EQ(run.contact_events[0].what, "slides");
   EXPECT_EQ(run.contact_events[1].what, "lifts off");
@@ -168,6 +170,12 @@ TEST(Capsule, AFrictionlessBallSlidesOffALogAlongItsAxisWhereCosThetaIsTwoThirds
   }
 }
 
+TEST(Capsule, AFrictionlessBallSlidesOffALogAlongItsAxisWhereCosThetaIsTwoThirds) {
+  for (const char* shape : {"capsule", "cylinder"}) {
+    SCOPED_TRACE(shape);
+    slides_off_a_log(test::run_inline_scenario(ball_on_a_log(shape), "log"));
+  }
+}
 // examples/billiard_cue.yaml. A cue (mass M, a capsule of radius r and length L, its weight
 // carried by the player's hands) moving level at V along x strikes a ball (radius R, mass m,
 // I = 2 m R^2 / 5) at rest on the table, its tip's centre (R + r) s above the ball's centre. They

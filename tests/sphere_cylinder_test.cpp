@@ -3,9 +3,8 @@
 //  - a ball dropped onto a standing cylinder's top face, off its axis, or onto its rim: the
 //    relative normal velocity reverses times e along the normal from the face or the rim's
 //    nearest point, v' = v - (1 + e) (v . n) n, the ball fixed in its spin (frictionless);
-//  - a frictionless ball sliding off a level cylinder's side while moving along its axis at w: as
-//    off a circle of radius rho = R + r, it leaves where cos theta = 2/3 + v0^2 / (3 g rho),
-//    keeping w (the nearest point moving along the axis and round it);
+//  - a frictionless ball sliding off a level cylinder's side while moving along its axis
+//    (tests/capsule_test.cpp, with the capsule's);
 //  - a ball rolling without slip across a fixed disk's face and over its rim: it turns about the
 //    rim's point, v^2 = v0^2 + (10/7) g r (1 - cos theta), and leaves where N = 0:
 //    cos theta = (10 + 7 v0^2 / (g r)) / 17.
@@ -59,44 +58,6 @@ TEST(SphereCylinder, ABallDroppedOnAFaceOrARimReboundsAlongTheNormal) {
     const BodyState& ball = run.rows.back().states[1];
     EXPECT_LT((ball.v_G - v_after).norm(), 1e-12 * u) << x;
     EXPECT_LT(ball.omega_W.norm(), 1e-12) << x;
-  }
-}
-
-// A fixed cylinder (R 0.2, length 3) lying along x; a ball (r 0.1) on its top, moving at w along
-// it and v0 across it; frictionless.
-TEST(SphereCylinder, AFrictionlessBallSlidesOffASideAlongItsAxisWhereCosThetaIsTwoThirds) {
-  const double g = test::kG, rho = 0.3, w = 0.4, v0 = 0.02;
-  const std::string yaml =
-      "tumble: 1\n"
-      "gravity: [0, 0, -" +
-      std::to_string(g) +
-      "]\n"
-      "bodies:\n"
-      "  log: {shape: cylinder, radius: 0.2, length: 3, mass: 50, orientation: {axis: [0, 1, 0], "
-      "angle: 90 deg}}\n"
-      "  ball: {shape: sphere, radius: 0.1, mass: 0.5, position: [-1, 0, 0.3], velocity: [0.4, "
-      "0.02, 0]}\n"
-      "joints:\n"
-      "  footing: {type: fixed, bodies: [ground, log], at: [0, 0, 0]}\n"
-      "contacts:\n"
-      "  - {name: on_log, type: bodies, bodies: [ball, log], friction: 0, restitution: 0}\n"
-      "simulate: {duration: 1.2, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: "
-      "0.01}\n";
-  const test::ScenarioRun run = test::run_inline_scenario(yaml, "log");
-  ASSERT_EQ(run.contact_events.size(), 2u);
-  EXPECT_EQ(run.contact_events[0].what, "slides");
-  EXPECT_EQ(run.contact_events[1].what, "lifts off");
-  const ContactEventRecord& off = run.contact_events[1];
-  EXPECT_NEAR(off.normal_W.z(), 2.0 / 3.0 + v0 * v0 / (3 * g * rho), 1e-9);
-  EXPECT_NEAR(off.normal_W.x(), 0.0, 1e-12);
-  for (const test::Row& row : run.rows) {
-    if (row.t >= off.t) break;
-    const BodyState& ball = row.states[1];
-    EXPECT_NEAR(ball.r_G.x(), -1 + w * row.t, 1e-12) << row.t;
-    EXPECT_NEAR(std::hypot(ball.r_G.y(), ball.r_G.z()), rho, 1e-12 * rho) << row.t;
-    const double cos_theta = ball.r_G.z() / rho;
-    const double across2 = ball.v_G.y() * ball.v_G.y() + ball.v_G.z() * ball.v_G.z();
-    EXPECT_NEAR(across2, v0 * v0 + 2 * g * rho * (1 - cos_theta), 1e-11 * g * rho) << row.t;
   }
 }
 

@@ -7,6 +7,14 @@ namespace tumble {
 
 namespace {
 
+// The centre x_B's distance from the nearest point p_B, set already, and the normal from it.
+CoreClosest& measured_from_nearest(CoreClosest& closest, const Vec3& x_B) {
+  const Vec3 apart_B = x_B - closest.p_B;
+  closest.distance = apart_B.norm();
+  if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
+  return closest;
+}
+
 // A cylinder (a disk: of length 0) in its own axes about its centre, the axis the third: the
 // point clamped to its length and to its radius. Held at an end (|z| > h) and within the radius,
 // on that face; beyond the radius and within the length, on the side; beyond both, on that end's
@@ -60,10 +68,7 @@ CoreClosest cylinder_closest(const ContactSurface& surface, const Vec3& x_B) {
     slide(round, R / rho);
   }
   closest.p_B = surface.centre_B + A * p;
-  const Vec3 apart_B = x_B - closest.p_B;
-  closest.distance = apart_B.norm();
-  if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
-  return closest;
+  return measured_from_nearest(closest, x_B);
 }
 
 }  // namespace
@@ -85,9 +90,7 @@ CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
   CoreClosest closest;
   if (surface.kind == ContactSurface::Kind::Sphere) {
     closest.p_B = surface.centre_B;
-    const Vec3 apart_B = x_B - surface.centre_B;
-    closest.distance = apart_B.norm();
-    if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
+    measured_from_nearest(closest, x_B);
     if (surface.touched_inside) {
       closest.distance = -closest.distance;
       closest.n_B = -closest.n_B;
@@ -100,12 +103,10 @@ CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
     const double along = axis_B.dot(x_B - surface.centre_B);
     const double h = surface.half_length;
     closest.p_B = surface.centre_B + std::clamp(along, -h, h) * axis_B;
-    if (std::abs(along) < h)
+    if (std::abs(along) < h) {
       closest.slide_B[static_cast<std::size_t>(closest.slide_count++)] = axis_B;
-    const Vec3 apart_B = x_B - closest.p_B;
-    closest.distance = apart_B.norm();
-    if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
-    return closest;
+    }
+    return measured_from_nearest(closest, x_B);
   }
   if (surface.kind == ContactSurface::Kind::Cylinder ||
       surface.kind == ContactSurface::Kind::Circle) {
@@ -147,10 +148,7 @@ CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
     closest.slide_B[static_cast<std::size_t>(closest.slide_count++)] = A.col(i);
   }
   closest.p_B = surface.centre_B + A * p;
-  const Vec3 apart_B = x_B - closest.p_B;
-  closest.distance = apart_B.norm();
-  if (closest.distance > 0.0) closest.n_B = apart_B / closest.distance;
-  return closest;
+  return measured_from_nearest(closest, x_B);
 }
 
 }  // namespace tumble

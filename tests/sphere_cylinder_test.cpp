@@ -7,7 +7,11 @@
 //    (tests/capsule_test.cpp, with the capsule's);
 //  - a ball rolling without slip across a fixed disk's face and over its rim: it turns about the
 //    rim's point, v^2 = v0^2 + (10/7) g r (1 - cos theta), and leaves where N = 0:
-//    cos theta = (10 + 7 v0^2 / (g r)) / 17.
+//    cos theta = (10 + 7 v0^2 / (g r)) / 17;
+//  - a ball striking a free composite's cylinder part (a mallet's head, a point mass at its other
+//    end) on its face, frictionless: the impulse J = (1 + e) u / (1/m + 1/M + b^2 / I), b the
+//    face centre's height over the composite's COM across the blow and I the composite's moment
+//    of inertia about its COM there, by the parallel axis theorem.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -112,6 +116,57 @@ TEST(SphereCylinder, ABallRollingOverADisksRimLeavesWhereCosThetaIsTheSharpEdges
   }
 }
 
+// A mallet, free and without gravity: its head a cylinder (R 0.05, L 0.2, mass M_h) lying along
+// x at z = 0.3, a point mass m_p at z = -0.3; a ball (r 0.1, m) at the head's height moving
+// along -x at u strikes the centre of the head's +x face.
+TEST(SphereCylinder, ABallStrikingACompositesCylinderPartTakesTheClosedFormsImpulse) {
+  const double R = 0.05, L = 0.2, M_h = 1.0, m_p = 0.25, z_h = 0.3, z_p = -0.3;
+  const double m = 0.5, u = 2.0;
+  const double M = M_h + m_p, z_G = (M_h * z_h + m_p * z_p) / M;
+  // About y through the COM: the head across its axis, and both offsets along z.
+  const double I = M_h * (3 * R * R + L * L) / 12 + M_h * (z_h - z_G) * (z_h - z_G) +
+                   m_p * (z_p - z_G) * (z_p - z_G);
+  const double b = z_h - z_G;
+  for (const double e : {1.0, 0.5}) {
+    const std::string text =
+        "tumble: 1\n"
+        "gravity: [0, 0, 0]\n"
+        "bodies:\n"
+        "  mallet:\n"
+        "    parts:\n"
+        "      - {name: head, shape: cylinder, radius: 0.05, length: 0.2, mass: 1, position: [0, "
+        "0, 0.3], orientation: {axis: [0, 1, 0], angle: 90 deg}}\n"
+        "      - {name: weight, shape: point, mass: 0.25, position: [0, 0, -0.3]}\n"
+        "  ball: {shape: sphere, radius: 0.1, mass: 0.5, position: [0.5, 0, 0.3], velocity: [-2, "
+        "0, 0]}\n"
+        "contacts:\n"
+        "  - {name: hit, type: bodies, bodies: [mallet, ball], friction: 0, restitution: " +
+        std::to_string(e) +
+        "}\n"
+        "simulate: {duration: 0.2, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: "
+        "0.01}\n";
+    const test::ScenarioRun run = test::run_inline_scenario(text, "mallet");
+    ASSERT_GE(run.contact_events.size(), 1u) << e;
+    const ContactEventRecord& hit = run.contact_events[0];
+    ASSERT_TRUE(hit.impact.has_value()) << hit.what;
+    // The ball's surface 0.5 - 0.1 - 0.1 = 0.3 from the face.
+    EXPECT_NEAR(hit.t, 0.3 / u, 1e-12) << e;
+    EXPECT_LT((hit.normal_W - Vec3::UnitX()).norm(), 1e-12) << e;
+    const double J = (1 + e) * u / (1 / m + 1 / M + b * b / I);
+    const test::Row& last = run.rows.back();
+    const BodyState& mallet = last.states[0];
+    const BodyState& ball = last.states[1];
+    EXPECT_NEAR(ball.v_G.x(), -u + J / m, 1e-12 * u) << e;
+    EXPECT_NEAR(mallet.v_G.x(), -J / M, 1e-12 * u) << e;
+    EXPECT_NEAR(mallet.omega_W.y(), -J * b / I, 1e-12 * u / b) << e;
+    EXPECT_LT(ball.omega_W.norm(), 1e-12) << e;
+    if (e == 1.0) {
+      EXPECT_NEAR(hit.kinetic_energy_after, hit.kinetic_energy_before,
+                  1e-12 * hit.kinetic_energy_before);
+    }
+  }
+}
+
 TEST(SphereCylinder, TwoOfThemOrABallInOneAreRefused) {
   const std::string bodies =
       "tumble: 1\n"
@@ -130,6 +185,17 @@ TEST(SphereCylinder, TwoOfThemOrABallInOneAreRefused) {
                          "simulate: {duration: 1}\n",
                      7, 5, "contacts[0]",
                      "overlapping by 0.05 m (the sphere's centre is 0.05 m from the cylinder");
+  // A composite with two cylinder or disk parts and none that comes first: which touches is
+  // not said.
+  test::expect_error(bodies +
+                         "  d:\n"
+                         "    parts:\n"
+                         "      - {name: p, shape: cylinder, radius: 0.1, length: 0.2, mass: 1}\n"
+                         "      - {name: q, shape: disk, radius: 0.1, mass: 1, position: [0, 0, "
+                         "0.5]}\n"
+                         "contacts:\n"
+                         "  - {type: bodies, bodies: [c, d], friction: 0}\n",
+                     11, 32, "contacts[0].bodies[1]", "2 cylinder or disk parts");
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ const ContactPair& contact_pair(ContactSurface::Kind surface, TouchedSurface tou
       Row{&round_on_plane()},       // Cylinder
       Row{&polyhedron_on_plane()},  // Polyhedron
       Row{&round_on_plane()},       // Cone
-      Row{nullptr},                 // Capsule: another body's sphere touches it (pair_core.hpp)
+      Row{&round_on_plane()},       // Capsule (round_contact.hpp)
   };
   static_assert(static_cast<std::size_t>(Kind::Capsule) + 1 == 6, "a row for every surface kind");
   const ContactPair* pair =

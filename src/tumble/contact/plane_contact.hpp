@@ -3,8 +3,9 @@
 // coefficients, and the part of the body's surface that can touch it:
 //  - a sphere or a shell (its centre at the COM, or, a composite's part, anywhere in the body),
 //    whose lowest point moves smoothly over it as it turns;
-//  - a round body: a disk or ring, a cylinder or tube, a cone (round_contact.hpp), which touches
-//    at a rim point, along its side or on a face;
+//  - a round body: a disk or ring, a cylinder or tube, a cone, a torus, a capsule
+//    (round_contact.hpp), which touches at a rim point (a capsule's cap), along its side or on a
+//    face;
 //  - a polyhedron: a box, a plate, a mesh (contact_feature.hpp), which touches at a vertex,
 //    along an edge or on a face.
 // Apart, the contact point watched for touchdown is the surface's lowest point (its support
@@ -19,7 +20,7 @@ namespace tumble {
 // A polyhedron's support point is its lowest vertex; a round body's, the lower of its two ends'
 // lowest rim points (round_contact.hpp).
 struct ContactSurface {
-  // A capsule touches only another body's sphere (pair_core.hpp), not a plane.
+  // A capsule touches a plane as a round body (round_contact.hpp) and another body's sphere.
   enum class Kind { Sphere, Circle, Cylinder, Polyhedron, Cone, Capsule } kind = Kind::Sphere;
   double radius = 0.0;  // m; a cone's base
   // m, cylinder: the end rims are at z = +-half_length; capsule: its caps' centres

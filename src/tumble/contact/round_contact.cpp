@@ -40,13 +40,21 @@ RoundEnds round_ends(const ContactSurface& surface) {
       ends.radius = {0.0, surface.radius};
       break;
     case ContactSurface::Kind::Cylinder:
+    case ContactSurface::Kind::Capsule:
       if (surface.turned) {
         const Vec3 half = surface.half_length * surface.axes_B.col(2);
         ends.centre_B = {surface.centre_B - half, surface.centre_B + half};
       } else {
         ends.centre_B = {Vec3(0.0, 0.0, -surface.half_length), Vec3(0.0, 0.0, surface.half_length)};
       }
-      ends.radius = {surface.radius, surface.radius};
+      if (surface.kind == ContactSurface::Kind::Capsule) {
+        // Its caps' centres, circles of radius 0, swept by its radius as a torus's rim by its
+        // tube: what touches is a cap's lowest point, or the side's line between the two.
+        ends.radius = {0.0, 0.0};
+        ends.tube = surface.radius;
+      } else {
+        ends.radius = {surface.radius, surface.radius};
+      }
       break;
     default:  // a disk or ring: one rim about its centre (the COM, but for a composite's part)
       ends.centre_B = {surface.centre_B, surface.centre_B};
@@ -94,8 +102,10 @@ bool is_end(RoundPart part) {
 }
 
 bool holds_rim_point(const ContactSurface& surface, RoundPart part) {
-  return part == RoundPart::Side || part == RoundPart::EndB ||
-         (part == RoundPart::EndA && round_ends(surface).radius[0] > 0.0);
+  if (is_face(part) || part == RoundPart::None) return false;
+  const RoundEnds ends = round_ends(surface);
+  return (part != RoundPart::EndB && ends.radius[0] > 0.0) ||
+         (part != RoundPart::EndA && ends.radius[1] > 0.0);
 }
 
 Vec3 rim_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& previous_B) {
@@ -217,11 +227,12 @@ Vec3 face_tip_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& M_O_
 const char* round_part_name(const ContactSurface& surface, RoundPart part) {
   const bool cone = surface.kind == ContactSurface::Kind::Cone;
   const bool cylinder = surface.kind == ContactSurface::Kind::Cylinder;
+  const bool capsule = surface.kind == ContactSurface::Kind::Capsule;
   switch (part) {
     case RoundPart::EndA:
-      return cone ? "its apex" : cylinder ? "its -z rim" : "its rim";
+      return cone ? "its apex" : cylinder ? "its -z rim" : capsule ? "its -z cap" : "its rim";
     case RoundPart::EndB:
-      return cylinder ? "its +z rim" : "its rim";
+      return cylinder ? "its +z rim" : capsule ? "its +z cap" : "its rim";
     case RoundPart::Side:
       return "its side";
     case RoundPart::FaceA:

@@ -1,9 +1,13 @@
 #pragma once
-// The parts of a round body that touch a plane: a cone, a disk or ring, a cylinder or tube. Each
-// is bounded by two circles about its z axis, its ends A and B (body axes, from the COM):
+// The parts of a round body that touch a plane: a cone, a disk or ring, a cylinder or tube, a
+// torus, a capsule. Each is bounded by two circles about its z axis, its ends A and B (body axes,
+// from the COM):
 //  - a cone: A its apex (a circle of radius 0), B its base's rim;
 //  - a cylinder or tube: A the rim at z = -L/2, B the rim at z = +L/2;
-//  - a disk or ring: its one rim, both ends at once.
+//  - a disk or ring: its one rim, both ends at once;
+//  - a torus: a ring's rim swept by its tube; a capsule: its caps' centres (z = -+L/2, circles of
+//    radius 0) swept by its radius, as a tube: what touches is the point of the swept sphere
+//    below a rim point (a cap's lowest point), which turns over the body as a sphere's does.
 // It touches at a point of an end's rim (the apex), along the line of its side between the two
 // ends' rim points below the axis, or on an end's face (a disk; a ring's or tube's face holds
 // only its rim, but its pressure's centre may be anywhere in the circle). As for a polyhedron's
@@ -55,7 +59,8 @@ int end_of(RoundPart part);
 bool is_face(RoundPart part);
 // EndA or EndB: one end's rim point (a cone's apex).
 bool is_end(RoundPart part);
-// Whether the part holds a rim point, which moves over the body (not a face, not a cone's apex).
+// Whether the part holds a rim point (of radius > 0), which moves round its rim (not a face, not
+// a cone's apex, not a capsule's cap).
 bool holds_rim_point(const ContactSurface& surface, RoundPart part);
 
 // Where a round part's contact constraints are taken, and how those points move over the body.
@@ -115,7 +120,8 @@ Vec3 face_tip_direction(const RoundEnds& ends, const Vec3& n_B, const Vec3& M_O_
                         const Vec3& otherwise_B);
 
 // "its apex", "its rim", "its side", "its base" (a cone); "its rim", "its face" (a disk or
-// ring); "its -z rim", "its +z face", ... (a cylinder or tube, by the end's side of the COM).
+// ring); "its -z rim", "its +z face", ... (a cylinder or tube, by the end's side of the COM);
+// "its -z cap", "its +z cap", "its side" (a capsule).
 const char* round_part_name(const ContactSurface& surface, RoundPart part);
 
 }  // namespace tumble

@@ -1,7 +1,7 @@
-// A round body (a disk or ring, a cylinder or tube, a cone; round_contact.hpp) on a plane
-// (contact_pair.hpp): it touches at a rim point (a cone's apex), along its side or on a face,
-// tips from the side or a face onto a rim point where the centre of pressure leaves it, and
-// rolls on a rim point that runs round the rim.
+// A round body (a disk or ring, a cylinder or tube, a cone, a torus, a capsule; round_contact.hpp)
+// on a plane (contact_pair.hpp): it touches at a rim point (a cone's apex, a capsule's cap), along
+// its side or on a face, tips from the side or a face onto a rim point where the centre of
+// pressure leaves it, and rolls on a rim point that runs round the rim (on a cap, as a sphere).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -66,8 +66,11 @@ class RoundOnPlane final : public ContactPair {
     const RoundEnds ends = round_ends(contact.surface);
     double t = kNever;
     for (std::size_t k = ends.one_rim ? 1 : 0; k < 2; ++k) {
-      t = std::min(t, ends.radius[k] == 0.0  // a cone's apex
-                          ? point_time_to_depth(contact, motion, ends.centre_B[k], turning, depth)
+      // A cone's apex; a capsule's cap, a sphere about that point (turning about it moves no
+      // point of the sphere lower).
+      t = std::min(t, ends.radius[k] == 0.0
+                          ? point_time_to_depth(contact, motion, ends.centre_B[k], turning,
+                                                depth - ends.tube)
                           : circle_time_to_depth(contact, motion, ends.centre_B[k], ends.axes_B,
                                                  ends.radius[k], turning, depth - ends.tube));
     }
@@ -82,14 +85,15 @@ class RoundOnPlane final : public ContactPair {
     const Vec3 u_B = lowest_rim_direction(ends, n_B, tilt);
     // A cone on its apex, the base's rim off the plane (a top, upright or leaning): a point of
     // the body, whatever the tilt.
-    const bool apex_down =
-        ends.radius[0] == 0.0 && !ends.one_rim && height_of(ends.centre_B[0]) <= within;
+    const bool apex_down = ends.radius[0] == 0.0 && !(ends.tube > 0.0) && !ends.one_rim &&
+                           height_of(ends.centre_B[0]) <= within;
     if (apex_down && height_of(surface_point(ends, 1, u_B, n_B)) > within) {
       point.kind = ContactPoint::Kind::Material;
       point.p_B = ends.centre_B[0];
       return {};
     }
-    if (tilt <= 1e-9) {
+    const bool has_faces = ends.radius[0] > 0.0 || ends.radius[1] > 0.0;  // not a capsule
+    if (has_faces && tilt <= 1e-9) {
       return "the body lies flat on an end face, where a small tilt moves the plane's force to "
              "its rim: no linearisation";
     }
@@ -106,6 +110,11 @@ class RoundOnPlane final : public ContactPair {
     }
     const auto k = static_cast<std::size_t>(end);
     point.p_B = ends.centre_B[k];
+    if (ends.radius[k] == 0.0 && ends.tube > 0.0) {  // a capsule's cap: a sphere's lowest point
+      point.kind = ContactPoint::Kind::Lowest;
+      point.radius = ends.tube;
+      return {};
+    }
     point.axis_B = ends.axes_B.col(2);
     point.radius = ends.radius[k];
     point.tube = ends.tube;
@@ -304,8 +313,10 @@ class RoundOnPlane final : public ContactPair {
   bool anchored(const PairView& v) const override {
     const RoundPart part = v.status.round_part;
     if (is_face(part)) return true;
-    // A point fixed in the body: a cone's apex (an end of radius 0).
-    return part == RoundPart::EndA && round_ends(v.surface()).radius[0] == 0.0;
+    // A point fixed in the body: a cone's apex (an end of radius 0 that no tube sweeps; a
+    // capsule's cap rolls).
+    const RoundEnds ends = round_ends(v.surface());
+    return part == RoundPart::EndA && ends.radius[0] == 0.0 && !(ends.tube > 0.0);
   }
 
   bool other_end_B(const PairView& v, SurfacePoint& other) const override {
@@ -317,8 +328,8 @@ class RoundOnPlane final : public ContactPair {
   }
 
   bool projects_along_normal(const PairView& v) const override {
-    // A disk's, ring's or cylinder's rim point is its support point (not a cone's: its apex and
-    // its base's rim are two ends of one line).
+    // A disk's, ring's or cylinder's rim point (a capsule's cap's lowest point) is its support
+    // point (not a cone's: its apex and its base's rim are two ends of one line).
     return v.surface().kind != ContactSurface::Kind::Cone && is_end(v.status.round_part);
   }
 

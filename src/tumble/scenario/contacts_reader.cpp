@@ -1,9 +1,10 @@
 // `contacts:`: a list of {type: plane, body:, plane: {point:, normal:}, friction:, restitution:}
 // and {type: bodies, bodies: [a, b], friction:, restitution:}. On a plane the body must be of a
 // shape whose contact with a plane tumble resolves: a sphere or shell, a round body (disk, ring,
-// torus, cylinder, tube, cone) or a polyhedron (docs/scenario.md, Contacts), or a composite whose
-// touching part is one of these. Two bodies touch at a sphere (or shell) and a sphere, a capsule,
-// a box, a cylinder or a disk (each a body's shape or a composite's one such part).
+// torus, cylinder, tube, cone, capsule) or a polyhedron (docs/scenario.md, Contacts), or a
+// composite whose touching part is one of these. Two bodies touch at a sphere (or shell) and a
+// sphere, a capsule, a box, a cylinder or a disk (each a body's shape or a composite's one such
+// part).
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -23,12 +24,12 @@ bool touches_a_plane(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell || kind == ShapeKind::Disk ||
          kind == ShapeKind::Ring || kind == ShapeKind::Cylinder || kind == ShapeKind::Tube ||
          kind == ShapeKind::Cone || kind == ShapeKind::Box || kind == ShapeKind::Plate ||
-         kind == ShapeKind::Mesh || kind == ShapeKind::Torus;
+         kind == ShapeKind::Mesh || kind == ShapeKind::Torus || kind == ShapeKind::Capsule;
 }
 
 // As the messages name them.
 constexpr const char* kTouchingShapes =
-    "a sphere, shell, disk, ring, torus, cylinder, tube, cone, box, plate or mesh";
+    "a sphere, shell, disk, ring, torus, cylinder, tube, cone, capsule, box, plate or mesh";
 
 // The composite's part that touches: the one `part:` names, or its one part that can.
 int read_touching_part(const Reader& reader, const MapReader& map, const Field& body_field,
@@ -75,16 +76,18 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
   return found;
 }
 
-// Whether the shape touches another body's: a sphere's or a shell's surface, or a capsule's or a
-// box's (which touch a sphere), as a body's shape or a composite's part; a cylinder's or a disk's
-// (which touch a sphere) as a body's shape. (A composite's wheel or axle beside its sphere part
-// leaves that sphere its one part that touches.)
+// Whether the shape touches another body's: a sphere's or a shell's surface, or a capsule's, a
+// box's, a cylinder's or a disk's (which touch a sphere). A composite touches with its one part
+// of the first four; only where it has none, with its one cylinder or disk part (so that a
+// wheel or an axle beside a sphere part leaves that sphere its one part that touches).
 bool is_sphere_or_shell(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell;
 }
-bool touches_a_body(ShapeKind kind, bool as_part) {
-  return is_sphere_or_shell(kind) || kind == ShapeKind::Capsule || kind == ShapeKind::Box ||
-         (!as_part && (kind == ShapeKind::Cylinder || kind == ShapeKind::Disk));
+bool touches_first(ShapeKind kind) {
+  return is_sphere_or_shell(kind) || kind == ShapeKind::Capsule || kind == ShapeKind::Box;
+}
+bool touches_a_body(ShapeKind kind) {
+  return touches_first(kind) || kind == ShapeKind::Cylinder || kind == ShapeKind::Disk;
 }
 
 // One of the two bodies of a `type: bodies` contact: its touching part where it is a composite
@@ -99,26 +102,35 @@ TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
                                   const BodySpec& body) {
   const char* what =
       "two bodies touch at a sphere (or shell) and a sphere, a capsule, a box, a cylinder or a "
-      "disk, each a body's shape (or a composite's one sphere, shell, capsule or box part)";
+      "disk, each a body's shape (or a composite's one sphere, shell, capsule or box part, or "
+      "where it has none of those its one cylinder or disk part)";
   if (body.parts.empty()) {
-    if (touches_a_body(body.shape.kind, false)) return {-1, body.shape.kind};
+    if (touches_a_body(body.shape.kind)) return {-1, body.shape.kind};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
                                          std::string(shape_name(body.shape.kind)) + "; " + what);
   }
-  TouchingShape found;
-  int count = 0;
-  for (std::size_t p = 0; p < body.parts.size(); ++p) {
-    if (!touches_a_body(body.parts[p].shape.kind, true)) continue;
-    found = {static_cast<int>(p), body.parts[p].shape.kind};
-    ++count;
+  for (const bool first : {true, false}) {
+    TouchingShape found;
+    int count = 0;
+    for (std::size_t p = 0; p < body.parts.size(); ++p) {
+      const ShapeKind kind = body.parts[p].shape.kind;
+      if (first ? !touches_first(kind) : !touches_a_body(kind)) continue;
+      found = {static_cast<int>(p), kind};
+      ++count;
+    }
+    if (count == 1) return found;
+    if (count > 1) {
+      reader.fail_at_value(
+          body_field,
+          "body '" + body.name + "' is a composite with " + std::to_string(count) +
+              (first ? " sphere, shell, capsule or box parts; " : " cylinder or disk parts; ") +
+              what + ", one such part to a body");
+    }
   }
-  if (count != 1) {
-    reader.fail_at_value(body_field, "body '" + body.name + "' is a composite with " +
-                                         std::to_string(count) +
-                                         " sphere, shell, capsule or box parts; " + what +
-                                         ", one such part to a body");
-  }
-  return found;
+  reader.fail_at_value(body_field, "body '" + body.name +
+                                       "' is a composite with no part that touches another "
+                                       "body; " +
+                                       what);
 }
 
 // Whether a joint joins the two bodies to each other.
@@ -279,14 +291,10 @@ std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map
   if (!body.parts.empty()) {
     contact.part = read_touching_part(reader, map, body_field, body);
   } else if (!touches_a_plane(body.shape.kind)) {
-    reader.fail_at_value(
-        body_field,
-        "body '" + contact.body + "' is a " + std::string(shape_name(body.shape.kind)) +
-            "; contact with a plane is for " + kTouchingShapes +
-            ", or a composite's part of one of these shapes" +
-            (body.shape.kind == ShapeKind::Capsule ? " (a capsule touches another body's sphere, "
-                                                     "`type: bodies`, not yet a plane)"
-                                                   : ""));
+    reader.fail_at_value(body_field, "body '" + contact.body + "' is a " +
+                                         std::string(shape_name(body.shape.kind)) +
+                                         "; contact with a plane is for " + kTouchingShapes +
+                                         ", or a composite's part of one of these shapes");
   } else if (const auto f = map.find("part")) {
     reader.fail_at_value(*f, "body '" + contact.body +
                                  "' is one shape, not a composite: it has "

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Fuzzes with clang's libFuzzer (AddressSanitizer and UndefinedBehaviorSanitizer on) for SECONDS
 # (default 60): the scenario reader, model builder, linearisation and a bounded run of each valid
-# scenario (tumble_scenario_fuzz, from the examples and tests/data/fuzz/), and the checkpoint
-# reader and the run it resumes (tumble_checkpoint_fuzz, from tests/data/fuzz-checkpoint/).
-#   scripts/fuzz.sh                 a minute: two thirds on the scenarios, a third on the states
-#                                   (scripts/test.sh runs this)
+# scenario (tumble_scenario_fuzz, from the examples and tests/data/fuzz/), the checkpoint reader
+# and the run it resumes (tumble_checkpoint_fuzz, from tests/data/fuzz-checkpoint/), and a
+# record's and the events' expressions on an example (tumble_expression_fuzz, from
+# tests/data/fuzz-expressions/).
+#   scripts/fuzz.sh                 a minute: half on the scenarios, a quarter each on the states
+#                                   and the expressions (scripts/test.sh runs this)
 #   TARGET=scenario scripts/fuzz.sh 36000     ten hours on one target; the corpus grows in
-#                                   build/fuzz/corpus (build/fuzz/checkpoint-corpus) across runs
+#                                   build/fuzz/corpus (build/fuzz/checkpoint-corpus,
+#                                   build/fuzz/expression-corpus) across runs
 # An input that crashes, hangs past 1 s, leaks or throws what the target does not take as a
 # refusal is written to build/fuzz/ (crash-*, timeout-*, leak-*) and the script fails; copy it
 # into tests/data/fuzz/ (tests/data/fuzz-checkpoint/) as a regression test (FuzzRegressions reads
@@ -21,10 +24,11 @@ cd "$(dirname "$0")/.."
 # On the sanitizer build's library (scripts/build.sh sanitize: clang, ASan and UBSan, -O1, line
 # tables), which the tests' sanitizer run builds too; the corpus and findings are kept apart in
 # build/fuzz/.
-bash scripts/build.sh sanitize tumble_scenario_fuzz tumble_checkpoint_fuzz
-mkdir -p build/fuzz/corpus build/fuzz/checkpoint-corpus
+bash scripts/build.sh sanitize tumble_scenario_fuzz tumble_checkpoint_fuzz tumble_expression_fuzz
+mkdir -p build/fuzz/corpus build/fuzz/checkpoint-corpus build/fuzz/expression-corpus
 cp examples/*.yaml tests/data/fuzz/*.yaml build/fuzz/corpus/
 cp tests/data/fuzz-checkpoint/* build/fuzz/checkpoint-corpus/
+cp tests/data/fuzz-expressions/* build/fuzz/expression-corpus/
 
 fuzz() {  # TARGET CORPUS SECONDS
   ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
@@ -34,9 +38,11 @@ fuzz() {  # TARGET CORPUS SECONDS
 }
 case "$target" in
   all)
-    fuzz scenario build/fuzz/corpus $((seconds * 2 / 3))
-    fuzz checkpoint build/fuzz/checkpoint-corpus $((seconds - seconds * 2 / 3)) ;;
+    fuzz scenario build/fuzz/corpus $((seconds / 2))
+    fuzz checkpoint build/fuzz/checkpoint-corpus $((seconds / 4))
+    fuzz expression build/fuzz/expression-corpus $((seconds - seconds / 2 - seconds / 4)) ;;
   scenario) fuzz scenario build/fuzz/corpus "$seconds" ;;
   checkpoint) fuzz checkpoint build/fuzz/checkpoint-corpus "$seconds" ;;
-  *) echo "TARGET is all, scenario or checkpoint" >&2; exit 2 ;;
+  expression) fuzz expression build/fuzz/expression-corpus "$seconds" ;;
+  *) echo "TARGET is all, scenario, checkpoint or expression" >&2; exit 2 ;;
 esac

@@ -4,6 +4,8 @@
 // a crash or another exception. Every file of tests/data/fuzz-checkpoint/ is read as the
 // checkpoint fuzz target reads it (fuzz/fuzz_checkpoint.hpp) and resumed where read: the seeds,
 // states saved by `tumble run`, must be read, and one named refused-* refused with its line.
+// Every file of tests/data/fuzz-expressions/ is built and run as the expression fuzz target does
+// (fuzz/fuzz_expressions.hpp): the seeds must be, and one named refused-* refused at its line.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include <string>
 
 #include "../fuzz/fuzz_checkpoint.hpp"
+#include "../fuzz/fuzz_expressions.hpp"
 #include "../fuzz/fuzz_input.hpp"
 
 namespace tumble {
@@ -47,6 +50,27 @@ TEST(FuzzRegressions, EverySavedStateIsResumedAndEveryFoundOneRefused) {
     EXPECT_EQ(fuzzing::resume_input(text.str()), name.rfind("refused-", 0) != 0) << name;
   }
   EXPECT_GE(files, 5);
+}
+
+TEST(FuzzRegressions, EveryExpressionSeedIsRunAndEveryFoundOneRefusedAtItsLine) {
+  const std::filesystem::path dir =
+      std::filesystem::path(TUMBLE_TEST_DATA_DIR) / "fuzz-expressions";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    const bool must_refuse = name.rfind("refused-", 0) == 0;
+    ++files;
+    std::ostringstream text;
+    text << std::ifstream(entry.path(), std::ios::binary).rdbuf();
+    try {
+      EXPECT_TRUE(fuzzing::run_expressions(text.str())) << name << " names no example";
+      EXPECT_FALSE(must_refuse) << name << " was accepted";
+    } catch (const ScenarioError& error) {
+      EXPECT_TRUE(must_refuse) << name << ": " << error.what();
+      EXPECT_GT(error.where().line, 1) << name << ": " << error.what();
+    }
+  }
+  EXPECT_GE(files, 6);
 }
 
 }  // namespace

@@ -61,9 +61,7 @@ SweepRunner::SweepRunner(const SweepSpec& spec, SweepModelShare* share)
     : spec_(&spec),
       own_share_(share != nullptr ? nullptr : std::make_unique<SweepModelShare>()),
       share_(share != nullptr ? share : own_share_.get()),
-      document_(ScenarioDocument::from_text(spec.text, spec.path)),
-      reads_modes_(any_outcome(spec, &Outcome::reads_modes)),
-      reads_run_(any_outcome(spec, &Outcome::reads_run)) {}
+      document_(ScenarioDocument::from_text(spec.text, spec.path)) {}
 
 void SweepRunner::adopt_shared_model() {
   const std::lock_guard<std::mutex> lock(share_->mutex);
@@ -87,7 +85,7 @@ RunRecord SweepRunner::run(std::span<const double> values) {
         // Read the document instead, for the message that says where.
       }
       if (scenario != nullptr) {
-        run_model(*scenario, velocity_only_->model(), true, record);
+        record_run(*spec_, *scenario, velocity_only_->model(), true, recorder_, record);
         return record;
       }
     }
@@ -105,7 +103,7 @@ RunRecord SweepRunner::run(std::span<const double> values) {
     }
     const Scenario scenario = document_.read(overrides, true, trace ? &*trace : nullptr);
     const std::shared_ptr<const SimulationModel> model = build_simulation_model(scenario);
-    run_model(scenario, *model, false, record);
+    record_run(*spec_, scenario, *model, false, recorder_, record);
     if (trace) {
       const std::lock_guard<std::mutex> lock(share_->mutex);
       if (!share_->decided) {
@@ -125,12 +123,13 @@ RunRecord SweepRunner::run(std::span<const double> values) {
   return record;
 }
 
-void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& model,
-                            bool scenarios_initial_state, RunRecord& record) {
+void record_run(const SweepSpec& spec, const Scenario& scenario, const SimulationModel& model,
+                bool scenarios_initial_state, std::unique_ptr<RunRecorder>& recorder,
+                RunRecord& record) {
   // What tumble modes says of the initial state, where an outcome reads it: a state with no
   // linearisation makes the run invalid, with the command's reason.
   std::optional<ModesOutcome> modes;
-  if (reads_modes_) {
+  if (any_outcome(spec, &Outcome::reads_modes)) {
     try {
       modes = modes_outcome(modes_of_scenario(scenario).analysis);
     } catch (const NotSteady& e) {
@@ -140,21 +139,21 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     }
   }
   PreparedSimulation simulation = prepare_run(model);
-  if (spec_->max_steps > 0) {
-    simulation.options.max_steps = spec_->max_steps;
+  if (spec.max_steps > 0) {
+    simulation.options.max_steps = spec.max_steps;
     simulation.options.max_steps_name = "--max-steps";
   }
-  simulation.options.stop_requested = spec_->stop_requested;
+  simulation.options.stop_requested = spec.stop_requested;
   if (scenarios_initial_state) {
     // On the run's own formulation: an evaluation writes its scratch.
     simulation.y0 = initial_state_vector(scenario, *simulation.formulation);
   }
   const ColumnLayout layout = column_layout(scenario, *simulation.formulation);
-  if (!recorder_ || !recorder_->fits(layout, scenario)) {
-    recorder_ = std::make_unique<RunRecorder>(spec_->outcomes, layout, scenario);
+  if (!recorder || !recorder->fits(layout, scenario)) {
+    recorder = std::make_unique<RunRecorder>(spec.outcomes, layout, scenario);
   }
-  recorder_->start(scenario);
-  if (!recorder_->reads_rows()) {
+  recorder->start(scenario);
+  if (!recorder->reads_rows()) {
     // No outcome reads a row: the run makes one at each step's end (where the summary's E_drift
     // and L_drift are taken), not one per output_every, which can cost more than the steps (the
     // prism's flip-time sweep, rows 0.01 s apart: 6.2 times its integration). The rows are not
@@ -163,23 +162,23 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     simulation.options.max_rows = std::numeric_limits<long>::max();
     simulation.drifts_only = true;
   }
-  if (!reads_run_) {  // the modes alone: no integration (0 steps)
-    record.values = recorder_->finish({}, {}, {}, modes ? &*modes : nullptr);
+  if (!any_outcome(spec, &Outcome::reads_run)) {  // the modes alone: no integration (0 steps)
+    record.values = recorder->finish({}, {}, {}, modes ? &*modes : nullptr);
     return;
   }
-  if (recorder_->reads_event_states()) {
+  if (recorder->reads_event_states()) {
     simulation.on_event_state = [&](double t, std::span<const BodyState> states,
                                     const SystemQuantities& q, const RowExtras& extras) {
-      recorder_->observe_event_state({t, states, &q, &extras});
+      recorder->observe_event_state({t, states, &q, &extras});
     };
   }
-  if (recorder_->reads_pieces()) {
-    simulation.on_piece = [&](PieceRows& piece) { recorder_->observe_piece(piece); };
+  if (recorder->reads_pieces()) {
+    simulation.on_piece = [&](PieceRows& piece) { recorder->observe_piece(piece); };
   }
   const SimulationResult result =
       run_simulation(simulation, [&](double t, std::span<const BodyState> states,
                                      const SystemQuantities& q, const RowExtras& extras) {
-        recorder_->observe({t, states, &q, &extras});
+        recorder->observe({t, states, &q, &extras});
       });
   record.steps = result.report.stats.accepted_steps;
   record.rows = result.rows;
@@ -190,8 +189,8 @@ void SweepRunner::run_model(const Scenario& scenario, const SimulationModel& mod
     record.message = "integration failed: " + result.report.failure;
     return;
   }
-  record.values = recorder_->finish(result.contact_events, result.jumps, result.user_events,
-                                    modes ? &*modes : nullptr);
+  record.values = recorder->finish(result.contact_events, result.jumps, result.user_events,
+                                   modes ? &*modes : nullptr);
 }
 
 std::vector<RunRecord> run_points(const SweepSpec& spec,

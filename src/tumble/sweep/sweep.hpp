@@ -95,12 +95,6 @@ class SweepRunner {
   bool shares_model() const { return velocity_only_ != nullptr; }
 
  private:
-  // Runs the model, from its y0 or (for a model shared by runs that differ in it) from the
-  // scenario's initial state, recording the outcomes. Throws ScenarioError for an initial state
-  // the checks refuse, and what the recorder throws.
-  void run_model(const Scenario& scenario, const SimulationModel& model,
-                 bool scenarios_initial_state, RunRecord& record);
-
   // Takes the share's model, if it has one, when this runner has none yet.
   void adopt_shared_model();
 
@@ -110,9 +104,18 @@ class SweepRunner {
   ScenarioDocument document_;
   std::unique_ptr<RunRecorder> recorder_;
   std::unique_ptr<VelocityOnlyRuns> velocity_only_;  // once a run has shown that they can
-  bool reads_modes_;  // some outcome reads modes.*: each run linearises its initial state
-  bool reads_run_;    // some outcome reads the rows or the events: each run integrates
 };
+
+// One run of a sweep: the model run from its y0 or (for a model shared by runs that differ in
+// it) from the scenario's initial state, for the spec's outcomes (the initial state linearised
+// where one reads modes.*; no integration where none reads the run), recorded by `recorder`,
+// which is made where it is null or was made for other columns or parameters. Throws
+// ScenarioError for an initial state the checks refuse, and what the recorder throws. What
+// SweepRunner::run does with each scenario it reads; the expression fuzz target calls it on
+// scenarios it builds in memory.
+void record_run(const SweepSpec& spec, const Scenario& scenario, const SimulationModel& model,
+                bool scenarios_initial_state, std::unique_ptr<RunRecorder>& recorder,
+                RunRecord& record);
 
 // Called on the calling thread about ten times a second while the runs go on. An exception from
 // it stops the sweep: the runs going on finish, no other starts, and run_points throws it.

@@ -1,14 +1,16 @@
 // Disks, rings, cylinders and tubes on a plane, on the parts a rolling rim does not cover: an end
 // face (a can standing on a ramp, at rest and sliding; a coin, a ring, a can and a tube spinning
 // down flat under torsional friction, each at the exact time its face's mean pressure radius
-// gives), the side (a can tipped past its balance falls onto it and lies there), and a coin
-// dropped nearly flat that comes to rest on its face. Every run asks rtol 1e-10
+// gives), the side (a can tipped past its balance falls onto it and lies there; a can rocking on
+// one rim lands its other and bounces off it), and a coin dropped nearly flat that comes to rest
+// on its face. Every run asks rtol 1e-10
 // (contact_test.cpp says what that buys).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "ramp_checks.hpp"
 #include "scenario_run.hpp"
@@ -158,6 +160,63 @@ TEST(CanTipped, PastItsBalanceItFallsOntoItsSideAndLiesThere) {
     EXPECT_NEAR((end.states[0].R_WB * Vec3::UnitZ()).z(), 0.0, 1e-9);
     EXPECT_NEAR(end.extras.contacts[0].normal_force, kCanMass * kG, 1e-8 * kCanMass * kG);
   }
+}
+
+TEST(CanRockingOnOneRim, ItsOtherRimBouncesAtERestitutionAndRocksBackAtTheSameSpeed) {
+  // Frictionless, released at rest on its -z rim with its axis phi0 = 10 degrees from level: no
+  // force along the floor, so its COM only falls, and the rim A it rocks on stays at the floor,
+  // at rest along the normal. At level (its COM at r) energy gives its rate, phi'^2 = 2 m g (z0 -
+  // r) / (m (L/2)^2 + I_t), z0 = (L/2) sin(phi0) + r cos(phi0), I_t = m (3 r^2 + L^2) / 12, and
+  // its +z rim B lands at u = L phi'. Newton's law at B with A on the floor leaves A at rest and B
+  // rising at e u: it rocks back up on A alone, conservatively, and comes down to level at the
+  // same rate, so the landings come at u, e u, e^2 u, each a factor e^2 of the energy it has.
+  // (It once lay on its side after the first: A at the floor and B there too, B taken as
+  // touching by its height alone although it was leaving, and the side's rows stopped it.)
+  constexpr double r = 0.1, L = 0.4, m = 1.0, e = 0.5;
+  const double phi0 = 10.0 * kDeg;
+  const std::string yaml = fmt::format(
+      "tumble: 1\n"
+      "parameters: {{r: {}, L: {}, tilt: 10 deg}}\n"
+      "gravity: [0, 0, -{}]\n"
+      "bodies:\n"
+      "  can: {{shape: cylinder, radius: r, length: L, mass: {},\n"
+      "         position: [0, 0, L/2*sin(tilt) + r*cos(tilt)],\n"
+      "         orientation: {{axis: [0, 1, 0], angle: 90 deg - tilt}}}}\n"
+      "contacts:\n"
+      "  - {{name: floor, type: plane, body: can, plane: {{point: [0, 0, 0], normal: [0, 0, "
+      "1]}}, friction: 0, restitution: {}}}\n"
+      "simulate: {{duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: "
+      "0.01}}\n",
+      r, L, kG, m, e);
+  const auto run = run_inline_scenario(yaml, "can_rocking");
+  const double I_t = m * (3 * r * r + L * L) / 12;
+  const double drop = L / 2 * std::sin(phi0) + r * std::cos(phi0) - r;
+  const double u = L * std::sqrt(2 * m * kG * drop / (m * L * L / 4 + I_t));
+  std::vector<const ContactEventRecord*> impacts;
+  for (const ContactEventRecord& event : run.contact_events) {
+    if (event.impact.has_value() && impacts.size() < 3) {
+      impacts.push_back(&event);
+    } else if (impacts.size() < 3) {
+      EXPECT_EQ(event.what.find("side"), std::string::npos) << event.t << ": " << event.what;
+    }
+  }
+  ASSERT_EQ(impacts.size(), 3u);
+  double approach = u;
+  for (const ContactEventRecord* impact : impacts) {
+    SCOPED_TRACE(fmt::format("t {}: {}", impact->t, impact->what));
+    const ContactImpactNumbers& numbers = *impact->impact;
+    EXPECT_NEAR(numbers.approach_speed, approach, 1e-9 * u);
+    EXPECT_NEAR(numbers.rebound_speed, e * approach, 1e-9 * u);
+    const double energy = m * kG * drop * (approach / u) * (approach / u);
+    EXPECT_NEAR(numbers.kinetic_energy_before, energy, 1e-9 * m * kG * drop);
+    EXPECT_NEAR(numbers.kinetic_energy_after, e * e * energy, 1e-9 * m * kG * drop);
+    approach *= e;
+  }
+  test::expect_energy_never_rises(run, 1e-9);
+  // The bounces come ever sooner (each flight e times the last): it ends lying on its side.
+  const Row& end = run.rows.back();
+  EXPECT_NEAR(end.states[0].r_G.z(), r, 1e-10);
+  EXPECT_NEAR((end.states[0].R_WB * Vec3::UnitZ()).z(), 0.0, 1e-9);
 }
 
 TEST(CoinDropped, NearlyFlatItComesToRestOnItsFace) {

@@ -280,12 +280,15 @@ class RoundOnPlane final : public ContactPair {
       }
       case RoundPart::EndA:
       case RoundPart::EndB: {
-        // The other end, if it is at the plane too, must not go into it; if it would, the body
-        // lies on its side (a cone whose rim has landed while its apex, at the plane, comes
-        // down: on its rim alone no mode holds, and it would land again every nanosecond).
+        // The other end, if it is at the plane too and not leaving it, must not go into it; if
+        // it would, the body lies on its side (a cone whose rim has landed while its apex, at
+        // the plane, comes down: on its rim alone no mode holds, and it would land again every
+        // nanosecond). One that an impact sent off (the far rim of a can that landed it while
+        // rocking on the near one) leaves, whatever its acceleration.
         SurfacePoint other;
-        const bool at_plane =
-            other_end_B(v, other) && v.height(other.p_B) <= status.touching_height;
+        const bool at_plane = other_end_B(v, other) &&
+                              v.height(other.p_B) <= status.touching_height &&
+                              v.normal_speed(other.p_B) <= status.slip_zero;
         if (settle(at_plane ? one(other) : std::span<const SurfacePoint>())) return true;
         if (!at_plane) return false;
         status.round_part = RoundPart::Side;

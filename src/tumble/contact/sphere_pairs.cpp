@@ -38,6 +38,7 @@
 #include "tumble/contact/contact_system.hpp"
 #include "tumble/contact/landing_bound.hpp"
 #include "tumble/contact/pair_core.hpp"
+#include "tumble/contact/sphere_pair_line.hpp"
 #include "tumble/math/constraint_solve.hpp"
 
 namespace tumble {
@@ -92,21 +93,17 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
   const Vec3 centre_W = sphere_centre_W(a, contact.surface);
   if (contact.other_surface.kind == ContactSurface::Kind::Sphere) {
     // Two spheres: the line of their centres, in world axes (inside a shell, n and the distance
-    // along it turned round: pair_core.hpp).
-    const Vec3 apart_W = centre_W - sphere_centre_W(b, contact.other_surface);
-    line.distance = apart_W.norm();
-    if (line.distance > 0.0) line.n_W = apart_W / line.distance;
-    if (contact.other_surface.touched_inside) {
-      line.distance = -line.distance;
-      line.n_W = -line.n_W;
-    }
+    // along it turned round: pair_core.hpp), as `tumble modes` takes it (sphere_pair_line.hpp).
     line.p_B = contact.other_surface.centre_B;
-    const Vec3& v_W = line.relative_velocity_W =
+    line.relative_velocity_W =
         point_velocity_W(a, contact.surface.centre_B) - point_velocity_W(b, line.p_B);
-    if (line.distance == 0.0) return line;
-    const double along = line.n_W.dot(v_W);
-    line.n_rate_W = (v_W - line.n_W * along) / line.distance;
-    line.turning = (v_W.squaredNorm() - along * along) / line.distance;
+    const SpherePairLineOf<double> centres =
+        sphere_pair_line<double>(Vec3(centre_W - sphere_centre_W(b, contact.other_surface)),
+                                 line.relative_velocity_W, contact.other_surface.touched_inside);
+    line.n_W = centres.n_W;
+    line.n_rate_W = centres.n_rate_W;
+    line.distance = centres.distance;
+    line.turning = centres.turning;
     return line;
   }
   // A capsule, a box, a cylinder or a disk: in its body's axes, where the nearest point slides

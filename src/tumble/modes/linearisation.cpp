@@ -133,8 +133,8 @@ bool in_span(const MatX& T, const VecX& x) {
   return (x - T * (T.transpose() * x)).norm() <= 1e-9 * std::max(x.norm(), 1e-300);
 }
 
-// The touching contacts must hold with what the plane can give: their points not slipping (or,
-// frictionless, not leaving the plane), pressed on (N > 0), inside the friction cone.
+// The touching contacts must hold with what the plane (or the other body) can give: their points
+// not slipping (or, frictionless, not leaving it), pressed on (N > 0), inside the friction cone.
 void check_contacts(const ModalEquations& equations, double speed_scale) {
   const Model& model = equations.model().model;
   const VecX values = equations.constraints<double>(VecX::Zero(equations.layout().size()));
@@ -143,7 +143,7 @@ void check_contacts(const ModalEquations& equations, double speed_scale) {
   for (std::size_t i = 0; i < equations.contacts().size(); ++i) {
     const ModalContact& held = equations.contacts()[i];
     const PlaneContact& contact = model.contacts[held.contact];
-    ++row;  // the height, at the plane by touching_contacts
+    ++row;  // the height (a pair's gap), at the plane by touching_contacts
     const double slip = values.segment(row, held.rows()).norm();
     row += held.rows();
     if (slip > 1e-9 * speed_scale * std::max(1.0, contact_size(contact.surface))) {
@@ -152,16 +152,29 @@ void check_contacts(const ModalEquations& equations, double speed_scale) {
                                    "(Coulomb's friction against the slip) is not linearised, only "
                                    "rolling, sticking and frictionless ones",
                                    contact.name, slip)
-                     : fmt::format("contact {}: its point moves off the plane at {:.6g} m/s",
-                                   contact.name, slip));
+                     : fmt::format("contact {}: its point moves off the {} at {:.6g} m/s",
+                                   contact.name, held.pair ? "other body" : "plane", slip));
     }
-    const double N = forces[i].dot(contact.normal_W);
+    const double N = forces[i].dot(held.normal_W);
+    // Touching with no force between (balls hanging side by side): the least motion parts them
+    // or presses them together, and the motion has no linearisation there.
+    const double weight = model.bodies[contact.body].mass * model.gravity_W.norm();
+    if (std::abs(N) <= 1e-9 * weight) {
+      throw NotSteady(fmt::format(
+          "contact {}: {} without pressing (N = {:.3g} N): the least motion parts them or presses "
+          "them together, and has no linearisation there; start them apart, or pressed",
+          contact.name, held.pair ? "the two bodies touch" : "the body touches the plane", N));
+    }
     if (N <= 0.0) {
       throw NotSteady(
-          fmt::format("contact {}: the plane would have to pull (N = {:.6g} N): the body lifts off",
-                      contact.name, N));
+          held.pair ? fmt::format("contact {}: the two bodies would have to pull on each other "
+                                  "(N = {:.6g} N): they come apart",
+                                  contact.name, N)
+                    : fmt::format("contact {}: the plane would have to pull (N = {:.6g} N): the "
+                                  "body lifts off",
+                                  contact.name, N));
     }
-    const double friction = (forces[i] - N * contact.normal_W).norm();
+    const double friction = (forces[i] - N * held.normal_W).norm();
     if (friction > contact.friction * N * (1.0 + 1e-9)) {
       throw NotSteady(fmt::format(
           "contact {}: holding its point needs a friction force of {:.6g} N, more than mu N = "

@@ -6,6 +6,7 @@
 
 #include "tumble/contact/contact_pair.hpp"
 #include "tumble/contact/pair_core.hpp"
+#include "tumble/modes/modal_pair.hpp"
 #include "tumble/modes/not_steady.hpp"
 
 namespace tumble {
@@ -36,20 +37,33 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     const PlaneContact& contact = model.contacts[c];
     if (contact.touches_a_body()) {
-      // Two bodies' spheres: apart, no force; touching, the linearisation would need the pair's
-      // rows over dual numbers (the run has them, modes not yet).
-      // The sphere's centre from the other body's core (pair_core.hpp), less the radii.
+      // Two bodies: apart, no force; touching, their points at the contact held together. The
+      // sphere's centre from the other body's core (pair_core.hpp), less the radii.
       const std::size_t b = contact.other_body;
       const Vec3 centre_W = r_G_W[contact.body] + R_WB[contact.body] * contact.surface.centre_B;
+      const CoreClosest closest =
+          core_closest(contact.other_surface, R_WB[b].transpose() * (centre_W - r_G_W[b]));
       const double gap =
-          core_closest(contact.other_surface, R_WB[b].transpose() * (centre_W - r_G_W[b]))
-              .distance -
-          contact.surface.radius - core_radius(contact.other_surface);
+          closest.distance - contact.surface.radius - core_radius(contact.other_surface);
       if (gap > kTouchingHeightPerSize * pair_size(contact)) continue;
-      throw NotSteady(fmt::format(
-          "contact {}: its two bodies touch; tumble modes takes bodies that touch planes, and two "
-          "bodies only apart (a contact between two touching bodies is not linearised yet)",
-          contact.name));
+      if (contact.other_surface.kind != ContactSurface::Kind::Sphere) {
+        throw NotSteady(fmt::format(
+            "contact {}: its two bodies touch; tumble modes linearises two bodies touching where "
+            "the other is a sphere or a shell, not yet a capsule, a box, a cylinder or a disk",
+            contact.name));
+      }
+      ModalContact held;
+      held.contact = c;
+      held.pair = true;
+      BodyState on_body, on_other;  // their poses (the normal does not depend on the speeds)
+      on_body.r_G = r_G_W[contact.body];
+      on_body.R_WB = R_WB[contact.body];
+      on_other.r_G = r_G_W[b];
+      on_other.R_WB = R_WB[b];
+      held.normal_W = modal_pair_point<double>(contact, on_body, on_other).n_W;
+      held.rolls = contact.friction > 0.0;
+      touching.push_back(held);
+      continue;
     }
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);
     if (lowest.height > touching_height(contact.surface)) {
@@ -58,6 +72,7 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
     ModalContact held;
     const std::string why = point_contact(model, c, R_WB, lowest, held);
     if (!why.empty()) throw NotSteady(fmt::format("contact {}: {}", contact.name, why));
+    held.normal_W = contact.normal_W;
     held.rolls = contact.friction > 0.0;
     touching.push_back(held);
   }
@@ -77,6 +92,7 @@ std::vector<ModalContact> held_contacts(const Model& model, std::span<const Cont
         const ContactHold::BodyPoint& body_point = hold.points[static_cast<std::size_t>(k)];
         ModalContact point;
         point.contact = c;
+        point.normal_W = contact.normal_W;
         point.point = ContactPoint{ContactPoint::Kind::Material, body_point.p_B, 0.0};
         point.rolls = body_point.kind == ContactHold::Kind::Point;
         if (!point.rolls) {
@@ -91,6 +107,7 @@ std::vector<ModalContact> held_contacts(const Model& model, std::span<const Cont
     }
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);
     ModalContact point;
+    point.normal_W = contact.normal_W;
     if (!point_contact(model, c, R_WB, lowest, point).empty()) {
       // The run holds it at one point where another of its points is within the touching
       // height too (a cylinder on one rim, its other rim just above the plane): the support

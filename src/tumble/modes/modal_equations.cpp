@@ -8,6 +8,7 @@
 #include "tumble/dynamics/force_elements.hpp"
 #include "tumble/math/dual.hpp"
 #include "tumble/math/rotation.hpp"
+#include "tumble/modes/modal_pair.hpp"
 #include "tumble/modes/not_steady.hpp"
 #include "tumble/multibody/joints/joint_kind.hpp"
 
@@ -303,6 +304,66 @@ void ModalEquations::calc_loop_rows(const std::vector<ModalKinematics<S>>& kin,
   }
 }
 
+// A held contact's rows: the point P where it touches, as a point of its body (of each body, for
+// a pair, the other's taken away).
+template <typename S>
+struct ContactRowsOf {
+  S gap = S(0.0);       // m: P's height over the plane, or the pair's gap
+  V3<S> n_W, n_rate_W;  // the normal (towards the contact's body) and how fast it turns
+  V3<S> v_P;            // P's velocity (relative, for a pair), world
+  M3X<S> J_P;           // v_P per unit of the unknown speeds
+  V3<S> a_P0;           // P's acceleration with those speeds' rates zero
+};
+
+template <typename S>
+ContactRowsOf<S> ModalEquations::contact_rows(const ModalContact& held,
+                                              const std::vector<ModalKinematics<S>>& kin,
+                                              const std::vector<M3X<S>>& J_v,
+                                              const std::vector<M3X<S>>& J_w) const {
+  const ArticulatedModel& m = *model_;
+  const PlaneContact& contact = m.model.contacts[held.contact];
+  const auto kb = static_cast<std::size_t>(m.slot_of_body[contact.body]);
+  const ModalKinematics<S>& c = kin[kb];
+  const bool moving = !J_v.empty();
+  ContactRowsOf<S> at;
+  if (!held.pair) {
+    V3<S> p_GP_W, p_GP_rate_W;
+    calc_contact_offset<S>(held.point, contact.normal_W, c.R_WC, c.omega, p_GP_W, p_GP_rate_W);
+    at.n_W = contact.normal_W.cast<S>();
+    at.n_rate_W = V3<S>::Zero();
+    at.gap = at.n_W.dot(c.r_G + p_GP_W - contact.point_W.cast<S>());
+    at.v_P = c.v_G + c.omega.cross(p_GP_W);
+    if (moving) {
+      at.J_P = J_v[kb] - hat<S>(p_GP_W) * J_w[kb];
+      at.a_P0 = c.a0 + c.alpha0.cross(p_GP_W) + c.omega.cross(p_GP_rate_W);
+    }
+    return at;
+  }
+  // Two bodies: each one's point at O, O moving over both (modal_pair.hpp).
+  const auto ko = static_cast<std::size_t>(m.slot_of_body[contact.other_body]);
+  const ModalKinematics<S>& o = kin[ko];
+  const auto state = [](const ModalKinematics<S>& k) {
+    BodyStateOf<S> s;
+    s.r_G = k.r_G;
+    s.R_WB = k.R_WC;
+    s.v_G = k.v_G;
+    s.omega_W = k.omega;
+    return s;
+  };
+  const ModalPairPointOf<S> pair = modal_pair_point<S>(contact, state(c), state(o));
+  at.gap = pair.gap;
+  at.n_W = pair.n_W;
+  at.n_rate_W = pair.n_rate_W;
+  const V3<S> p_a = pair.O_W - c.r_G, p_b = pair.O_W - o.r_G;
+  at.v_P = (c.v_G + c.omega.cross(p_a)) - (o.v_G + o.omega.cross(p_b));
+  if (moving) {
+    at.J_P = (J_v[kb] - hat<S>(p_a) * J_w[kb]) - (J_v[ko] - hat<S>(p_b) * J_w[ko]);
+    at.a_P0 = (c.a0 + c.alpha0.cross(p_a) + c.omega.cross(V3<S>(pair.O_rate_W - c.v_G))) -
+              (o.a0 + o.alpha0.cross(p_b) + o.omega.cross(V3<S>(pair.O_rate_W - o.v_G)));
+  }
+  return at;
+}
+
 template <typename S>
 VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contact_forces_W) const {
   const ArticulatedModel& m = *model_;
@@ -420,23 +481,17 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
     Eigen::Index row = 0;
     std::size_t index = 0;
     for (const ModalContact& held : contacts_) {
-      const PlaneContact& contact = model.contacts[held.contact];
-      const auto kb = static_cast<std::size_t>(m.slot_of_body[contact.body]);
-      const ModalKinematics<S>& c = kin[kb];
-      V3<S> p_GP_W, p_GP_rate_W;
-      calc_contact_offset<S>(held.point, contact.normal_W, c.R_WC, c.omega, p_GP_W, p_GP_rate_W);
-      // The body's point P at the contact: its velocity per unit of the speeds (world), and its
-      // acceleration with u' = 0.
-      const M3X<S> J_P = J_v[kb] - hat<S>(p_GP_W) * J_w[kb];
-      const V3<S> a_P0 = c.a0 + c.alpha0.cross(p_GP_W) + c.omega.cross(p_GP_rate_W);
+      const ContactRowsOf<S> at = contact_rows<S>(held, kin, J_v, J_w);
+      const M3X<S>& J_P = at.J_P;
       if (held.rolls) {
         G.middleRows(row, 3) = J_P;
-        kappa.template segment<3>(row) = a_P0;
+        kappa.template segment<3>(row) = at.a_P0;
         if (slides) D.middleRows(row, 3) = J_P;
       } else {
-        const V3<S> n_W = contact.normal_W.cast<S>();
+        const V3<S>& n_W = at.n_W;
         G.row(row) = n_W.transpose() * J_P;
-        kappa(row) = n_W.dot(a_P0);
+        // (A pair's normal turns: its row's rate gains n' . v, v the points' relative velocity.)
+        kappa(row) = n_W.dot(at.a_P0) + at.n_rate_W.dot(at.v_P);
         V3<S> push = n_W;
         if (held.sliding.friction > 0.0) {
           // Coulomb's friction rides on the push: -mu N along the slip of the body's point
@@ -444,8 +499,7 @@ VecXOf<S> ModalEquations::evaluate(const VecXOf<S>& z, std::vector<Vec3>* contac
           V3<S> slide = held.sliding.slide_W.cast<S>();
           if (held.sliding.follows_slip) {
             using std::sqrt;
-            const V3<S> v_P = c.v_G + c.omega.cross(p_GP_W);
-            const V3<S> slip = v_P - n_W * n_W.dot(v_P);
+            const V3<S> slip = at.v_P - n_W * n_W.dot(at.v_P);
             slide = slip / sqrt(slip.squaredNorm());
           }
           push -= held.sliding.friction * slide;
@@ -561,7 +615,7 @@ VecX ModalEquations::least_friction_forces(const MatX& schur,
   Eigen::Index row = 0;
   for (const ModalContact& held : contacts_) {
     if (held.rolls) {
-      const Vec3& n = model_->model.contacts[held.contact].normal_W;
+      const Vec3& n = held.normal_W;
       tangential.block<3, 3>(row, row) = Mat3::Identity() - n * n.transpose();
     }
     row += held.rows();
@@ -609,24 +663,19 @@ std::vector<Vec3> ModalEquations::contact_forces() const {
 
 template <typename S>
 VecXOf<S> ModalEquations::constraints(const VecXOf<S>& z) const {
-  const ArticulatedModel& m = *model_;
   const std::vector<ModalKinematics<S>> kin = kinematics<S>(z);
   Eigen::Index rows = 2 * loop_rows_;
   for (const ModalContact& contact : contacts_) rows += 1 + contact.rows();
   VecXOf<S> values(rows);
   Eigen::Index row = 0;
+  std::vector<M3X<S>> J_v, J_w;  // (the rows' velocities only: no Jacobians)
   for (const ModalContact& held : contacts_) {
-    const PlaneContact& contact = m.model.contacts[held.contact];
-    const ModalKinematics<S>& c = kin[static_cast<std::size_t>(m.slot_of_body[contact.body])];
-    V3<S> p_GP_W, p_GP_rate_W;
-    calc_contact_offset<S>(held.point, contact.normal_W, c.R_WC, c.omega, p_GP_W, p_GP_rate_W);
-    const V3<S> n_W = contact.normal_W.cast<S>();
-    values(row++) = n_W.dot(c.r_G + p_GP_W - contact.point_W.cast<S>());
-    const V3<S> v_P = c.v_G + c.omega.cross(p_GP_W);
+    const ContactRowsOf<S> at = contact_rows<S>(held, kin, J_v, J_w);
+    values(row++) = at.gap;
     if (held.rolls) {
-      values.template segment<3>(row) = v_P;
+      values.template segment<3>(row) = at.v_P;
     } else {
-      values(row) = n_W.dot(v_P);
+      values(row) = at.n_W.dot(at.v_P);
     }
     row += held.rows();
   }

@@ -61,6 +61,8 @@ struct Symmetry {
 
 template <typename Scalar>
 struct ModalKinematics;
+template <typename Scalar>
+struct ContactRowsOf;
 
 class ModalEquations {
  public:
@@ -88,12 +90,12 @@ class ModalEquations {
   // Whether the equations hold constraints (contacts, loops): the modes are then on their
   // tangent space.
   bool holds_constraints() const { return !contacts_.empty() || !loops_.empty(); }
-  // Per held contact: its point's height over the plane (m), then the point's velocity (world,
-  // m/s; a frictionless contact: its normal component); then every loop row's error (m or rad),
-  // then their velocities. Zero on the constraints.
+  // Per held contact: its point's height over the plane (m; a pair's gap), then the point's
+  // velocity (world, m/s; a pair's: relative; a frictionless contact: its normal component); then
+  // every loop row's error (m or rad), then their velocities. Zero on the constraints.
   template <typename Scalar>
   VecXOf<Scalar> constraints(const VecXOf<Scalar>& z) const;
-  // Per held contact at z = 0: the plane's force on the body (world, N).
+  // Per held contact at z = 0: the plane's (or the other body's) force on the body (world, N).
   std::vector<Vec3> contact_forces() const;
   // The rates of z while the state turns along `symmetry` at unit rate.
   template <typename Scalar>
@@ -139,6 +141,14 @@ class ModalEquations {
                       const std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
                       const std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_w,
                       MatXOf<Scalar>& G, VecXOf<Scalar>& kappa) const;
+  // A held contact's point: its height (a pair's gap), its velocity (a pair's: the body's point
+  // less the other's) and, where J_v and J_w are given, its velocity per unit of the unknown
+  // speeds and its acceleration with their rates zero.
+  template <typename Scalar>
+  ContactRowsOf<Scalar> contact_rows(
+      const ModalContact& held, const std::vector<ModalKinematics<Scalar>>& kin,
+      const std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_v,
+      const std::vector<Eigen::Matrix<Scalar, 3, Eigen::Dynamic>>& J_w) const;
   // dz/dt, and the contacts' forces into `contact_forces_W` where given.
   template <typename Scalar>
   VecXOf<Scalar> evaluate(const VecXOf<Scalar>& z, std::vector<Vec3>* contact_forces_W) const;

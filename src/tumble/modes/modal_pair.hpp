@@ -1,0 +1,53 @@
+#pragma once
+// Where a touching pair of bodies touch, for `tumble modes`: a body's sphere against the other
+// body's sphere, or inside its shell (a ball on a dome, in a bowl, on another ball), written over
+// the scalar so that the linearisation differentiates it. The centres' line is the run's
+// (contact/sphere_pair_line.hpp); the contact point O is where the run puts it, midway between
+// the two surfaces' nearest points along n (the point of contact, where they touch), and moves
+// with the other's centre, n's turning and the gap's rate:
+//     O = p + (r_p + gap / 2) n,    O' = v_p + (r_p + gap / 2) n' + (gap' / 2) n,
+// p the other's centre and r_p its radius (minus a shell's). The rows hold the two bodies' points
+// at O together (rolling or sticking: three) or only their motion along n (frictionless: one),
+// as a plane's hold its body's point.
+#include "tumble/body/rigid_body.hpp"
+#include "tumble/contact/pair_core.hpp"
+#include "tumble/contact/plane_contact.hpp"
+#include "tumble/contact/sphere_pair_line.hpp"
+
+namespace tumble {
+
+template <typename S>
+struct ModalPairPointOf {
+  Vec3Of<S> n_W, n_rate_W;  // from the other body towards the sphere, world
+  Vec3Of<S> O_W, O_rate_W;  // the contact point and its rate, world
+  S gap = S(0.0);           // m: the centres' distance less the radii
+};
+
+// Contact `contact` (a pair whose other surface is a sphere or a shell), its body in state a and
+// the other in state b.
+template <typename S>
+ModalPairPointOf<S> modal_pair_point(const PlaneContact& contact, const BodyStateOf<S>& a,
+                                     const BodyStateOf<S>& b) {
+  using V3 = Vec3Of<S>;
+  const V3 centre_offset_W = a.R_WB * contact.surface.centre_B.cast<S>();
+  const V3 other_offset_W = b.R_WB * contact.other_surface.centre_B.cast<S>();
+  const V3 v_centre_W = a.v_G + a.omega_W.cross(centre_offset_W);
+  const V3 v_other_W = b.v_G + b.omega_W.cross(other_offset_W);
+  const V3 other_W = b.r_G + other_offset_W;
+  const V3 relative_velocity_W = v_centre_W - v_other_W;
+  const SpherePairLineOf<S> line =
+      sphere_pair_line<S>(V3(a.r_G + centre_offset_W - other_W), relative_velocity_W,
+                          contact.other_surface.touched_inside);
+  const double other_radius = core_radius(contact.other_surface);
+  ModalPairPointOf<S> at;
+  at.n_W = line.n_W;
+  at.n_rate_W = line.n_rate_W;
+  at.gap = line.distance - contact.surface.radius - other_radius;
+  const S gap_rate = line.n_W.dot(relative_velocity_W);
+  const S reach = other_radius + 0.5 * at.gap;
+  at.O_W = other_W + reach * line.n_W;
+  at.O_rate_W = v_other_W + reach * line.n_rate_W + (0.5 * gap_rate) * line.n_W;
+  return at;
+}
+
+}  // namespace tumble

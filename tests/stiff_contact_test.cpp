@@ -186,6 +186,42 @@ simulate: {duration: 0.1, integrator: auto}
   EXPECT_LT(test::largest_jacobian_departure(edge, "box_on_edge", 1e-11), 1e-7);
 }
 
+// Two bodies touching hold each other in the Jacobian as a plane holds a body: a ball rolling in
+// a fixed bowl from rest 40 degrees up its side (its point at the contact held to the bowl's),
+// and a ball sliding across a bowl that rides a level rail (only its motion along the normal
+// held, Coulomb's friction against the slip between them, the bowl recoiling).
+TEST(StiffContact, ABallInABowlHasTheRunsOwnJacobianRollingOrSliding) {
+  const char* const rolling = R"yaml(tumble: 1
+parameters: {R: 0.5, r: 0.05, theta: 40 deg}
+gravity: [0, 0, -9.81]
+bodies:
+  bowl: {shape: shell, radius: R, mass: 2, position: [0, 0, R]}
+  ball: {shape: sphere, radius: r, mass: 0.2,
+         position: ["(R - r)*sin(theta)", 0, "R - (R - r)*cos(theta)"]}
+joints:
+  stand: {type: fixed, bodies: [ground, bowl], at: [0, 0, 0]}
+contacts:
+  - {name: inside, type: bodies, bodies: [bowl, ball], friction: inf}
+simulate: {duration: 0.1, integrator: auto}
+)yaml";
+  EXPECT_LT(test::largest_jacobian_departure(rolling, "ball_rolling_in_bowl"), 1e-7);
+  const char* const sliding = R"yaml(tumble: 1
+parameters: {R: 0.5, r: 0.05, theta: 20 deg}
+gravity: [0, 0, -9.81]
+bodies:
+  bowl: {shape: shell, radius: R, mass: 2, position: [0, 0, R]}
+  ball: {shape: sphere, radius: r, mass: 0.2, velocity: [0, 0.5, 0],
+         position: ["(R - r)*sin(theta)", 0, "R - (R - r)*cos(theta)"]
+  }
+joints:
+  rail: {type: prismatic, body: bowl, at: [0, 0, R], axis: [1, 0, 0]}
+contacts:
+  - {name: inside, type: bodies, bodies: [bowl, ball], friction: 0.2}
+simulate: {duration: 0.1, integrator: auto}
+)yaml";
+  EXPECT_LT(test::largest_jacobian_departure(sliding, "ball_sliding_in_bowl"), 1e-7);
+}
+
 // radau5 and trbdf2 take contacts held on more than one point, in every mode, against the
 // chapter's closed forms (equations.md, 2): a box sliding down a ramp on a face (its friction
 // held at its corners), v = g (sin(theta) - mu cos(theta)) t; a cylinder rolling down it on its

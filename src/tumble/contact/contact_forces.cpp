@@ -197,10 +197,16 @@ void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> h
     const ContactNow& now = d_.now[c];
     ContactHold& hold = holds[c];
     hold = ContactHold{};
-    // Two bodies touching: the Jacobian leaves their contact out, which costs Newton a little
-    // (more iterations), not the answer (the run's own forces hold it).
-    if (status.mode == ContactMode::Apart || contacts_[c].touches_a_body()) continue;
-    if (now.normal_point_count != 1 || now.spin_radius != 0.0) {
+    // Two bodies touching: a sphere's or a shell's pair is held at its one point as a plane's
+    // is (modes/modal_pair.hpp); the Jacobian leaves a capsule's, a box's, a cylinder's or a
+    // disk's out, which costs Newton a little (more iterations), not the answer (the run's own
+    // forces hold it).
+    const bool pair = contacts_[c].touches_a_body();
+    if (status.mode == ContactMode::Apart ||
+        (pair && contacts_[c].other_surface.kind != ContactSurface::Kind::Sphere)) {
+      continue;
+    }
+    if (!pair && (now.normal_point_count != 1 || now.spin_radius != 0.0)) {
       calc_points_hold(c, hold);
       continue;
     }
@@ -210,7 +216,7 @@ void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> h
     }
     hold.kind = ContactHold::Kind::Normal;
     hold.friction = contacts_[c].friction;
-    const Vec3& n = contacts_[c].normal_W;
+    const Vec3& n = normal_of(c);
     const Vec3 slide_W = slide_direction(c, &hold.follows_slip);
     hold.slide_W = slide_W - n * n.dot(slide_W);
   }

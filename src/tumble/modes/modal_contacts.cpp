@@ -29,6 +29,23 @@ std::string point_contact(const Model& model, std::size_t c, const std::vector<M
                      touching_height(contact.surface), height_of, held.point);
 }
 
+// Contact c between two bodies' spheres (or a sphere in a shell) held at the point where they
+// touch, with the bodies at r_G_W, R_WB (per body): its normal there.
+ModalContact pair_contact(const Model& model, std::size_t c, const std::vector<Vec3>& r_G_W,
+                          const std::vector<Mat3>& R_WB) {
+  const PlaneContact& contact = model.contacts[c];
+  BodyState on_body, on_other;  // their poses (the normal does not depend on the speeds)
+  on_body.r_G = r_G_W[contact.body];
+  on_body.R_WB = R_WB[contact.body];
+  on_other.r_G = r_G_W[contact.other_body];
+  on_other.R_WB = R_WB[contact.other_body];
+  ModalContact held;
+  held.contact = c;
+  held.pair = true;
+  held.normal_W = modal_pair_point<double>(contact, on_body, on_other).n_W;
+  return held;
+}
+
 }  // namespace
 
 std::vector<ModalContact> touching_contacts(const Model& model, const std::vector<Vec3>& r_G_W,
@@ -52,15 +69,7 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
             "the other is a sphere or a shell, not yet a capsule, a box, a cylinder or a disk",
             contact.name));
       }
-      ModalContact held;
-      held.contact = c;
-      held.pair = true;
-      BodyState on_body, on_other;  // their poses (the normal does not depend on the speeds)
-      on_body.r_G = r_G_W[contact.body];
-      on_body.R_WB = R_WB[contact.body];
-      on_other.r_G = r_G_W[b];
-      on_other.R_WB = R_WB[b];
-      held.normal_W = modal_pair_point<double>(contact, on_body, on_other).n_W;
+      ModalContact held = pair_contact(model, c, r_G_W, R_WB);
       held.rolls = contact.friction > 0.0;
       touching.push_back(held);
       continue;
@@ -103,6 +112,13 @@ std::vector<ModalContact> held_contacts(const Model& model, std::span<const Cont
         }
         held.push_back(point);
       }
+      continue;
+    }
+    if (contact.touches_a_body()) {  // a sphere's or a shell's pair (ContactSystem::calc_holds)
+      ModalContact point = pair_contact(model, c, r_G_W, R_WB);
+      point.rolls = hold.kind == ContactHold::Kind::Point;
+      if (!point.rolls) point.sliding = hold;
+      held.push_back(point);
       continue;
     }
     const SupportPoint lowest = support_point(contact, r_G_W[contact.body], R_WB[contact.body]);

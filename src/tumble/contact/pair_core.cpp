@@ -71,10 +71,35 @@ CoreClosest cylinder_closest(const ContactSurface& surface, const Vec3& x_B) {
   return measured_from_nearest(closest, x_B);
 }
 
+// A ring's or a torus's centre circle (its rim, radius R, about the third axis): the point of it
+// nearest, out from the axis towards x_B, sliding round it at R / rho of the centre's motion
+// round the axis (any, with the centre on the axis: every point of the circle is as near).
+CoreClosest circle_closest(const ContactSurface& surface, const Vec3& x_B) {
+  CoreClosest closest;
+  const Mat3& A = surface.axes_B;
+  const Vec3 q = A.transpose() * (x_B - surface.centre_B);
+  const double R = surface.radius, rho = std::hypot(q.x(), q.y());
+  const Vec3 out = rho > 0.0 ? Vec3(q.x() / rho, q.y() / rho, 0.0) : Vec3::UnitX();
+  closest.p_B = surface.centre_B + A * (R * out);
+  if (rho > 0.0) {
+    closest.slide_count = 1;
+    closest.slide_B[0] = A * Vec3(-out.y(), out.x(), 0.0);
+    closest.slide_scale[0] = R / rho;
+  }
+  return measured_from_nearest(closest, x_B);
+}
+
+// A ring (or a torus) touches only along its rim: its face is hollow all the way out.
+bool rim_only(const ContactSurface& surface) {
+  return surface.kind == ContactSurface::Kind::Circle &&
+         surface.face_inner_radius >= surface.radius;
+}
+
 }  // namespace
 
 double core_radius(const ContactSurface& surface) {
   if (surface.touched_inside) return -surface.radius;
+  if (rim_only(surface)) return surface.tube_radius;  // a ring's 0
   return surface.kind == ContactSurface::Kind::Sphere ||
                  surface.kind == ContactSurface::Kind::Capsule
              ? surface.radius
@@ -108,6 +133,7 @@ CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B) {
     }
     return measured_from_nearest(closest, x_B);
   }
+  if (rim_only(surface)) return circle_closest(surface, x_B);
   if (surface.kind == ContactSurface::Kind::Cylinder ||
       surface.kind == ContactSurface::Kind::Circle) {
     return cylinder_closest(surface, x_B);

@@ -10,7 +10,8 @@
 // is left of the centre's motion across it (sphere_pairs.cpp). A cylinder or a disk is its own
 // solid too (radius 0): its nearest point is on a flat face, on its round side (sliding along the
 // axis and round it) or on a rim (round it); round a circle p_B moves at R / rho of the centre's
-// motion round the axis, rho the centre's distance from the axis.
+// motion round the axis, rho the centre's distance from the axis. A ring is its rim, a circle
+// (radius 0), and a torus the same circle swept by its tube's radius.
 //
 // A shell touched from inside (a bowl) is its centre swept by minus its radius: the distance is
 // measured along the normal, which runs from the centre towards the shell's wall (away from the
@@ -38,11 +39,11 @@ struct CoreClosest {
   std::array<double, 2> slide_scale = {1.0, 1.0};
 };
 
-// The core's point nearest x_B (body axes, from the COM), of a sphere, capsule, box, cylinder or
-// disk surface.
+// The core's point nearest x_B (body axes, from the COM), of a sphere, capsule, box, cylinder,
+// disk, ring or torus surface.
 CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B);
-// The radius that sweeps the core: a sphere's or capsule's; a box's, cylinder's or disk's 0; a
-// shell's touched from inside, minus its radius.
+// The radius that sweeps the core: a sphere's or capsule's, a torus's tube's; a box's,
+// cylinder's, disk's or ring's 0; a shell's touched from inside, minus its radius.
 double core_radius(const ContactSurface& surface);
 // The length that sets a pair's tolerances: the smaller radius (a box's core has none).
 double pair_size(const PlaneContact& contact);

@@ -106,9 +106,9 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
     line.turning = centres.turning;
     return line;
   }
-  // A capsule, a box, a cylinder or a disk: in its body's axes, where the nearest point slides
-  // along the feature's free directions (round a circle, at R / rho of the centre's motion), and
-  // the normal turns with what is left of the centre's relative motion.
+  // A capsule, a box, a cylinder, a disk, a ring or a torus: in its body's axes, where the nearest
+  // point slides along the feature's free directions (round a circle, at R / rho of the centre's
+  // motion), and the normal turns with what is left of the centre's relative motion.
   const Vec3 x_B = b.R_WB.transpose() * (centre_W - b.r_G_W);
   const CoreClosest closest = core_closest(contact.other_surface, x_B);
   line.distance = closest.distance;
@@ -228,9 +228,11 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
         how = fmt::format(
             "the sphere's centre is {:.6g} m from the {}, below 0 inside it, its radius {:.6g} m",
             radii + gap,
-            contact.other_surface.kind == ContactSurface::Kind::Cylinder ? "cylinder"
-            : contact.other_surface.kind == ContactSurface::Kind::Circle ? "disk"
-                                                                         : "box",
+            contact.other_surface.kind == ContactSurface::Kind::Cylinder             ? "cylinder"
+            : contact.other_surface.kind != ContactSurface::Kind::Circle             ? "box"
+            : contact.other_surface.face_inner_radius < contact.other_surface.radius ? "disk"
+            : contact.other_surface.tube_radius > 0.0 ? "torus's centre circle"
+                                                      : "ring",
             radii);
         break;
     }

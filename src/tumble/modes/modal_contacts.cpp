@@ -67,8 +67,7 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
         throw NotSteady(fmt::format(
             "contact {}: its two bodies touch; tumble modes linearises two bodies touching where "
             "the other is a sphere or a shell, not yet a capsule, a box, a cylinder, a disk, a "
-            "ring or "
-            "a torus",
+            "ring or a torus",
             contact.name));
       }
       ModalContact held = pair_contact(model, c, r_G_W, R_WB);

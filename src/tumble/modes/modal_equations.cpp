@@ -342,15 +342,9 @@ ContactRowsOf<S> ModalEquations::contact_rows(const ModalContact& held,
   // Two bodies: each one's point at O, O moving over both (modal_pair.hpp).
   const auto ko = static_cast<std::size_t>(m.slot_of_body[contact.other_body]);
   const ModalKinematics<S>& o = kin[ko];
-  const auto state = [](const ModalKinematics<S>& k) {
-    BodyStateOf<S> s;
-    s.r_G = k.r_G;
-    s.R_WB = k.R_WC;
-    s.v_G = k.v_G;
-    s.omega_W = k.omega;
-    return s;
-  };
-  const ModalPairPointOf<S> pair = modal_pair_point<S>(contact, state(c), state(o));
+  const ModalPairPointOf<S> pair =
+      modal_pair_point<S>(contact, loop_side<S>(kin, static_cast<int>(contact.body)),
+                          loop_side<S>(kin, static_cast<int>(contact.other_body)));
   at.gap = pair.gap;
   at.n_W = pair.n_W;
   at.n_rate_W = pair.n_rate_W;

@@ -131,7 +131,7 @@ class ModalEquations {
   void set_up(const std::span<const ContactHold>* holds);
   // Of the loops' rows, the independent ones at z = 0, into loop_rows_held_.
   void select_loop_rows();
-  // A body's pose and twist for the loops' rows (ground: at rest).
+  // A body's pose and twist for the loops' rows and a touching pair's (ground: at rest).
   template <typename Scalar>
   BodyStateOf<Scalar> loop_side(const std::vector<ModalKinematics<Scalar>>& kin, int body) const;
   // Every loop row's velocity per unit of the unknown speeds (into G from `row` on) and its

@@ -250,8 +250,28 @@ TEST(CompositeContact, TheReaderNamesTheTouchingPart) {
       "contacts:\n";
   const std::string plane = "plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: 0.3}\n";
   const std::string simulate = "simulate: {duration: 0.1}\n";
-  test::expect_error(head + "  - {type: plane, body: bell, " + plane + simulate, 11, 25,
-                     "contacts[0].body", "name the part that touches with `part:`");
+  // Without `part:`, each part that can touch is a contact of its own, named by the contact and
+  // the part; `part:` may list them.
+  const std::string path = "bell.yaml";
+  const Scenario every = load_scenario_text(
+      head + "  - {name: floor, type: plane, body: bell, " + plane + simulate, path, {});
+  ASSERT_EQ(every.contacts.size(), 2u);
+  EXPECT_EQ(every.contacts[0].name, "floor_a");
+  EXPECT_EQ(every.contacts[0].part, 0);
+  EXPECT_EQ(every.contacts[1].name, "floor_b");
+  EXPECT_EQ(every.contacts[1].part, 1);
+  const Scenario listed = load_scenario_text(
+      head + "  - {type: plane, body: bell, part: [b], " + plane + simulate, path, {});
+  ASSERT_EQ(listed.contacts.size(), 1u);
+  EXPECT_EQ(listed.contacts[0].name, "contact1");
+  EXPECT_EQ(listed.contacts[0].part, 1);
+  test::expect_error(head + "  - {type: plane, body: bell, part: [a, a], " + plane + simulate, 11,
+                     41, "contacts[0].part[1]", "part 'a' named twice");
+  test::expect_error(head + "  - {type: plane, body: bell, part: [], " + plane + simulate, 11, 37,
+                     "contacts[0].part", "name at least one part");
+  test::expect_error(head + "  - {name: floor, type: plane, body: bell, " + plane +
+                         "  - {name: floor_a, type: plane, body: ball, " + plane + simulate,
+                     12, 6, "contacts[1].name", "'floor_a' already names a contact");
   test::expect_error(head + "  - {type: plane, body: bell, part: c, " + plane + simulate, 11, 37,
                      "contacts[0].part", "body 'bell' has no part 'c'");
   test::expect_error(head + "  - {type: plane, body: bell, part: bar, " + plane + simulate, 11, 37,

@@ -655,24 +655,33 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
                                      impulse_W};
   const char* part = pair.part_name(v);
   const std::string on = part ? fmt::format(" on {}", part) : std::string();
+  const std::string impact_note =
+      settles ? fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before)
+              : fmt::format("impact{}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", on,
+                            -vn_before, vn_after, -work);
+  note_contact(t, c, impact_note, numbers);
+  release_contacts_sent_away(c, t, y);
   if (settles) {
-    note_contact(t, c,
-                 fmt::format("touchdown{} at normal speed {:.3g} m/s: settles", on, -vn_before),
-                 numbers);
     pair.find_settled_part(v);
     classify_contact(c, t, y, true);  // the impact set the part: say what holds it
     check_landing_cascade(c, t, -vn_before);
     return;
   }
-  note_contact(t, c,
-               fmt::format("impact{}: normal speed {:.4g} -> {:.4g} m/s, {:.4g} J lost", on,
-                           -vn_before, vn_after, -work),
-               numbers);
   if (!pair.keep_unbounced_part(v)) {
     set_apart(c);  // it bounces (a sphere: it was apart)
     return;
   }
   classify_contact(c, t, y);
+}
+
+void ContactSystem::release_contacts_sent_away(std::size_t landed, double t, VecX& y) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    if (c == landed || s_.contacts[c].mode == ContactMode::Apart) continue;
+    if (still_touches_after_jump(c, y)) continue;
+    set_apart(c);
+    note_contact(t, c,
+                 fmt::format("lifts off: the impact at {} sends it away", contacts_[landed].name));
+  }
 }
 
 void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed) {

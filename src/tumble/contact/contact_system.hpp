@@ -260,6 +260,10 @@ class ContactSystem {
   // points are held one by one instead).
   bool anchored(std::size_t contact) const;
   void impact(std::size_t contact, double t, VecX& y);
+  // After an impact at `landed`: each other touching contact whose every point the impulse sends
+  // away from its plane lifts off at that instant (a rimless wheel's foot that it rolled on, as
+  // the next foot lands), before the landing contact's mode is chosen with the others' rows.
+  void release_contacts_sent_away(std::size_t landed, double t, VecX& y);
   // After a settled landing at `speed`: throws std::runtime_error where such landings have
   // come kCascadeLandings in a row, each going apart at once (no consistent mode).
   void check_landing_cascade(std::size_t contact, double t, double speed);

@@ -31,9 +31,11 @@ bool touches_a_plane(ShapeKind kind) {
 constexpr const char* kTouchingShapes =
     "a sphere, shell, disk, ring, torus, cylinder, tube, cone, capsule, box, plate or mesh";
 
-// The composite's part that touches: the one `part:` names, or its one part that can.
-int read_touching_part(const Reader& reader, const MapReader& map, const Field& body_field,
-                       const BodySpec& body) {
+// The composite's parts that touch a plane, each a contact of its own: the one `part:` names, the
+// list it names, or without it every part that can (one part hands over to another as the body
+// turns: the new one's touchdown and the old one's lift-off are each a located event).
+std::vector<int> read_touching_parts(const Reader& reader, const MapReader& map,
+                                     const Field& body_field, const BodySpec& body) {
   const auto touching_names = [&] {
     std::string names;
     for (const PartSpec& part : body.parts) {
@@ -42,38 +44,53 @@ int read_touching_part(const Reader& reader, const MapReader& map, const Field& 
     }
     return names.empty() ? std::string("none") : names;
   };
+  std::vector<int> found;
   if (const auto f = map.find("part")) {
-    const std::string name = reader.text(*f);
-    for (std::size_t p = 0; p < body.parts.size(); ++p) {
-      if (body.parts[p].name != name) continue;
-      if (!touches_a_plane(body.parts[p].shape.kind)) {
-        reader.fail_at_value(*f, "part '" + name + "' of body '" + body.name + "' is a " +
-                                     std::string(shape_name(body.parts[p].shape.kind)) +
-                                     "; of a composite's parts " + kTouchingShapes +
-                                     " touches a plane; those that can: " + touching_names());
-      }
-      return static_cast<int>(p);
+    const std::vector<Field> named =
+        f->node.IsSequence() ? reader.items(*f, "of parts' names") : std::vector<Field>{*f};
+    if (named.empty()) {
+      reader.fail_at_value(
+          *f, "name at least one part; those that can touch a plane: " + touching_names());
     }
-    reader.fail_at_value(*f, "body '" + body.name + "' has no part '" + name +
-                                 "'; its parts that can touch a plane: " + touching_names());
+    for (const Field& item : named) {
+      const std::string name = reader.text(item);
+      const auto at = std::find_if(body.parts.begin(), body.parts.end(),
+                                   [&](const PartSpec& part) { return part.name == name; });
+      if (at == body.parts.end()) {
+        reader.fail_at_value(item, "body '" + body.name + "' has no part '" + name +
+                                       "'; its parts that can touch a plane: " + touching_names());
+      }
+      if (!touches_a_plane(at->shape.kind)) {
+        reader.fail_at_value(item, "part '" + name + "' of body '" + body.name + "' is a " +
+                                       std::string(shape_name(at->shape.kind)) +
+                                       "; of a composite's parts " + kTouchingShapes +
+                                       " touches a plane; those that can: " + touching_names());
+      }
+      const int p = static_cast<int>(at - body.parts.begin());
+      if (std::find(found.begin(), found.end(), p) != found.end()) {
+        reader.fail_at_value(item, "part '" + name + "' named twice");
+      }
+      found.push_back(p);
+    }
+    return found;
   }
-  int found = -1, count = 0;
   for (std::size_t p = 0; p < body.parts.size(); ++p) {
-    if (!touches_a_plane(body.parts[p].shape.kind)) continue;
-    found = static_cast<int>(p);
-    ++count;
+    if (touches_a_plane(body.parts[p].shape.kind)) found.push_back(static_cast<int>(p));
   }
-  if (count != 1) {
-    reader.fail_at_value(
-        body_field,
-        "body '" + body.name + "' is a composite; " +
-            (count == 0 ? std::string("none of its parts can touch a plane (of a composite's "
-                                      "parts ") +
-                              kTouchingShapes + " touches)"
-                        : "name the part that touches with `part:` (one contact per part): " +
-                              touching_names()));
+  if (found.empty()) {
+    reader.fail_at_value(body_field, "body '" + body.name +
+                                         "' is a composite; none of its parts can touch a plane "
+                                         "(of a composite's parts " +
+                                         kTouchingShapes + " touches)");
   }
   return found;
+}
+
+// The suffix a composite's part gives its contact's name where the contact is one of several,
+// one per part (NAME_SUFFIX): the part's name, or partK for the unnamed parts[K].
+std::string part_suffix(const BodySpec& body, int part) {
+  const std::string& name = body.parts[static_cast<std::size_t>(part)].name;
+  return name.rfind("parts[", 0) == 0 ? "part" + std::to_string(part) : name;
 }
 
 // Whether the shape touches another body's: a sphere's or a shell's surface, or a capsule's, a
@@ -219,7 +236,8 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
       const bool swap = !shapes[a].sphere();
       const std::size_t first = swap ? b : a, second = swap ? a : b;
       ContactSpec pair;
-      pair.name = bodies[a] + "_" + bodies[b];  // a group's: NAME_a_b, in the list's order
+      // A group's pair is NAME_a_b, in the list's order; a pair named on its own is NAME.
+      if (names.size() > 2) pair.name = bodies[a] + "_" + bodies[b];
       pair.body = bodies[first];
       pair.other_body = bodies[second];
       pair.part = shapes[first].part;
@@ -263,7 +281,8 @@ void read_coefficients(const Reader& reader, const MapReader& map, ContactSpec& 
   }
 }
 
-// One contact, or a group's pairs.
+// One contact, or a group's pairs, or a composite's parts on a plane: each of several named by
+// the suffix its name takes (NAME_SUFFIX), one alone by none.
 std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map,
                                       const Scenario& scenario) {
   ContactSpec contact;
@@ -290,8 +309,9 @@ std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map
   const Field body_field = map.require("body", "the body that touches the plane");
   contact.body = read_body_or_ground(reader, body_field, scenario.bodies, false);
   const BodySpec& body = scenario.bodies[*reader.body_position(contact.body)];
+  std::vector<int> parts;
   if (!body.parts.empty()) {
-    contact.part = read_touching_part(reader, map, body_field, body);
+    parts = read_touching_parts(reader, map, body_field, body);
   } else if (!touches_a_plane(body.shape.kind)) {
     reader.fail_at_value(body_field, "body '" + contact.body + "' is a " +
                                          std::string(shape_name(body.shape.kind)) +
@@ -314,7 +334,14 @@ std::vector<ContactSpec> read_contact(const Reader& reader, const MapReader& map
   contact.plane_normal_W = *n;
 
   read_coefficients(reader, map, contact, false);
-  return {contact};
+  if (parts.empty()) return {contact};
+  std::vector<ContactSpec> each_part;
+  for (const int part : parts) {
+    each_part.push_back(contact);
+    each_part.back().part = part;
+    if (parts.size() > 1) each_part.back().name = part_suffix(body, part);
+  }
+  return each_part;
 }
 
 }  // namespace
@@ -389,15 +416,20 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
       check_name(reader, *name_field, name, "contact");
     }
     // A group of bodies (more than two named) makes a contact of each pair, named by the group and
-    // its bodies (touch_ball1_ball2), even where the joints leave one pair of it; any other
-    // contact's name is claimed before the rest of it is read.
+    // its bodies (touch_ball1_ball2), even where the joints leave one pair of it; a composite on a
+    // plane, one of each part that touches where it has several (floor_head, floor_handle). Any
+    // other contact's name is claimed before the rest of it is read.
     const auto listed = map.find("bodies");
     const bool group = listed && listed->node.IsSequence() && listed->node.size() > 2;
     if (!group) heads.claim(reader, named_at, name, "contact", where);
     for (ContactSpec& contact : read_contact(reader, map, scenario)) {
-      contact.name = group ? name + "_" + contact.name : name;
+      const bool one_of_several = !contact.name.empty();  // read_contact's suffix
+      contact.name = one_of_several ? name + "_" + contact.name : name;
       contact.where = where;
-      if (group) heads.claim(reader, named_at, contact.name, "contact", where);
+      if (one_of_several) {
+        check_name(reader, named_at, contact.name, "contact");
+        heads.claim(reader, named_at, contact.name, "contact", where);
+      }
       contacts.push_back(std::move(contact));
     }
   }

@@ -195,7 +195,8 @@ TEST(SphereCylinder, TwoOfThemOrABallInOneAreRefused) {
                          "0.5]}\n"
                          "contacts:\n"
                          "  - {type: bodies, bodies: [c, d], friction: 0}\n",
-                     11, 32, "contacts[0].bodies[1]", "2 cylinder, disk, ring or torus parts");
+                     11, 32, "contacts[0].bodies[1]",
+                     "2 cylinder, tube, disk, ring, torus or cone parts");
 }
 
 }  // namespace

@@ -228,7 +228,9 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
         how = fmt::format(
             "the sphere's centre is {:.6g} m from the {}, below 0 inside it, its radius {:.6g} m",
             radii + gap,
-            contact.other_surface.kind == ContactSurface::Kind::Cylinder             ? "cylinder"
+            contact.other_surface.kind == ContactSurface::Kind::Cylinder
+                ? (contact.other_surface.face_inner_radius > 0.0 ? "tube" : "cylinder")
+            : contact.other_surface.kind == ContactSurface::Kind::Cone               ? "cone"
             : contact.other_surface.kind != ContactSurface::Kind::Circle             ? "box"
             : contact.other_surface.face_inner_radius < contact.other_surface.radius ? "disk"
             : contact.other_surface.tube_radius > 0.0 ? "torus's centre circle"

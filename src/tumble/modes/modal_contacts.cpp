@@ -66,8 +66,8 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       if (contact.other_surface.kind != ContactSurface::Kind::Sphere) {
         throw NotSteady(fmt::format(
             "contact {}: its two bodies touch; tumble modes linearises two bodies touching where "
-            "the other is a sphere or a shell, not yet a capsule, a box, a cylinder, a disk, a "
-            "ring or a torus",
+            "the other is a sphere or a shell, not yet a capsule, a box, a cylinder, a tube, a "
+            "disk, a ring, a torus or a cone",
             contact.name));
       }
       ModalContact held = pair_contact(model, c, r_G_W, R_WB);

@@ -3,8 +3,8 @@
 // shape whose contact with a plane tumble resolves: a sphere or shell, a round body (disk, ring,
 // torus, cylinder, tube, cone, capsule) or a polyhedron (docs/scenario.md, Contacts), or a
 // composite whose touching part is one of these. Two bodies touch at a sphere (or shell) and a
-// sphere, a capsule, a box, a cylinder, a disk, a ring or a torus (each a body's shape or a
-// composite's one such part).
+// sphere, a capsule, a box, a cylinder, a tube, a disk, a ring, a torus or a cone (each a body's
+// shape or a composite's one such part).
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -94,10 +94,10 @@ std::string part_suffix(const BodySpec& body, int part) {
 }
 
 // Whether the shape touches another body's: a sphere's or a shell's surface, or a capsule's, a
-// box's, a cylinder's, a disk's, a ring's or a torus's (which touch a sphere). A composite touches
-// with its one part of the first four; only where it has none, with its one cylinder, disk, ring
-// or torus part (so that a wheel or an axle beside a sphere part leaves that sphere its one part
-// that touches).
+// box's, a cylinder's, a tube's, a disk's, a ring's, a torus's or a cone's (which touch a sphere).
+// A composite touches with its one part of the first four; only where it has none, with its one
+// part of the others (so that a wheel or an axle beside a sphere part leaves that sphere its one
+// part that touches).
 bool is_sphere_or_shell(ShapeKind kind) {
   return kind == ShapeKind::Sphere || kind == ShapeKind::Shell;
 }
@@ -106,12 +106,13 @@ bool touches_first(ShapeKind kind) {
 }
 bool touches_a_body(ShapeKind kind) {
   return touches_first(kind) || kind == ShapeKind::Cylinder || kind == ShapeKind::Disk ||
-         kind == ShapeKind::Ring || kind == ShapeKind::Torus;
+         kind == ShapeKind::Ring || kind == ShapeKind::Torus || kind == ShapeKind::Tube ||
+         kind == ShapeKind::Cone;
 }
 
 // One of the two bodies of a `type: bodies` contact: its touching part where it is a composite
 // (-1: the body itself), its shape, and whether that is a sphere (else a capsule, a box, a
-// cylinder, a disk, a ring or a torus).
+// cylinder, a tube, a disk, a ring, a torus or a cone).
 struct TouchingShape {
   int part = -1;
   ShapeKind kind = ShapeKind::Sphere;
@@ -121,8 +122,9 @@ TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
                                   const BodySpec& body) {
   const char* what =
       "two bodies touch at a sphere (or shell) and a sphere, a capsule, a box, a cylinder, a "
-      "disk, a ring or a torus, each a body's shape (or a composite's one sphere, shell, capsule "
-      "or box part, or where it has none of those its one cylinder, disk, ring or torus part)";
+      "tube, a disk, a ring, a torus or a cone, each a body's shape (or a composite's one sphere, "
+      "shell, capsule or box part, or where it has none of those its one cylinder, tube, disk, "
+      "ring, torus or cone part)";
   if (body.parts.empty()) {
     if (touches_a_body(body.shape.kind)) return {-1, body.shape.kind};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
@@ -139,11 +141,11 @@ TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
     }
     if (count == 1) return found;
     if (count > 1) {
-      reader.fail_at_value(body_field, "body '" + body.name + "' is a composite with " +
-                                           std::to_string(count) +
-                                           (first ? " sphere, shell, capsule or box parts; "
-                                                  : " cylinder, disk, ring or torus parts; ") +
-                                           what + ", one such part to a body");
+      reader.fail_at_value(body_field,
+                           "body '" + body.name + "' is a composite with " + std::to_string(count) +
+                               (first ? " sphere, shell, capsule or box parts; "
+                                      : " cylinder, tube, disk, ring, torus or cone parts; ") +
+                               what + ", one such part to a body");
     }
   }
   reader.fail_at_value(body_field, "body '" + body.name +

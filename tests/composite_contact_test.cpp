@@ -236,6 +236,52 @@ TEST(CompositeContact, ADiskPartRollingUprightWobblesAtTheClosedFormsFrequency) 
   test::expect_relative(wobble.natural_frequency, omega);
 }
 
+// A ball strikes one of a free dumbbell's two balls (sphere parts at x = +-d on a rod along x),
+// head on across the bar, frictionless: each of the dumbbell's balls is a contact of its own with
+// the ball (hit_a, hit_b), and the one struck takes the impulse J = (1 + e) u / (1/m + 1/M +
+// d^2 / I), I about the dumbbell's COM across the bar (each ball's 2/5 m r^2 + m d^2, the rod's
+// M_rod L^2 / 12), which turns it at J d / I; the other pair stays apart.
+TEST(CompositeContact, ABallStrikesOneOfADumbbellsTwoBallsEachAContactOfItsOwn) {
+  constexpr double m_end = 1, r_end = 0.1, d = 0.3, m_rod = 0.2, L = 0.4, m = 0.5, u = 2;
+  constexpr double M = 2 * m_end + m_rod;
+  const double I = 2 * (0.4 * m_end * r_end * r_end + m_end * d * d) + m_rod * L * L / 12;
+  for (const double e : {1.0, 0.5}) {
+    const test::ScenarioRun run = test::run_inline_scenario(fmt::format(R"yaml(tumble: 1
+gravity: [0, 0, 0]
+bodies:
+  bell:
+    parts:
+      - {{name: a, shape: sphere, radius: 0.1, mass: 1, position: [-0.3, 0, 0]}}
+      - {{name: b, shape: sphere, radius: 0.1, mass: 1, position: [0.3, 0, 0]}}
+      - {{name: bar, shape: rod, length: 0.4, mass: 0.2}}
+  ball: {{shape: sphere, radius: 0.05, mass: 0.5, position: [0.3, 0.5, 0], velocity: [0, -2, 0]}}
+contacts:
+  - {{name: hit, type: bodies, bodies: [ball, bell], friction: 0, restitution: {}}}
+simulate: {{duration: 0.3, integrator: dop853, rtol: 1e-12, atol: 1e-14}}
+)yaml",
+                                                                        e),
+                                                            "dumbbell");
+    ASSERT_EQ(run.contacts.size(), 2u);
+    EXPECT_EQ(run.contacts[0].name, "hit_a");
+    EXPECT_EQ(run.contacts[1].name, "hit_b");
+    ASSERT_EQ(run.contact_events.size(), 1u);
+    const ContactEventRecord& strike = run.contact_events[0];
+    EXPECT_EQ(strike.contact, 1u);
+    // The gap 0.5 - 0.1 - 0.05 closed at u.
+    EXPECT_NEAR(strike.t, 0.35 / u, 1e-12);
+    const double J = (1 + e) * u / (1 / m + 1 / M + d * d / I);
+    ASSERT_TRUE(strike.impact.has_value());
+    EXPECT_NEAR((strike.impact->impulse_W - Vec3(0, J, 0)).norm(), 0.0, 1e-12 * m * u);
+    const test::Row& last = run.rows.back();
+    EXPECT_NEAR((last.states[1].v_G - Vec3(0, -u + J / m, 0)).norm(), 0.0, 1e-12 * u) << e;
+    EXPECT_NEAR((last.states[0].v_G - Vec3(0, -J / M, 0)).norm(), 0.0, 1e-12 * u) << e;
+    EXPECT_NEAR((last.states[0].omega_W - Vec3(0, 0, -J * d / I)).norm(), 0.0, 1e-12 * u / d) << e;
+    if (e == 1.0) {
+      EXPECT_NEAR(last.quantities.kinetic_energy, 0.5 * m * u * u, 1e-12 * m * u * u);
+    }
+  }
+}
+
 TEST(CompositeContact, TheReaderNamesTheTouchingPart) {
   const std::string head =
       "tumble: 1\n"

@@ -19,6 +19,7 @@
 
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "tumble/scenario/scenario.hpp"
 
 namespace tumble {
 namespace {
@@ -167,7 +168,7 @@ TEST(SphereCylinder, ABallStrikingACompositesCylinderPartTakesTheClosedFormsImpu
   }
 }
 
-TEST(SphereCylinder, TwoOfThemOrABallInOneAreRefused) {
+TEST(SphereCylinder, TwoOfThemOrABallInOneAreRefusedAndACompositesPartsEachTouch) {
   const std::string bodies =
       "tumble: 1\n"
       "bodies:\n"
@@ -185,18 +186,24 @@ TEST(SphereCylinder, TwoOfThemOrABallInOneAreRefused) {
                          "simulate: {duration: 1}\n",
                      7, 5, "contacts[0]",
                      "overlapping by 0.05 m (the sphere's centre is 0.05 m from the cylinder");
-  // A composite with two cylinder or disk parts and none that comes first: which touches is
-  // not said.
-  test::expect_error(bodies +
-                         "  d:\n"
-                         "    parts:\n"
-                         "      - {name: p, shape: cylinder, radius: 0.1, length: 0.2, mass: 1}\n"
-                         "      - {name: q, shape: disk, radius: 0.1, mass: 1, position: [0, 0, "
-                         "0.5]}\n"
-                         "contacts:\n"
-                         "  - {type: bodies, bodies: [c, d], friction: 0}\n",
-                     11, 32, "contacts[0].bodies[1]",
-                     "2 cylinder, tube, disk, ring, torus or cone parts");
+  // A composite with two cylinder or disk parts and none that comes first: each touches the ball,
+  // a contact of its own named by the part.
+  const Scenario parts = load_scenario_text(
+      bodies +
+          "  d:\n"
+          "    parts:\n"
+          "      - {name: p, shape: cylinder, radius: 0.1, length: 0.2, mass: 1}\n"
+          "      - {name: q, shape: disk, radius: 0.1, mass: 1, position: [0, 0, 0.5]}\n"
+          "    position: [0, 3, 0]\n"
+          "contacts:\n"
+          "  - {type: bodies, bodies: [c, d], friction: 0}\n"
+          "simulate: {duration: 1}\n",
+      "parts.yaml", {});
+  ASSERT_EQ(parts.contacts.size(), 2u);
+  EXPECT_EQ(parts.contacts[0].name, "contact1_p");
+  EXPECT_EQ(parts.contacts[0].other_part, 0);
+  EXPECT_EQ(parts.contacts[1].name, "contact1_q");
+  EXPECT_EQ(parts.contacts[1].other_part, 1);
 }
 
 }  // namespace

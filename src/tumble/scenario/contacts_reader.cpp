@@ -2,9 +2,9 @@
 // and {type: bodies, bodies: [a, b], friction:, restitution:}. On a plane the body must be of a
 // shape whose contact with a plane tumble resolves: a sphere or shell, a round body (disk, ring,
 // torus, cylinder, tube, cone, capsule) or a polyhedron (docs/scenario.md, Contacts), or a
-// composite whose touching part is one of these. Two bodies touch at a sphere (or shell) and a
-// sphere, a capsule, a box, a cylinder, a tube, a disk, a ring, a torus or a cone (each a body's
-// shape or a composite's one such part).
+// composite whose touching parts are (each a contact of its own). Two bodies touch at a sphere (or
+// shell) and a sphere, a capsule, a box, a cylinder, a tube, a disk, a ring, a torus or a cone
+// (each a body's shape or a composite's part: each pair of parts a contact of its own).
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -110,43 +110,40 @@ bool touches_a_body(ShapeKind kind) {
          kind == ShapeKind::Cone;
 }
 
-// One of the two bodies of a `type: bodies` contact: its touching part where it is a composite
-// (-1: the body itself), its shape, and whether that is a sphere (else a capsule, a box, a
-// cylinder, a tube, a disk, a ring, a torus or a cone).
+// One of the two bodies of a `type: bodies` contact, or one of a composite's parts that touch:
+// the part (-1: the body itself), its shape, whether that is a sphere (else a capsule, a box, a
+// cylinder, a tube, a disk, a ring, a torus or a cone), and what it adds to the contact's name
+// where the composite has several (the part's).
 struct TouchingShape {
   int part = -1;
   ShapeKind kind = ShapeKind::Sphere;
+  std::string suffix;
   bool sphere() const { return is_sphere_or_shell(kind); }
 };
-TouchingShape read_touching_shape(const Reader& reader, const Field& body_field,
-                                  const BodySpec& body) {
+// The body's shape, or a composite's parts that touch another body: its sphere, shell, capsule and
+// box parts, or where it has none of those its cylinder, tube, disk, ring, torus and cone parts
+// (so that a wheel or an axle beside a sphere part leaves that sphere the part that touches).
+std::vector<TouchingShape> read_touching_shapes(const Reader& reader, const Field& body_field,
+                                                const BodySpec& body) {
   const char* what =
       "two bodies touch at a sphere (or shell) and a sphere, a capsule, a box, a cylinder, a "
-      "tube, a disk, a ring, a torus or a cone, each a body's shape (or a composite's one sphere, "
-      "shell, capsule or box part, or where it has none of those its one cylinder, tube, disk, "
-      "ring, torus or cone part)";
+      "tube, a disk, a ring, a torus or a cone, each a body's shape (or a composite's sphere, "
+      "shell, capsule or box parts, or where it has none of those its cylinder, tube, disk, "
+      "ring, torus or cone parts)";
   if (body.parts.empty()) {
-    if (touches_a_body(body.shape.kind)) return {-1, body.shape.kind};
+    if (touches_a_body(body.shape.kind)) return {{-1, body.shape.kind, ""}};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
                                          std::string(shape_name(body.shape.kind)) + "; " + what);
   }
   for (const bool first : {true, false}) {
-    TouchingShape found;
-    int count = 0;
+    std::vector<TouchingShape> found;
     for (std::size_t p = 0; p < body.parts.size(); ++p) {
       const ShapeKind kind = body.parts[p].shape.kind;
       if (first ? !touches_first(kind) : !touches_a_body(kind)) continue;
-      found = {static_cast<int>(p), kind};
-      ++count;
+      found.push_back({static_cast<int>(p), kind, part_suffix(body, static_cast<int>(p))});
     }
-    if (count == 1) return found;
-    if (count > 1) {
-      reader.fail_at_value(body_field,
-                           "body '" + body.name + "' is a composite with " + std::to_string(count) +
-                               (first ? " sphere, shell, capsule or box parts; "
-                                      : " cylinder, tube, disk, ring, torus or cone parts; ") +
-                               what + ", one such part to a body");
-    }
+    if (found.size() == 1) found.front().suffix.clear();
+    if (!found.empty()) return found;
   }
   reader.fail_at_value(body_field, "body '" + body.name +
                                        "' is a composite with no part that touches another "
@@ -177,8 +174,8 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
   }
   if (const auto f = map.find("part")) {
     reader.fail_at_key(*f,
-                       "a contact between two bodies touches at each body's one sphere part "
-                       "(no `part:` to name)");
+                       "a contact between two bodies touches at every part of each that can "
+                       "(no `part:` to name: each pair of parts is a contact, NAME_PART)");
   }
   const Field list = map.require("bodies", "[a, b]: the two bodies that touch");
   const std::vector<Field> names = reader.items(list, "of two bodies, [a, b], or a group");
@@ -189,7 +186,7 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
                           names.size()));
   }
   std::vector<std::string> bodies;
-  std::vector<TouchingShape> shapes;
+  std::vector<std::vector<TouchingShape>> shapes;
   for (const Field& name : names) {
     const std::string body = read_body_or_ground(reader, name, scenario.bodies, false);
     if (std::find(bodies.begin(), bodies.end(), body) != bodies.end()) {
@@ -197,7 +194,7 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
                            "body '" + body + "' named twice: a contact is between two bodies");
     }
     shapes.push_back(
-        read_touching_shape(reader, name, scenario.bodies[*reader.body_position(body)]));
+        read_touching_shapes(reader, name, scenario.bodies[*reader.body_position(body)]));
     bodies.push_back(body);
   }
   bool with_joined = true;
@@ -218,33 +215,50 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = a + 1; b < bodies.size(); ++b) {
       if (!with_joined && joined(scenario, bodies[a], bodies[b])) continue;
-      if (!shapes[a].sphere() && !shapes[b].sphere()) {
-        if (names.size() == 2) {
-          reader.fail_at_value(
-              list, shapes[a].kind == shapes[b].kind
-                        ? fmt::format("two {} do not touch each other yet: one of the two "
-                                      "bodies must be a sphere (or shell)",
-                                      shapes[a].kind == ShapeKind::Box
-                                          ? std::string("boxes")
-                                          : std::string(shape_name(shapes[a].kind)) + "s")
-                        : fmt::format("a {} and a {} do not touch each other yet: one of the two "
-                                      "bodies must be a sphere (or shell)",
-                                      shape_name(shapes[a].kind), shape_name(shapes[b].kind)));
+      // Each of a's touching parts against each of b's, but two of which neither is a sphere.
+      bool any = false;
+      for (const TouchingShape& shape_a : shapes[a]) {
+        for (const TouchingShape& shape_b : shapes[b]) {
+          if (!shape_a.sphere() && !shape_b.sphere()) continue;
+          any = true;
+          // The sphere is the contact's body (its columns are the sphere's): another shape named
+          // first goes second.
+          const bool swap = !shape_a.sphere();
+          const TouchingShape& first = swap ? shape_b : shape_a;
+          const TouchingShape& second = swap ? shape_a : shape_b;
+          ContactSpec pair;
+          // A group's pair is NAME_a_b, in the list's order, and a composite's part adds its name
+          // where it has several that touch (NAME_head, NAME_a_b_head); a pair of one shape each,
+          // named on its own, is NAME.
+          std::vector<std::string> suffix;
+          if (names.size() > 2) suffix = {bodies[a], bodies[b]};
+          for (const TouchingShape* shape : {&shape_a, &shape_b}) {
+            if (!shape->suffix.empty()) suffix.push_back(shape->suffix);
+          }
+          for (const std::string& piece : suffix) {
+            pair.name += (pair.name.empty() ? "" : "_") + piece;
+          }
+          pair.body = bodies[swap ? b : a];
+          pair.other_body = bodies[swap ? a : b];
+          pair.part = first.part;
+          pair.other_part = second.part;
+          pairs.push_back(std::move(pair));
         }
-        continue;  // a group's other shapes touch its spheres only
       }
-      // The sphere is the contact's body (its columns are the sphere's): another shape named first
-      // goes second.
-      const bool swap = !shapes[a].sphere();
-      const std::size_t first = swap ? b : a, second = swap ? a : b;
-      ContactSpec pair;
-      // A group's pair is NAME_a_b, in the list's order; a pair named on its own is NAME.
-      if (names.size() > 2) pair.name = bodies[a] + "_" + bodies[b];
-      pair.body = bodies[first];
-      pair.other_body = bodies[second];
-      pair.part = shapes[first].part;
-      pair.other_part = shapes[second].part;
-      pairs.push_back(std::move(pair));
+      if (!any && names.size() == 2) {
+        const ShapeKind kind_a = shapes[a].front().kind, kind_b = shapes[b].front().kind;
+        reader.fail_at_value(
+            list,
+            kind_a == kind_b
+                ? fmt::format("two {} do not touch each other yet: one of the two "
+                              "bodies must be a sphere (or shell)",
+                              kind_a == ShapeKind::Box ? std::string("boxes")
+                                                       : std::string(shape_name(kind_a)) + "s")
+                : fmt::format("a {} and a {} do not touch each other yet: one of the two "
+                              "bodies must be a sphere (or shell)",
+                              shape_name(kind_a), shape_name(kind_b)));
+      }
+      // A group's other shapes touch its spheres only.
     }
   }
   if (pairs.empty()) {

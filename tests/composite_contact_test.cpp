@@ -1,4 +1,4 @@
-// A composite body touching a plane with one of its parts (`part:`), against closed forms:
+// A composite body touching with its parts (`part:`), against closed forms:
 //  - a hammer (a rod and a sphere, parts of one body) on a hinge, turning at w0 with no gravity,
 //    strikes a frictionless anvil with its head: the head's centre is L from the hinge, so it
 //    touches where it has turned by theta = asin(h / L) (h the anvil's depth below the head's
@@ -23,9 +23,11 @@
 //  - `tumble modes` on a disk rolling upright as a composite's part, placed off the body's frame
 //    and turned in it: its wobble at the closed form's frequency (modes_contact_test.cpp's
 //    formula), to 1e-9.
-// And the reader: a composite names the touching part where it has more than one that can touch;
-// a part that cannot (a rod), a part it lacks, and `part:` on a body of one shape are refused at
-// the key.
+//  - a ball striking one of a free dumbbell's two ball parts takes the impulse's closed form
+//    (below), each of the dumbbell's balls a contact of its own with the ball.
+// And the reader: without `part:` each part that can touch is a contact of its own, NAME_PART;
+// `part:` names one or lists several; a part named twice, an empty list, a part that cannot (a
+// rod), a part it lacks, and `part:` on a body of one shape are refused at the key.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

@@ -325,10 +325,10 @@ TEST(Bounce, ImpactsNeverAddEnergyAndTheBallSettles) {
 
 TEST(ContactScenario, BadContactsAreRefusedWithWhereAndWhy) {
   const std::string head =
-      "tumble: 1\n"                                                                     // 1
-      "bodies:\n"                                                                       // 2
-      "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}\n"          // 3
-      "  pair: {position: [3, 0, 0.5], parts: [{shape: point, mass: 1, "               // 4
+      "tumble: 1\n"                                                             // 1
+      "bodies:\n"                                                               // 2
+      "  ball: {shape: sphere, radius: 0.1, mass: 1, position: [0, 0, 0.1]}\n"  // 3
+      "  pair: {position: [3, 0, 0.5], parts: [{shape: point, mass: 1, "        // 4
       "position: [-0.2, 0, 0]}, {shape: rod, length: 0.3, mass: 1, position: [0, 0.1, 0]}]}\n";
   const std::string simulate = "simulate: {duration: 1}\n";
   using test::expect_error;
@@ -336,8 +336,7 @@ TEST(ContactScenario, BadContactsAreRefusedWithWhereAndWhy) {
                    "contacts:\n  - {type: plane, body: pair, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 1]}, friction: 0.3}\n" +
                    simulate,
-               6, 25, "contacts[0].body",
-               "is a composite; none of its parts can touch a plane");
+               6, 25, "contacts[0].body", "is a composite; none of its parts can touch a plane");
   expect_error(head +
                    "contacts:\n  - {type: plane, body: ball, plane: {point: [0, 0, 0], normal: "
                    "[0, 0, 0]}, friction: 0.3}\n" +

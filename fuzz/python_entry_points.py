@@ -66,8 +66,15 @@ class TimeUp(Exception):
     KeyboardInterrupt."""
 
 
+# Whether a call is under way: the alarm stops only a call. An alarm that comes as the call
+# returns, after the handling of what it raised has begun, or as the timer is cancelled, does
+# nothing (raised there, it escaped every handler and ended the fuzzer).
+_ALARM = {"armed": False}
+
+
 def _time_up(_signum: int, _frame: Any) -> None:
-    raise TimeUp()
+    if _ALARM["armed"]:
+        raise TimeUp()
 
 
 def mutate(text: str, others: List[str], draw: random.Random) -> str:
@@ -193,10 +200,16 @@ def main() -> int:
             name, call = draw.choice(calls(text, draw, Path(scratch)))
             current.write_text(f"# {name}\n{text}", encoding="utf-8", errors="backslashreplace")
             faulthandler.dump_traceback_later(HANG_SECONDS, exit=True)
-            signal.setitimer(signal.ITIMER_REAL, CALL_SECONDS)
             outcome = "passed"
             try:
-                call()
+                try:
+                    _ALARM["armed"] = True
+                    signal.setitimer(signal.ITIMER_REAL, CALL_SECONDS)
+                    call()
+                finally:
+                    # Disarmed first: from here on, an alarm raises nothing.
+                    _ALARM["armed"] = False
+                    signal.setitimer(signal.ITIMER_REAL, 0)
             except (tumble.TumbleError, ValueError, TypeError):
                 outcome = "refused"
             except TimeUp:
@@ -209,7 +222,6 @@ def main() -> int:
                 print(f"finding in {name} (input in {kept}):", file=sys.stderr)
                 traceback.print_exc()
             finally:
-                signal.setitimer(signal.ITIMER_REAL, 0)
                 faulthandler.cancel_dump_traceback_later()
             counts[outcome] = counts.get(outcome, 0) + 1
             by_call[(name, outcome)] = by_call.get((name, outcome), 0) + 1

@@ -40,7 +40,7 @@ struct CoreClosest {
 };
 
 // The core's point nearest x_B (body axes, from the COM), of a sphere, capsule, box, cylinder,
-// disk, ring or torus surface.
+// tube, disk, ring, torus or cone surface.
 CoreClosest core_closest(const ContactSurface& surface, const Vec3& x_B);
 // The radius that sweeps the core: a sphere's or capsule's, a torus's tube's; a box's,
 // cylinder's, disk's or ring's 0; a shell's touched from inside, minus its radius.

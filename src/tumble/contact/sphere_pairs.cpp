@@ -106,9 +106,10 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
     line.turning = centres.turning;
     return line;
   }
-  // A capsule, a box, a cylinder, a disk, a ring or a torus: in its body's axes, where the nearest
-  // point slides along the feature's free directions (round a circle, at R / rho of the centre's
-  // motion), and the normal turns with what is left of the centre's relative motion.
+  // A capsule, a box, a cylinder, a tube, a disk, a ring, a torus or a cone: in its body's axes,
+  // where the nearest point slides along the feature's free directions (round the axis, at rho_p /
+  // rho of the centre's motion), and the normal turns with what is left of the centre's relative
+  // motion.
   const Vec3 x_B = b.R_WB.transpose() * (centre_W - b.r_G_W);
   const CoreClosest closest = core_closest(contact.other_surface, x_B);
   line.distance = closest.distance;

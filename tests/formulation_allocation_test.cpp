@@ -108,6 +108,10 @@ long allocations_in_steps(OdeSystem& system, const std::string& method, const Ve
   integrator->step(1.0);
   test::AllocationCounter allocations;
   for (int i = 0; i < 50 && integrator->t() < 1.0; ++i) {
+    // As the driver: the step within the system's limit (the contacts' landing bound, a broad
+    // phase's screening), and its events evaluated again where that asks for it.
+    integrator->bound_next_step(system.step_limit(integrator->t(), integrator->y()));
+    if (system.events_rescreened()) system.event_functions(integrator->t(), integrator->y(), g);
     if (integrator->step(1.0) != StepOutcome::Ok) {
       ADD_FAILURE() << method << ": a step failed at t = " << integrator->t();
       break;
@@ -232,6 +236,32 @@ TEST(NoAllocation, StepsOfBodiesInContact) {
     states[3].omega_W = Vec3(-8.0, 0.0, 0.0);
     states[3].v_G = Vec3(0.0, 8.0 * 0.15 * std::sin(alpha), 0.0);
     EXPECT_EQ(allocations_in_steps(*system, method, states), 0) << method;
+  }
+}
+
+// A group of balls in a closed box (`bodies: all`): the broad phase screens its pairs at each
+// step's start, and the steps watch only those near (contact/broad_phase.hpp).
+TEST(NoAllocation, StepsOfAGroupThroughTheBroadPhase) {
+  std::string yaml = "tumble: 1\ngravity: [0, 0, -9.81]\nbodies:\n";
+  for (int i = 0; i < 8; ++i) {
+    yaml += "  b" + std::to_string(i) + ": {shape: sphere, radius: 0.05, mass: 0.1, position: [" +
+            std::to_string(-0.3 + 0.2 * (i % 4)) + ", " + std::to_string(-0.1 + 0.2 * (i / 4)) +
+            ", " + std::to_string(0.1 + 0.03 * i) + "], velocity: [" +
+            std::to_string(0.5 - 0.13 * i) + ", 0.3, 0]}\n";
+  }
+  yaml +=
+      "  floor: {shape: box, size: [1, 1, 0.1], mass: 9, position: [0, 0, -0.05]}\n"
+      "  wall: {shape: box, size: [0.1, 1, 0.5], mass: 9, position: [0.45, 0, 0.25]}\n"
+      "joints:\n"
+      "  f1: {type: fixed, bodies: [ground, floor], at: [0, 0, 0]}\n"
+      "  f2: {type: fixed, bodies: [ground, wall], at: [0, 0, 0]}\n"
+      "contacts:\n"
+      "  - {name: hit, type: bodies, bodies: all, friction: 0.5, restitution: 0.5}\n"
+      "simulate: {duration: 1}\n";
+  const Scenario scenario = load_scenario_text(yaml, "group.yaml", {});
+  for (const std::string method : {"dopri5", "dop853", "rk4"}) {
+    PreparedSimulation run = prepare_simulation(scenario);
+    EXPECT_EQ(allocations_in_steps(*run.formulation, method, run.y0), 0) << method;
   }
 }
 

@@ -4,19 +4,38 @@
 
 namespace tumble {
 
-ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension) {
+ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension)
+    : screen(contacts) {
   std::size_t most_vertices = 0;
   for (const PlaneContact& contact : contacts) {
     most_vertices = std::max(most_vertices, contact.surface.vertices.size());
   }
   touching.reserve(most_vertices);
   reserve_feature(landing.feature, most_vertices);
-  // Rows per contact at most: a face's six; a held polyhedron's three at each of three points.
-  constexpr std::size_t kMostRows = 9;
   now.resize(contacts.size());
-  unknowns.resize(kMostRows * contacts.size());
-  wrenches.resize(kMostRows * contacts.size());
-  const auto rows = static_cast<Eigen::Index>(kMostRows * contacts.size());
+  // Rows per contact at most: a face's six; a held polyhedron's three at each of three points; a
+  // pair's three. A group's pairs cannot all touch at once: room for kPairsPerBody of them per
+  // body of the group (twice the six neighbours a ball has in a random close packing), and more
+  // only where more touch.
+  constexpr std::size_t kMostRows = 9;
+  constexpr std::size_t kPairRows = 3;
+  constexpr std::size_t kPairsPerBody = 6;
+  const std::size_t screened = static_cast<std::size_t>(
+      std::count_if(contacts.begin(), contacts.end(),
+                    [](const PlaneContact& contact) { return contact.screened; }));
+  const std::size_t pairs = std::min(screened, kPairsPerBody * screen.bodies().size());
+  reserve_rows(kMostRows * (contacts.size() - screened) + kPairRows * pairs);
+  impact_y.resize(dimension);
+  held_in_impact.assign(contacts.size(), 0);
+  onset_y.resize(dimension);
+  onset_dydt.resize(dimension);
+  boxes.resize(screen.bodies().size());
+}
+
+void ContactData::reserve_rows(std::size_t count) {
+  unknowns.resize(count);
+  wrenches.resize(count + 2 * now.size());
+  const auto rows = static_cast<Eigen::Index>(count);
   matrix.resize(rows, rows);
   rhs.resize(rows);
   x.resize(rows);
@@ -24,10 +43,6 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
   row_scales.resize(rows);
   saved_matrix.resize(rows, rows);
   saved_rhs.resize(rows);
-  impact_y.resize(dimension);
-  held_in_impact.assign(contacts.size(), 0);
-  onset_y.resize(dimension);
-  onset_dydt.resize(dimension);
 }
 
 }  // namespace tumble

@@ -4,9 +4,11 @@
 // once for the model's contacts so that nothing is allocated in a step. It holds nothing a run
 // needs to go on (that is y and the ContactState): any evaluation overwrites it. One per run.
 #include <array>
+#include <limits>
 #include <span>
 #include <vector>
 
+#include "tumble/contact/broad_phase.hpp"
 #include "tumble/contact/contact_dynamics.hpp"
 #include "tumble/contact/contact_status.hpp"
 #include "tumble/contact/plane_contact.hpp"
@@ -92,21 +94,29 @@ struct ContactData {
   // Sized for these contacts and a state of `dimension` numbers.
   ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension);
 
+  // Room for this many rows, and what goes with them; more allocates (reserve_rows).
+  void reserve_rows(std::size_t rows);
+  std::size_t row_room() const { return unknowns.size(); }
+
   std::vector<ContactNow> now;           // per contact
-  std::vector<ContactUnknown> unknowns;  // sized to the most rows per contact
+  std::vector<ContactUnknown> unknowns;  // sized to the most rows that may touch at once
   MatX matrix;                           // the rows' response to the unknowns
   VecX rhs, x;
   ConstraintSolveScratch solve_scratch;  // for rows that joints or other contacts make redundant
   VecX row_scales;                       // per row, for those: normal rows carry the load first
   MatX saved_matrix;                     // the rows before a solve, and its right-hand side, for
   VecX saved_rhs;                        // the second solve of redundant rows
-  std::vector<BodyWrench> wrenches;      // as many: forces or impulses on bodies
+  std::vector<BodyWrench> wrenches;      // as many, and two per contact: forces or impulses
   std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                         // impact()'s
   // Per contact, a pair's impulse (sphere_pairs.cpp): whether a touching plane is held in it.
   std::vector<char> held_in_impact;
   ContactStatus landing;     // impact()'s: the part it lands on, reserved for the most vertices
   VecX onset_y, onset_dydt;  // turn_starting_slip()'s
+  // The broad phase's: which contacts a step watches, and its bodies' boxes (broad_phase.hpp).
+  PairScreen screen;
+  std::vector<AlignedBox> boxes;
+  bool rescreened = false;  // the last screening changed the watched contacts
   // The time of the state being evaluated: a starting slip's direction turns with it.
   double time_now = 0.0;
 };

@@ -96,7 +96,8 @@ class ContactDynamics {
   // Every body's kinetic energy at the state last evaluated, J.
   virtual double kinetic_energy() const = 0;
   // The work ledger (J): where it starts in y, and the entry of a contact's forces and impulses
-  // in it (a ledger's rates are kept in the same order).
+  // in it (a ledger's rates are kept in the same order); the contacts' entries are consecutive,
+  // in the contacts' order.
   virtual Eigen::Index ledger_start() const = 0;
   virtual Eigen::Index work_entry(std::size_t contact) const = 0;
 

@@ -42,9 +42,10 @@ constexpr double kNormalRowScale = 1e3;
 ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
                              std::span<const RigidBody> bodies, const Vec3& gravity_W,
                              const ContactDynamics& dynamics, ContactState& state,
-                             Eigen::Index dimension)
+                             Eigen::Index dimension, double fixed_step)
     : contacts_(contacts),
       bodies_(bodies),
+      fixed_step_(fixed_step),
       gravity_W_(gravity_W),
       dynamics_(dynamics),
       data_(std::make_unique<ContactData>(contacts, dimension)),
@@ -91,7 +92,7 @@ PairView ContactSystem::view(std::size_t c) const {
 }
 
 void ContactSystem::calc_contact_points() const {
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     const PlaneContact& contact = contacts_[c];
     if (contact.touches_a_body()) {
       calc_pair_point(c);
@@ -197,6 +198,7 @@ void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> h
     const ContactNow& now = d_.now[c];
     ContactHold& hold = holds[c];
     hold = ContactHold{};
+    if (d_.screen.far(c)) continue;  // apart, its points not found
     // Two bodies touching: a sphere's or a shell's pair is held at its one point as a plane's
     // is (modes/modal_pair.hpp); the Jacobian leaves a capsule's, a box's, a cylinder's or a
     // disk's out, which costs Newton a little (more iterations), not the answer (the run's own
@@ -274,6 +276,12 @@ Vec3 ContactSystem::moving_point_acceleration_W(const BodyMotion& w, const Vec3&
 Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode mode,
                                                     ContactRows rows, const Vec3& slide_W,
                                                     Eigen::Index count) const {
+  // A group's pairs have room for as many as may touch at once in a close packing
+  // (contact_data.cpp); more touching grows it, the one allocation a step may make.
+  constexpr std::size_t kMostRows = 9;
+  if (mode != ContactMode::Apart && static_cast<std::size_t>(count) + kMostRows > d_.row_room()) {
+    d_.reserve_rows(2 * d_.row_room() + kMostRows);
+  }
   if (contacts_[c].touches_a_body()) return append_pair_unknowns(c, mode, rows, slide_W, count);
   const PlaneContact& contact = contacts_[c];
   const ContactNow& now = d_.now[c];
@@ -396,7 +404,7 @@ Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode m
 
 Eigen::Index ContactSystem::gather_contact_unknowns(ContactRows rows) const {
   Eigen::Index count = 0;
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     const ContactMode mode = s_.contacts[c].mode;
     const Vec3 slide = mode == ContactMode::Sliding && rows == ContactRows::Motion
                            ? slide_direction(c)
@@ -492,7 +500,7 @@ void ContactSystem::solve_forces() const {
   solve_contact_system(count, d_.rhs, RowQuantity::Acceleration);
   set_contact_resultants(count, d_.rhs);
   std::size_t wrench_count = 0;
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     d_.wrenches[wrench_count++] = {contacts_[c].body, d_.now[c].wrench_B};
     if (contacts_[c].touches_a_body()) {
       d_.wrenches[wrench_count++] = {contacts_[c].other_body, d_.now[c].other_wrench_B};
@@ -518,7 +526,10 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
   // The zero of what the rows measure: the largest of the contacts' (their scales are state,
   // fixed at the run's start).
   double zero = 0.0;
-  for (const ContactStatus& s : s_.contacts) {
+  for (const std::size_t c : watched()) {
+    const ContactStatus& s = s_.contacts[c];
+    // Not a group's pairs apart: which of them the broad phase watches must not change a solve.
+    if (contacts_[c].screened && s.mode == ContactMode::Apart) continue;
     zero = std::max(zero, rows == RowQuantity::Position   ? s.touching_height
                           : rows == RowQuantity::Velocity ? s.slip_zero
                                                           : s.slip_zero / s.time_scale);
@@ -553,7 +564,9 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
 }
 
 void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) const {
-  for (ContactNow& now : d_.now) {
+  // A far pair's were zeroed when it was last watched (apart).
+  for (const std::size_t c : watched()) {
+    ContactNow& now = d_.now[c];
     now.wrench_B.setZero();
     now.other_wrench_B.setZero();
     now.end_normal_force = {0.0, 0.0};
@@ -572,7 +585,7 @@ void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) co
       now.end_friction_W[k] += x(j) * (F_W - n * n.dot(F_W));
     }
   }
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     ContactNow& now = d_.now[c];
     const Vec3& n = normal_of(c);
     const Mat3& R = dynamics_.motion(contacts_[c].body).R_WB;
@@ -594,7 +607,8 @@ void ContactSystem::set_contact_resultants(Eigen::Index count, const VecX& x) co
       now.least_point_B = u.point_B;
     }
   }
-  for (ContactNow& now : d_.now) {
+  for (const std::size_t c : watched()) {
+    ContactNow& now = d_.now[c];
     if (now.least_point_force == std::numeric_limits<double>::infinity()) {
       now.least_point_force = now.normal_force;
     }
@@ -621,7 +635,12 @@ void ContactSystem::apply_contact_impulses(Eigen::Index count, const VecX& impul
 }
 
 void ContactSystem::write_powers(VecX& rates, Eigen::Index offset) const {
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  // A far pair does no work (its ledger entry holds): every entry zero, then the watched ones'.
+  if (watched().size() < contacts_.size()) {
+    rates.segment(offset + dynamics_.work_entry(0), static_cast<Eigen::Index>(contacts_.size()))
+        .setZero();
+  }
+  for (const std::size_t c : watched()) {
     const BodyMotion w = dynamics_.motion(contacts_[c].body);
     double power = d_.now[c].wrench_B.dot(w.velocity);
     if (contacts_[c].touches_a_body()) {
@@ -666,15 +685,12 @@ void ContactSystem::project_feature_positions(VecX& y) const {
 
 void ContactSystem::project(double t, VecX& y) const {
   dynamics_.normalise(t, y);
-  const bool touching =
-      std::any_of(s_.contacts.begin(), s_.contacts.end(),
-                  [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
-  if (!touching) return;
+  if (!any_touching()) return;
   // A sphere's point, or a disk's, ring's or cylinder's rim point, is its support point: moving
   // a free body along the normal puts it back. A polyhedron, a cone, a side or a face has more,
   // and a body a joint holds moves only as its joints let it: the least move in the mass metric.
   bool features = false;
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     if (s_.contacts[c].mode == ContactMode::Apart) continue;
     features |= contacts_[c].touches_a_body() || !pairs_[c]->projects_along_normal(view(c)) ||
                 !dynamics_.moves_freely(contacts_[c].body);
@@ -687,7 +703,7 @@ void ContactSystem::project(double t, VecX& y) const {
     // Positions: each touching body back onto its plane along the normal (its COM): one point's
     // height is all a curved surface's contact constrains.
     dynamics_.calc_motion(y, false);
-    for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    for (const std::size_t c : watched()) {
       if (s_.contacts[c].mode == ContactMode::Apart) continue;
       const PlaneContact& contact = contacts_[c];
       const double height = pairs_[c]->point_height(view(c));

@@ -167,16 +167,15 @@ double ContactSystem::landing_watch(std::size_t c, Vec3& landing_B) const {
 
 void ContactSystem::event_functions(double t, const VecX& y, VecX& g) const {
   d_.time_now = t;
-  const bool touching =
-      std::any_of(s_.contacts.begin(), s_.contacts.end(),
-                  [](const ContactStatus& s) { return s.mode != ContactMode::Apart; });
-  if (touching) {
+  if (any_touching()) {
     calc_accelerations(y);
   } else {
     dynamics_.calc_motion(y, true);
     calc_contact_points();
   }
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  // A far pair's (broad_phase.hpp) hold at 1: it cannot touch within the step.
+  if (watched().size() < contacts_.size()) g.setOnes();
+  for (const std::size_t c : watched()) {
     const auto base = static_cast<Eigen::Index>(3 * c);
     const ContactNow& now = d_.now[c];
     const ContactStatus& status = s_.contacts[c];
@@ -264,7 +263,7 @@ void ContactSystem::pin_or_push_end(std::size_t c, int end, const VecX& y) {
 bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
   d_.time_now = t;
   bool refresh = false;
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     const ContactStatus& s = s_.contacts[c];
     refresh |= s.mode == ContactMode::Sliding || pairs_[c]->follows_direction(view(c));
   }
@@ -274,7 +273,7 @@ bool ContactSystem::refresh_event_functions(double t, const VecX& y) {
   // body's rim point leans towards where it was (round_contact.hpp): that is kept up with it.
   dynamics_.calc_motion(y, true);
   calc_contact_points();
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     ContactStatus& status = s_.contacts[c];
     const double slip = d_.now[c].slip_W.norm();
     if (status.mode == ContactMode::Sliding &&
@@ -675,7 +674,7 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
 }
 
 void ContactSystem::release_contacts_sent_away(std::size_t landed, double t, VecX& y) {
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     if (c == landed || s_.contacts[c].mode == ContactMode::Apart) continue;
     if (still_touches_after_jump(c, y)) continue;
     set_apart(c);
@@ -821,11 +820,12 @@ void ContactSystem::release_pulling_contacts(std::size_t handled, double t, VecX
   for (std::size_t round = 0; round < contacts_.size(); ++round) {
     calc_accelerations(y);
     std::size_t pulling = contacts_.size();
-    for (std::size_t c = 0; c < contacts_.size() && pulling == contacts_.size(); ++c) {
+    for (const std::size_t c : watched()) {
       if (c == handled || s_.contacts[c].mode == ContactMode::Apart) continue;
       const double N = held_polyhedron_[c] ? d_.now[c].least_point_force : d_.now[c].normal_force;
       if (-N > kSlipZero * bodies_[contacts_[c].body].mass * std::max(gravity_W_.norm(), 1.0)) {
         pulling = c;
+        break;
       }
     }
     if (pulling == contacts_.size()) return;
@@ -850,6 +850,7 @@ ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,
 }
 
 std::optional<ContactSystem::StartProblem> ContactSystem::start_problem(const VecX& y0) const {
+  d_.screen.watch_all();  // every pair checked
   dynamics_.calc_motion(y0, true);
   calc_contact_points();
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
@@ -880,6 +881,7 @@ void ContactSystem::begin(double t0, const VecX& y) {
   s_.events.clear();
   s_.last_event_t = -std::numeric_limits<double>::infinity();
   if (contacts_.empty()) return;
+  d_.screen.watch_all();  // a run's start sees every pair, whatever the run before it screened
   dynamics_.calc_motion(y, true);  // the bodies' states set the scales
   VecX y_start = y;                // classifying may project it; the run starts from y itself
   d_.impact_y.resize(y.size());
@@ -934,7 +936,7 @@ void ContactSystem::reclassify(double t, VecX& y, bool speeds_jumped) {
 
 void ContactSystem::classify_touching(double t, VecX& y, bool speeds_jumped,
                                       const char* lifts_off) {
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     if (s_.contacts[c].mode == ContactMode::Apart) continue;
     if (speeds_jumped && !still_touches_after_jump(c, y)) {
       set_apart(c);

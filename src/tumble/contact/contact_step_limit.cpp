@@ -23,13 +23,17 @@ constexpr double kTurningMargin = 2.0;
 
 double ContactSystem::step_limit(double t, const VecX& y) const {
   double limit = std::numeric_limits<double>::infinity();
+  d_.rescreened = false;
   const bool any_apart =
       std::any_of(s_.contacts.begin(), s_.contacts.end(),
                   [](const ContactStatus& s) { return s.mode == ContactMode::Apart; });
   if (!any_apart) return limit;
   d_.time_now = t;
   calc_accelerations(y);  // for how fast the points' normal velocities turn
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  // The broad phase: which of a group's pairs this step watches, and how long it may be for the
+  // others to stay apart through it.
+  limit = std::min(limit, screen_pairs());
+  for (const std::size_t c : watched()) {
     if (s_.contacts[c].mode != ContactMode::Apart) continue;
     const PlaneContact& contact = contacts_[c];
     if (contact.touches_a_body()) {

@@ -38,15 +38,28 @@ class ContactSystem {
  public:
   // The contacts of `bodies` (gravity_W m/s^2), moved by `dynamics`, whose state y has
   // `dimension` numbers; its modes and records are kept in `state`. Both references must
-  // outlive this object.
+  // outlive this object. `fixed_step`: the step a fixed-step method takes whatever step_limit
+  // says (Model::fixed_step; 0 for an adaptive method).
   ContactSystem(std::span<const PlaneContact> contacts, std::span<const RigidBody> bodies,
                 const Vec3& gravity_W, const ContactDynamics& dynamics, ContactState& state,
-                Eigen::Index dimension);
+                Eigen::Index dimension, double fixed_step = 0.0);
 
   bool empty() const { return contacts_.empty(); }
   std::size_t size() const { return contacts_.size(); }
   // What was found for contact c at the state last evaluated, and its status.
   const ContactNow& now(std::size_t c) const { return d_.now[c]; }
+  // As now(c) for a row of output, after the dynamics' calc_motion and a solve: a pair the broad
+  // phase left far has its points found too (its slip; it is apart, with no force).
+  const ContactNow& row_now(std::size_t c) const {
+    if (d_.screen.far(c)) {
+      calc_pair_point(c);
+      ContactNow& now = d_.now[c];
+      now.force_W.setZero();
+      now.normal_force = 0.0;
+      now.friction_W.setZero();
+    }
+    return d_.now[c];
+  }
   const ContactStatus& status(std::size_t c) const { return s_.contacts[c]; }
 
   // The time of the state about to be evaluated (a starting slip's direction turns with it).
@@ -88,6 +101,9 @@ class ContactSystem {
   // While a contact is apart: no step so long that a point of its surface could dip through the
   // plane and back unseen (landing_bound.hpp).
   double step_limit(double t, const VecX& y) const;
+  // Whether the last step_limit changed which contacts are watched (the broad phase): their
+  // event functions' values at the step's start are then to be evaluated again.
+  bool events_rescreened() const { return d_.rescreened; }
   // How each contact holds its body at (t, y) in its current mode, into `holds` (one per
   // contact): what the Jacobian of the run's equations takes of it.
   void calc_holds(double t, const VecX& y, std::span<ContactHold> holds) const;
@@ -98,6 +114,15 @@ class ContactSystem {
   // solve_forces (the dynamics are asked, never re-entered).
   void calc_accelerations(const VecX& y) const;
   void calc_rates(double t, const VecX& y, VecX& dydt) const;
+  // The contacts a step watches, in order: all but a group's pairs the broad phase found far
+  // (broad_phase.hpp), whose points no evaluation finds and whose event functions hold at 1.
+  std::span<const std::size_t> watched() const { return d_.screen.watched(); }
+  bool any_touching() const;
+  // The broad phase, from the bodies' motion after a solve: each group's pair near enough to
+  // touch before the step's end is watched (its points found), the others are far. Returns the
+  // horizon: no step may be longer, for the far pairs to stay apart through it. +infinity where
+  // no pair is screened, or no body of a group moves.
+  double screen_pairs() const;
   // Contact c as its pair (contact_pair.hpp) sees it.
   PairView view(std::size_t contact) const;
   // Contact points, reference points and their velocities, after the dynamics' calc_motion.
@@ -332,6 +357,7 @@ class ContactSystem {
   std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run
   std::vector<const ContactPair*> pairs_;   // per contact: its pair, from contact_pair()'s table
   std::span<const RigidBody> bodies_;
+  double fixed_step_ = 0.0;  // s, a fixed-step method's (the broad phase screens that long)
   Vec3 gravity_W_;
   const ContactDynamics& dynamics_;
   // Per contact: a polyhedron on a body a joint holds. Its rows are its feature's points, each

@@ -61,6 +61,9 @@ struct PlaneContact {
   std::size_t other_body = kNoOtherBody;
   ContactSurface other_surface;
   bool touches_a_body() const { return other_body != kNoOtherBody; }
+  // A pair of a group, which the broad phase watches only while its two bodies come near
+  // (broad_phase.hpp); a pair named on its own is always watched.
+  bool screened = false;
   Vec3 point_W = Vec3::Zero();    // a point of the plane, m
   Vec3 normal_W = Vec3::UnitZ();  // unit, out of the plane towards the body
   double friction = 0.0;          // Coulomb mu, >= 0

@@ -347,7 +347,7 @@ void ContactSystem::enter_pressed_pairs(double t, VecX& y) {
   if (std::none_of(contacts_.begin(), contacts_.end(), is_pair)) return;
   // One solve for them all, and another after each pair that enters (its force moves the rest).
   calc_accelerations(y);
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  for (const std::size_t c : watched()) {
     const ContactStatus& status = s_.contacts[c];
     if (!contacts_[c].touches_a_body() || status.mode != ContactMode::Apart) continue;
     const ContactNow& now = d_.now[c];
@@ -373,7 +373,7 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
     // The touching pair that approaches fastest (the first in the file among equals).
     std::size_t fastest = contacts_.size();
     double fastest_approach = 0.0;
-    for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    for (const std::size_t c : watched()) {
       if (!contacts_[c].touches_a_body()) continue;
       const ContactNow& now = d_.now[c];
       const ContactStatus& s = s_.contacts[c];
@@ -406,7 +406,7 @@ bool ContactSystem::hold_planes_driven_in(std::size_t c) {
   dynamics_.calc_motion(d_.impact_y, true);
   calc_contact_points();
   bool more = false;
-  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+  for (const std::size_t k : watched()) {
     const ContactStatus& status = s_.contacts[k];
     const PlaneContact& contact = contacts_[k];
     if (d_.held_in_impact[k] != 0 || contact.touches_a_body() ||
@@ -442,7 +442,7 @@ Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool fr
     calc_contact_points();
     const auto solve = [&](ContactMode mode, ContactRows rows, const Vec3& slide_W) {
       Eigen::Index count = append_contact_unknowns(c, mode, rows, slide_W, 0);
-      for (std::size_t k = 0; k < contacts_.size(); ++k) {
+      for (const std::size_t k : watched()) {
         if (d_.held_in_impact[k] == 0) continue;
         count = append_contact_unknowns(k, ContactMode::Sliding, ContactRows::Projection,
                                         Vec3::Zero(), count);
@@ -475,7 +475,7 @@ Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool fr
     }
     impulse_W = d_.now[c].force_W;  // the impulse, as a force would be
     bool changed = false;
-    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    for (const std::size_t k : watched()) {
       if (d_.held_in_impact[k] != 0 && d_.now[k].normal_force < 0.0) {
         d_.held_in_impact[k] = 0;  // it would pull: the body leaves that plane
         changed = true;

@@ -36,6 +36,9 @@ struct Model {
   std::vector<ImpulseLoad> impulses;
   std::vector<JointModel> joints;
   std::vector<PlaneContact> contacts;
+  // The step a fixed-step method takes (s), which keeps it whatever the contacts' step limit;
+  // 0 for an adaptive method, which keeps within it. The broad phase screens a step this long.
+  double fixed_step = 0.0;
 
   // Only free bodies under gravity and one-body loads: the free-body formulations run it.
   bool bodies_are_free() const;

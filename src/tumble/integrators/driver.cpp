@@ -158,6 +158,9 @@ void drive(Integrator& integrator, OdeSystem& system, DriverPosition& position, 
     }
     const double t_stop = std::min(t_end, system.next_breakpoint(integrator.t()));
     integrator.bound_next_step(system.step_limit(integrator.t(), integrator.y()));
+    if (event_count > 0 && system.events_rescreened()) {
+      system.event_functions(integrator.t(), integrator.y(), g_before);
+    }
     const StepOutcome outcome = integrator.step(t_stop);
     if (outcome != StepOutcome::Ok) {
       report.failure =

@@ -93,6 +93,10 @@ class OdeSystem {
   // could not see from the ends of a longer step (a dip through zero and back) is kept out of
   // it. Adaptive methods honour it; fixed-step methods keep their step.
   virtual double step_limit(double t, const VecX& y) const;
+  // Whether the last step_limit changed which event functions the system watches (a broad
+  // phase's screening: one it no longer watches holds a constant, one it watches again has had
+  // that constant): the driver then evaluates them at the step's start again.
+  virtual bool events_rescreened() const { return false; }
 
   // The first time strictly after t at which f is discontinuous (a force switching on, an
   // impulse, a lock), or +infinity. The driver lands a step exactly on it, calls at_breakpoint

@@ -102,7 +102,7 @@ ArticulatedFormulation::ArticulatedFormulation(std::shared_ptr<const Articulated
       s_(hybrid_),
       contact_bodies_(*this),
       contacts_(model_.contacts, model_.bodies, model_.gravity_W, contact_bodies_, s_.contact,
-                m_.dimension),
+                m_.dimension, model_.fixed_step),
       loops_(model_, contact_bodies_) {}
 
 ArticulatedFormulation::ArticulatedFormulation(Model model)
@@ -486,7 +486,7 @@ void ArticulatedFormulation::calc_row_extras(double t, const VecX& y, RowExtras&
   }
   extras.contacts.resize(model_.contacts.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const ContactNow& now = contacts_.now(c);
+    const ContactNow& now = contacts_.row_now(c);
     ContactOutput& out = extras.contacts[c];
     out.mode = static_cast<int>(contacts_.status(c).mode);
     out.normal_force = now.normal_force;

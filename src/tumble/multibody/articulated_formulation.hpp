@@ -95,6 +95,7 @@ class ArticulatedFormulation final : public Formulation {
   // While a contact is apart: no step so long that a point of its surface could dip through the
   // plane and back unseen (contact/landing_bound.hpp).
   double step_limit(double t, const VecX& y) const override;
+  bool events_rescreened() const override { return contacts_.events_rescreened(); }
   std::optional<StartProblem> start_problem(const VecX& y0) const override;
 
   // The work ledger's entries are held to atol in units of what the system's energy changes by

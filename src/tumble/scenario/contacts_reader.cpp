@@ -158,6 +158,21 @@ bool joined(const Scenario& scenario, const std::string& a, const std::string& b
   });
 }
 
+// Whether the body is welded to ground (a fixed obstacle: a bin's wall, a step).
+bool welded_to_ground(const Scenario& scenario, const std::string& body) {
+  return std::any_of(scenario.joints.begin(), scenario.joints.end(), [&](const JointSpec& j) {
+    return j.type == JointType::Fixed && (j.body_a == kGroundName || j.body_b == kGroundName) &&
+           (j.body_a == body || j.body_b == body);
+  });
+}
+
+// Whether the body, or one of a composite's parts, has a shape that touches another body's.
+bool can_touch_a_body(const BodySpec& body) {
+  if (body.parts.empty()) return touches_a_body(body.shape.kind);
+  return std::any_of(body.parts.begin(), body.parts.end(),
+                     [](const PartSpec& part) { return touches_a_body(part.shape.kind); });
+}
+
 // `bodies: [a, b]`: two different bodies (not ground: a fixed surface is a plane's contact); or
 // a group, `bodies: [a, b, c, ...]`: every pair of it, in the list's order (a-b, a-c, ..., b-c,
 // ...), but those a joint joins to each other unless `joined: true`. Each pair into `pairs`
@@ -177,29 +192,46 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
                        "a contact between two bodies touches at every part of each that can "
                        "(no `part:` to name: each pair of parts is a contact, NAME_PART)");
   }
-  const Field list = map.require("bodies", "[a, b]: the two bodies that touch");
-  const std::vector<Field> names = reader.items(list, "of two bodies, [a, b], or a group");
-  if (names.size() < 2) {
-    reader.fail_at_value(
-        list, fmt::format("a contact between bodies names two, [a, b] (or a group of more, every "
-                          "pair of which may touch); got {}",
-                          names.size()));
-  }
+  const Field list = map.require("bodies", "[a, b]: the two bodies that touch (or all)");
   std::vector<std::string> bodies;
   std::vector<std::vector<TouchingShape>> shapes;
-  for (const Field& name : names) {
-    const std::string body = read_body_or_ground(reader, name, scenario.bodies, false);
-    if (std::find(bodies.begin(), bodies.end(), body) != bodies.end()) {
-      reader.fail_at_value(name,
-                           "body '" + body + "' named twice: a contact is between two bodies");
+  // `all`: every body with a shape that touches another body's, in `bodies:` order, but two
+  // obstacles welded to ground (which never move).
+  const bool all = list.node.IsScalar() && list.node.Scalar() == "all";
+  if (all) {
+    for (const BodySpec& body : scenario.bodies) {
+      if (!can_touch_a_body(body)) continue;
+      shapes.push_back(read_touching_shapes(reader, list, body));
+      bodies.push_back(body.name);
     }
-    shapes.push_back(
-        read_touching_shapes(reader, name, scenario.bodies[*reader.body_position(body)]));
-    bodies.push_back(body);
+    if (bodies.size() < 2) {
+      reader.fail_at_value(list, fmt::format("`all` finds {} bod{} whose shape touches another "
+                                             "body's; a contact between bodies needs two",
+                                             bodies.size(), bodies.size() == 1 ? "y" : "ies"));
+    }
+  } else {
+    const std::vector<Field> names = reader.items(list, "of two bodies, [a, b], a group, or all");
+    if (names.size() < 2) {
+      reader.fail_at_value(
+          list, fmt::format("a contact between bodies names two, [a, b] (or a group of more, "
+                            "every pair of which may touch, or all); got {}",
+                            names.size()));
+    }
+    for (const Field& name : names) {
+      const std::string body = read_body_or_ground(reader, name, scenario.bodies, false);
+      if (std::find(bodies.begin(), bodies.end(), body) != bodies.end()) {
+        reader.fail_at_value(name,
+                             "body '" + body + "' named twice: a contact is between two bodies");
+      }
+      shapes.push_back(
+          read_touching_shapes(reader, name, scenario.bodies[*reader.body_position(body)]));
+      bodies.push_back(body);
+    }
   }
+  const bool group = all || bodies.size() > 2;
   bool with_joined = true;
   if (const auto f = map.find("joined")) {
-    if (names.size() == 2) {
+    if (!group) {
       reader.fail_at_key(*f,
                          "`joined:` is for a group of more than two bodies (a pair named on "
                          "its own touches whatever joins it)");
@@ -210,11 +242,14 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
     }
     with_joined = text == "true";
   } else {
-    with_joined = names.size() == 2;
+    with_joined = !group;
   }
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = a + 1; b < bodies.size(); ++b) {
       if (!with_joined && joined(scenario, bodies[a], bodies[b])) continue;
+      if (all && welded_to_ground(scenario, bodies[a]) && welded_to_ground(scenario, bodies[b])) {
+        continue;
+      }
       // Each of a's touching parts against each of b's, but two of which neither is a sphere.
       bool any = false;
       for (const TouchingShape& shape_a : shapes[a]) {
@@ -231,7 +266,7 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
           // where it has several that touch (NAME_head, NAME_a_b_head); a pair of one shape each,
           // named on its own, is NAME.
           std::vector<std::string> suffix;
-          if (names.size() > 2) suffix = {bodies[a], bodies[b]};
+          if (group) suffix = {bodies[a], bodies[b]};
           for (const TouchingShape* shape : {&shape_a, &shape_b}) {
             if (!shape->suffix.empty()) suffix.push_back(shape->suffix);
           }
@@ -242,10 +277,11 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
           pair.other_body = bodies[swap ? a : b];
           pair.part = first.part;
           pair.other_part = second.part;
+          pair.screened = group;
           pairs.push_back(std::move(pair));
         }
       }
-      if (!any && names.size() == 2) {
+      if (!any && !group) {
         const ShapeKind kind_a = shapes[a].front().kind, kind_b = shapes[b].front().kind;
         reader.fail_at_value(
             list,
@@ -262,9 +298,12 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
     }
   }
   if (pairs.empty()) {
-    reader.fail_at_value(list,
-                         "a joint joins every pair of this group to each other; add "
-                         "`joined: true` to let them touch");
+    reader.fail_at_value(
+        list, with_joined ? std::string("no pair of this group can touch: two bodies touch "
+                                        "where one of them is a sphere (or shell)")
+                          : std::string("no pair of this group can touch: a joint joins every "
+                                        "pair that has a sphere (or shell); add "
+                                        "`joined: true` to let them touch"));
   }
 }
 
@@ -436,7 +475,8 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
     // plane, one of each part that touches where it has several (floor_head, floor_handle). Any
     // other contact's name is claimed before the rest of it is read.
     const auto listed = map.find("bodies");
-    const bool group = listed && listed->node.IsSequence() && listed->node.size() > 2;
+    const bool group = listed && ((listed->node.IsSequence() && listed->node.size() > 2) ||
+                                  (listed->node.IsScalar() && listed->node.Scalar() == "all"));
     if (!group) heads.claim(reader, named_at, name, "contact", where);
     for (ContactSpec& contact : read_contact(reader, map, scenario)) {
       const bool one_of_several = !contact.name.empty();  // read_contact's suffix

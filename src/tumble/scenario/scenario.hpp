@@ -173,6 +173,9 @@ struct ContactSpec {
   // touches (-1: the body is that sphere). The plane's point and normal are then unused.
   std::string other_body;
   int other_part = -1;
+  // A pair of a group (`bodies:` naming more than two, or `all`): the broad phase watches it only
+  // while the two come near (docs/design.md, "Broad phase").
+  bool screened = false;
   SourceLocation where;
 };
 

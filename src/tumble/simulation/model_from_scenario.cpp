@@ -227,6 +227,9 @@ TorsionalSpring torsional_spring_model(const Scenario& scenario, const BodyNumbe
 Model build_model(const Scenario& scenario) {
   Model model;
   model.gravity_W = scenario.gravity_W;
+  if (scenario.simulate.integrator == "rk4" || scenario.simulate.integrator == "rkmk4") {
+    model.fixed_step = scenario.simulate.step;
+  }
   for (const BodySpec& body : scenario.bodies) {
     model.bodies.push_back(RigidBody::make(body.name, body.mass_properties.mass,
                                            body.mass_properties.inertia_about_com));
@@ -286,6 +289,7 @@ Model build_model(const Scenario& scenario) {
                       : part_contact_surface(body, body.parts[static_cast<std::size_t>(spec.part)]);
     if (!spec.other_body.empty()) {
       contact.other_body = static_cast<std::size_t>(body_number(spec.other_body));
+      contact.screened = spec.screened;
       const BodySpec& other = scenario.bodies[contact.other_body];
       contact.other_surface =
           spec.other_part < 0

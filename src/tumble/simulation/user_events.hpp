@@ -58,6 +58,7 @@ class UserEventSystem final : public OdeSystem {
   bool refresh_event_functions(double t, const VecX& y) override {
     return formulation_->refresh_event_functions(t, y);
   }
+  bool events_rescreened() const override { return formulation_->events_rescreened(); }
   double step_limit(double t, const VecX& y) const override {
     return formulation_->step_limit(t, y);
   }

@@ -12,11 +12,13 @@
 #include <set>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "scenario_run.hpp"
 #include "tumble/contact/broad_phase.hpp"
+#include "tumble/output/columns.hpp"
 #include "tumble/simulation/simulation.hpp"
 
 namespace tumble {
@@ -144,16 +146,19 @@ double least_gap(const test::Row& row, int balls, double half_width) {
 
 // 27 balls in a box with no gravity, elastic and frictionless: a hard-sphere gas. The group
 // `bodies: all` (screened) and every pair named on its own (watched at every step) meet in the
-// same impacts, to the integrator's precision in their instants; no two balls overlap at any row
+// same impacts, to the integrator's precision in their instants (their steps differ, as their
+// states do: the group's pairs share one ledger entry; the gas's chaos grows that difference,
+// past 1e-9 s after 1.5 s, so the runs are compared for their first 1.2 s, ~200 impacts); no
+// two balls overlap at any row
 // (a touch the broad phase missed would show as an overlap growing at the approach speed, ~1 m/s
 // x 0.01 s); each impact is elastic, so E holds to round-off.
 TEST(BroadPhase, AGasOfBallsMeetsAsWithEveryPairWatched) {
   const int per_side = 3, balls = 27;
   const std::string all =
       "  - {name: hit, type: bodies, bodies: all, friction: 0, restitution: 1}\n";
-  const test::ScenarioRun screened = test::run_inline_scenario(gas(per_side, 0.0, all, 2.0), "all");
+  const test::ScenarioRun screened = test::run_inline_scenario(gas(per_side, 0.0, all, 1.2), "all");
   const test::ScenarioRun watched =
-      test::run_inline_scenario(gas(per_side, 0.0, every_pair_named(per_side), 2.0), "named");
+      test::run_inline_scenario(gas(per_side, 0.0, every_pair_named(per_side), 1.2), "named");
   // 27 balls and 6 walls: 351 pairs of balls and 162 of a ball and a wall; none of two walls.
   ASSERT_EQ(screened.contacts.size(), 351u + 162u);
   ASSERT_EQ(watched.contacts.size(), screened.contacts.size());
@@ -204,6 +209,44 @@ TEST(BroadPhase, BallsDroppedIntoABinLoseEnergyOnlyAtTheirImpacts) {
     EXPECT_NEAR(row.quantities.total_energy - E0, work, 1e-9 * KE_scale) << "t = " << row.t;
   }
   EXPECT_LT(run.rows.back().quantities.total_energy, E0 - 0.1 * KE_scale);
+}
+
+// `bodies: all`'s pairs pool their work in one entry of the ledger, the contact's (hit.P, hit.W),
+// and have no columns of their own; a group that lists the same bodies has each pair's. The two
+// runs of 8 balls dropped into the box for 0.4 s (their first impacts, before the many of their
+// settling, where the two runs' different steps would grow apart) meet in the same impacts, to
+// the integrator's precision in their instants, and the pool's work is the listed pairs' summed,
+// to 1e-9 of the starting KE.
+TEST(BroadPhase, AllPoolsItsPairsWorkInOneEntry) {
+  std::string listed = "  - {name: hit, type: bodies, bodies: [";
+  for (int i = 0; i < 8; ++i) listed += "b" + std::to_string(i) + ", ";
+  listed += "xlo, xhi, ylo, yhi, zlo, zhi], friction: 0, restitution: 0.5}\n";
+  const std::string all =
+      "  - {name: hit, type: bodies, bodies: all, friction: 0, restitution: 0.5}\n";
+  const test::ScenarioRun pooled = test::run_inline_scenario(gas(2, 9.81, all, 0.4), "pooled");
+  // The same pairs (two walls, neither a sphere, make none in either).
+  const test::ScenarioRun each = test::run_inline_scenario(gas(2, 9.81, listed, 0.4), "each");
+  ASSERT_EQ(each.contacts.size(), pooled.contacts.size());
+  const Scenario& scenario = pooled.scenario;
+  const ColumnLayout layout = column_layout(scenario, *build_simulation_model(scenario));
+  std::vector<std::string> names;
+  for_each_column(layout, [&](std::string_view owner, std::string_view field, auto&&) {
+    if (owner.rfind("hit", 0) == 0) names.push_back(std::string(owner) + "." + std::string(field));
+  });
+  EXPECT_EQ(names, (std::vector<std::string>{"hit.P", "hit.W"}));
+  ASSERT_EQ(pooled.rows.back().extras.elements.size(), 1u);
+  double listed_work = 0.0;
+  for (const auto& element : each.rows.back().extras.elements) listed_work += element.work;
+  const double pooled_work = pooled.rows.back().extras.elements[0].work;
+  EXPECT_LT(pooled_work, -0.1);
+  EXPECT_NEAR(pooled_work, listed_work,
+              1e-9 * pooled.rows.front().quantities.kinetic_energy + 1e-9 * std::abs(pooled_work));
+  ASSERT_EQ(pooled.contact_events.size(), each.contact_events.size());
+  for (std::size_t e = 0; e < pooled.contact_events.size(); ++e) {
+    EXPECT_EQ(pooled.contacts[pooled.contact_events[e].contact].name,
+              each.contacts[each.contact_events[e].contact].name);
+    EXPECT_NEAR(pooled.contact_events[e].t, each.contact_events[e].t, 1e-9);
+  }
 }
 
 // A gas stopped part way and resumed from its checkpoint goes on exactly as the run that never

@@ -635,10 +635,11 @@ void ContactSystem::apply_contact_impulses(Eigen::Index count, const VecX& impul
 }
 
 void ContactSystem::write_powers(VecX& rates, Eigen::Index offset) const {
-  // A far pair does no work (its ledger entry holds): every entry zero, then the watched ones'.
-  if (watched().size() < contacts_.size()) {
-    rates.segment(offset + dynamics_.work_entry(0), static_cast<Eigen::Index>(contacts_.size()))
-        .setZero();
+  // A far pair does no work (its ledger entry holds), and pooled pairs share an entry: every
+  // entry zero, then the watched ones' added.
+  const bool added = watched().size() < contacts_.size() || dynamics_.ledger_pooled();
+  if (added) {
+    rates.segment(offset + dynamics_.work_entry(0), dynamics_.contact_ledger_size()).setZero();
   }
   for (const std::size_t c : watched()) {
     const BodyMotion w = dynamics_.motion(contacts_[c].body);
@@ -646,7 +647,11 @@ void ContactSystem::write_powers(VecX& rates, Eigen::Index offset) const {
     if (contacts_[c].touches_a_body()) {
       power += d_.now[c].other_wrench_B.dot(dynamics_.motion(contacts_[c].other_body).velocity);
     }
-    rates(offset + dynamics_.work_entry(c)) = power;
+    if (added) {
+      rates(offset + dynamics_.work_entry(c)) += power;
+    } else {
+      rates(offset + dynamics_.work_entry(c)) = power;
+    }
   }
 }
 

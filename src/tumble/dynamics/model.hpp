@@ -39,6 +39,20 @@ struct Model {
   // The step a fixed-step method takes (s), which keeps it whatever the contacts' step limit;
   // 0 for an adaptive method, which keeps within it. The broad phase screens a step this long.
   double fixed_step = 0.0;
+  // Each contact's entry among the contacts' work-ledger entries, and their names: a contact's
+  // own, or the one `bodies: all`'s pairs share (hit for hit_ball1_ball2). Empty: one per
+  // contact, named as it is.
+  std::vector<std::size_t> contact_ledger;
+  std::vector<std::string> contact_ledger_names;
+  std::size_t contact_ledger_entry(std::size_t contact) const {
+    return contact_ledger.empty() ? contact : contact_ledger[contact];
+  }
+  std::size_t contact_ledger_size() const {
+    return contact_ledger.empty() ? contacts.size() : contact_ledger_names.size();
+  }
+  const std::string& contact_ledger_name(std::size_t entry) const {
+    return contact_ledger.empty() ? contacts[entry].name : contact_ledger_names[entry];
+  }
 
   // Only free bodies under gravity and one-body loads: the free-body formulations run it.
   bool bodies_are_free() const;

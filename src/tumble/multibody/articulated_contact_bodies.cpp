@@ -120,4 +120,12 @@ Eigen::Index ArticulatedFormulation::ContactBodies::work_entry(std::size_t conta
   return f_.m_.contact_entry(contact);
 }
 
+Eigen::Index ArticulatedFormulation::ContactBodies::contact_ledger_size() const {
+  return static_cast<Eigen::Index>(f_.model_.contact_ledger_size());
+}
+
+bool ArticulatedFormulation::ContactBodies::ledger_pooled() const {
+  return f_.model_.contact_ledger_size() < f_.model_.contacts.size();
+}
+
 }  // namespace tumble

@@ -76,7 +76,9 @@ std::vector<std::string> ArticulatedModel::element_names() const {
   for (const std::size_t j : motor_joints) names.push_back(model.joints[j].name + ".motor");
   for (const ImpulseLoad& impulse : model.impulses) names.push_back(impulse.name);
   for (const std::size_t j : lock_joints) names.push_back(model.joints[j].name + ".lock");
-  for (const PlaneContact& contact : model.contacts) names.push_back(contact.name);
+  for (std::size_t i = 0; i < model.contact_ledger_size(); ++i) {
+    names.push_back(model.contact_ledger_name(i));
+  }
   return names;
 }
 
@@ -98,7 +100,7 @@ Eigen::Index ArticulatedModel::first_motor_entry() const {
 Eigen::Index ArticulatedModel::contact_entry(std::size_t contact) const {
   return first_motor_entry() +
          static_cast<Eigen::Index>(motor_joints.size() + model.impulses.size() +
-                                   lock_joints.size() + contact);
+                                   lock_joints.size() + model.contact_ledger_entry(contact));
 }
 
 double ArticulatedModel::hinge_angle(const VecX& y, std::size_t joint) const {

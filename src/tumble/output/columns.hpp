@@ -33,6 +33,9 @@ struct ColumnLayout {
   // coordinate_columns(), "angle", "rate").
   std::vector<std::vector<std::string>> joint_coordinates;
   std::vector<std::string> contacts;
+  // Per contact, whether it has columns of its own (`bodies: all`'s pairs have none: their work
+  // is their group's element). Empty: every contact has.
+  std::vector<char> contact_columns;
   std::vector<std::string> elements;  // Formulation::element_names()
   bool planar = false;                // each body's angle and rate about z close the row
 };
@@ -94,6 +97,7 @@ void for_each_column(const ColumnLayout& layout, Column&& column) {
     }
   }
   for (std::size_t c = 0; c < layout.contacts.size(); ++c) {
+    if (!layout.contact_columns.empty() && layout.contact_columns[c] == 0) continue;
     const std::string_view contact = layout.contacts[c];
     column(contact, "N",
            [c](Row row) { return row.extras ? row.extras->contacts[c].normal_force : 0.0; });

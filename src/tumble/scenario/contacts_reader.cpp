@@ -278,6 +278,7 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
           pair.part = first.part;
           pair.other_part = second.part;
           pair.screened = group;
+          if (all) pair.pool = "all";  // read_contacts names it
           pairs.push_back(std::move(pair));
         }
       }
@@ -481,6 +482,7 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
     for (ContactSpec& contact : read_contact(reader, map, scenario)) {
       const bool one_of_several = !contact.name.empty();  // read_contact's suffix
       contact.name = one_of_several ? name + "_" + contact.name : name;
+      if (!contact.pool.empty()) contact.pool = name;
       contact.where = where;
       if (one_of_several) {
         check_name(reader, named_at, contact.name, "contact");

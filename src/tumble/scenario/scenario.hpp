@@ -176,6 +176,9 @@ struct ContactSpec {
   // A pair of a group (`bodies:` naming more than two, or `all`): the broad phase watches it only
   // while the two come near (docs/design.md, "Broad phase").
   bool screened = false;
+  // `bodies: all`'s pairs: the contact's name (hit, of hit_ball1_ball2), whose one work-ledger
+  // entry (hit.P, hit.W) they share; they have no columns of their own. Empty for any other.
+  std::string pool;
   SourceLocation where;
 };
 

@@ -279,6 +279,7 @@ Model build_model(const Scenario& scenario) {
     impulse.time = spec.time;
     model.impulses.push_back(impulse);
   }
+  std::unordered_map<std::string, std::size_t> pool_entries;  // a pool's ledger entry
   for (const ContactSpec& spec : scenario.contacts) {
     PlaneContact contact;
     contact.name = spec.name;
@@ -310,6 +311,16 @@ Model build_model(const Scenario& scenario) {
     contact.friction = spec.friction;
     contact.restitution = spec.restitution;
     model.contacts.push_back(contact);
+    // Its work-ledger entry: its own, or its pool's, which the first of the pool's pairs opens.
+    const auto [pool, opened] =
+        spec.pool.empty() ? std::pair{pool_entries.end(), true}
+                          : pool_entries.emplace(spec.pool, model.contact_ledger_names.size());
+    if (opened) {
+      model.contact_ledger.push_back(model.contact_ledger_names.size());
+      model.contact_ledger_names.push_back(spec.pool.empty() ? spec.name : spec.pool);
+    } else {
+      model.contact_ledger.push_back(pool->second);
+    }
   }
   return model;
 }

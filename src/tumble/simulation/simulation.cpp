@@ -276,7 +276,7 @@ SimulationResult run_or_resume(PreparedSimulation& simulation, const FullRowObse
       double work = -(gravity_potential - base.gravity_potential0);
       for (const ElementWork& e : extras.elements) work += e.work;
       // The contacts' entries are the ledger's last (ArticulatedModel::element_names).
-      const std::size_t contacts = std::min(model.contacts.size(), extras.elements.size());
+      const std::size_t contacts = std::min(model.contact_ledger_size(), extras.elements.size());
       for (std::size_t i = extras.elements.size() - contacts; i < extras.elements.size(); ++i) {
         c.max_contact_work = std::max(c.max_contact_work, std::abs(extras.elements[i].work));
       }
@@ -411,7 +411,10 @@ ColumnLayout layout_with_elements(const Scenario& scenario,
       names.emplace_back(name.suffix);
     }
   }
-  for (const ContactSpec& c : scenario.contacts) layout.contacts.push_back(c.name);
+  for (const ContactSpec& c : scenario.contacts) {
+    layout.contacts.push_back(c.name);
+    layout.contact_columns.push_back(c.pool.empty() ? 1 : 0);
+  }
   layout.elements = std::move(element_names);
   layout.planar = scenario.planar;
   return layout;

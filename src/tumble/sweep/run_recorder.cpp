@@ -191,8 +191,8 @@ bool RunRecorder::fits(const ColumnLayout& layout, const Scenario& scenario) con
   // The same owners give the same columns.
   if (layout.bodies != layout_.bodies || layout.joints != layout_.joints ||
       layout.joint_coordinates != layout_.joint_coordinates ||
-      layout.contacts != layout_.contacts || layout.elements != layout_.elements ||
-      layout.planar != layout_.planar ||
+      layout.contacts != layout_.contacts || layout.contact_columns != layout_.contact_columns ||
+      layout.elements != layout_.elements || layout.planar != layout_.planar ||
       scenario.parameters.size() != row_.parameter_names().size()) {
     return false;
   }

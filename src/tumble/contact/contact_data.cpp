@@ -34,7 +34,8 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
 
 void ContactData::reserve_rows(std::size_t count) {
   unknowns.resize(count);
-  wrenches.resize(count + 2 * now.size());
+  // Two bodies' per unknown (a pair's impulses), and two per contact (its forces).
+  wrenches.resize(2 * count + 2 * now.size());
   const auto rows = static_cast<Eigen::Index>(count);
   matrix.resize(rows, rows);
   rhs.resize(rows);

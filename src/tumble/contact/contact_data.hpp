@@ -106,7 +106,7 @@ struct ContactData {
   VecX row_scales;                       // per row, for those: normal rows carry the load first
   MatX saved_matrix;                     // the rows before a solve, and its right-hand side, for
   VecX saved_rhs;                        // the second solve of redundant rows
-  std::vector<BodyWrench> wrenches;      // as many, and two per contact: forces or impulses
+  std::vector<BodyWrench> wrenches;      // two per row and per contact: forces or impulses
   std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                         // impact()'s
   // Per contact, a pair's impulse (sphere_pairs.cpp): whether a touching plane is held in it.

@@ -58,7 +58,7 @@ AlignedBox surface_box_B(const ContactSurface& surface) {
 }  // namespace
 
 PairScreen::PairScreen(std::span<const PlaneContact> contacts) : sweep_(0) {
-  far_.assign(contacts.size(), 0);
+  state_.assign(contacts.size(), kNear);
   watched_.reserve(contacts.size());
   std::vector<int> object_of_body;
   std::vector<AlignedBox> boxes_B;
@@ -107,8 +107,8 @@ PairScreen::PairScreen(std::span<const PlaneContact> contacts) : sweep_(0) {
 
 void PairScreen::watch_all() {
   // Until the first screening, every contact is watched (the start's checks see them all).
-  std::fill(far_.begin(), far_.end(), 0);
-  watched_.resize(far_.size());
+  std::fill(state_.begin(), state_.end(), kNear);
+  watched_.resize(state_.size());
   std::iota(watched_.begin(), watched_.end(), std::size_t{0});
   near_.clear();
   was_near_.clear();
@@ -116,20 +116,20 @@ void PairScreen::watch_all() {
 }
 
 void PairScreen::mark_near(std::size_t contact, FunctionRef<void(std::size_t)> entered) {
-  if (far_[contact] == 2) return;  // marked already in this screening
-  if (far_[contact] == 1) {
+  if (state_[contact] == kMarked) return;
+  if (state_[contact] == kFar) {
     entered(contact);
     entered_any_ = true;
   }
-  far_[contact] = 2;
+  state_[contact] = kMarked;
   near_.push_back(contact);
 }
 
 bool PairScreen::screen(std::span<const AlignedBox> boxes, FunctionRef<bool(std::size_t)> touching,
                         FunctionRef<void(std::size_t)> entered) {
   if (!active()) return false;
-  // Every pair far, but those near before, whose far_ says 0 (near) until they are marked again;
-  // at the first screening every pair was near.
+  // The pairs near before stay kNear until marked again or, unmarked, made far; at the first
+  // screening every pair was near.
   std::swap(near_, was_near_);
   near_.clear();
   entered_any_ = false;
@@ -150,12 +150,12 @@ bool PairScreen::screen(std::span<const AlignedBox> boxes, FunctionRef<bool(std:
   // The pairs near before and not now are far; those marked now are near.
   bool changed = entered_any_;
   for (const std::size_t c : was_near_) {
-    if (far_[c] == 0) {
-      far_[c] = 1;
+    if (state_[c] == kNear) {
+      state_[c] = kFar;
       changed = true;
     }
   }
-  for (const std::size_t c : near_) far_[c] = 0;
+  for (const std::size_t c : near_) state_[c] = kNear;
   std::sort(near_.begin(), near_.end());
   watched_.clear();
   std::merge(unscreened_.begin(), unscreened_.end(), near_.begin(), near_.end(),

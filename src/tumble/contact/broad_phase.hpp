@@ -73,7 +73,7 @@ class PairScreen {
 
   // The contacts watched, in increasing order; and whether one is not.
   std::span<const std::size_t> watched() const { return watched_; }
-  bool far(std::size_t contact) const { return far_[contact] != 0; }
+  bool far(std::size_t contact) const { return state_[contact] == kFar; }
 
  private:
   static std::uint64_t key(std::size_t a, std::size_t b) {
@@ -88,10 +88,12 @@ class PairScreen {
   std::vector<std::size_t> pair_contacts_;
   std::vector<std::size_t> unscreened_;  // every contact not a group's pair, in order
   SweepAndPrune sweep_;
-  // The screening's result: the watched list, per contact whether it is far, and the group's
-  // pairs near (to mark far again at the next screening without a pass over all of them).
+  // The screening's result: the watched list, each contact's state, and the group's pairs near
+  // (to make far at the next screening without a pass over all of them). kMarked: found near in
+  // the screening under way.
+  enum State : char { kNear, kFar, kMarked };
   std::vector<std::size_t> watched_;
-  std::vector<char> far_;
+  std::vector<State> state_;
   std::vector<std::size_t> near_, was_near_;
   bool screened_once_ = false;
   bool entered_any_ = false;  // this screening's

@@ -13,18 +13,16 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index di
   touching.reserve(most_vertices);
   reserve_feature(landing.feature, most_vertices);
   now.resize(contacts.size());
-  // Rows per contact at most: a face's six; a held polyhedron's three at each of three points; a
-  // pair's three. A group's pairs cannot all touch at once: room for kPairsPerBody of them per
-  // body of the group (twice the six neighbours a ball has in a random close packing), and more
-  // only where more touch.
-  constexpr std::size_t kMostRows = 9;
+  // kMostRowsPerContact per contact, and a pair's three. A group's pairs cannot all touch at once:
+  // room for kPairsPerBody of them per body of the group (twice the six neighbours a ball has in a
+  // random close packing), and more only where more touch.
   constexpr std::size_t kPairRows = 3;
   constexpr std::size_t kPairsPerBody = 6;
   const std::size_t screened = static_cast<std::size_t>(
       std::count_if(contacts.begin(), contacts.end(),
                     [](const PlaneContact& contact) { return contact.screened; }));
   const std::size_t pairs = std::min(screened, kPairsPerBody * screen.bodies().size());
-  reserve_rows(kMostRows * (contacts.size() - screened) + kPairRows * pairs);
+  reserve_rows(kMostRowsPerContact * (contacts.size() - screened) + kPairRows * pairs);
   impact_y.resize(dimension);
   held_in_impact.assign(contacts.size(), 0);
   onset_y.resize(dimension);

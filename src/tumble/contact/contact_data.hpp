@@ -90,6 +90,9 @@ struct ContactUnknown {
   double turning_acceleration = 0.0;
 };
 
+// The most rows one contact has: a face's six; a held polyhedron's three at each of three points.
+inline constexpr std::size_t kMostRowsPerContact = 9;
+
 struct ContactData {
   // Sized for these contacts and a state of `dimension` numbers.
   ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension);

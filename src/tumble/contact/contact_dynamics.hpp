@@ -100,10 +100,9 @@ class ContactDynamics {
   // in the contacts' order.
   virtual Eigen::Index ledger_start() const = 0;
   virtual Eigen::Index work_entry(std::size_t contact) const = 0;
-  // How many entries the contacts have (from work_entry(0) on), and whether some contacts share
-  // one (`bodies: all`'s pairs: their group's).
+  // How many entries the contacts have (from work_entry(0) on): fewer than the contacts where
+  // some share one (`bodies: all`'s pairs: their group's).
   virtual Eigen::Index contact_ledger_size() const = 0;
-  virtual bool ledger_pooled() const = 0;
 
  protected:
   // Where each body's motion is kept, and which bodies move together (the same group), set once

@@ -278,9 +278,9 @@ Eigen::Index ContactSystem::append_contact_unknowns(std::size_t c, ContactMode m
                                                     Eigen::Index count) const {
   // A group's pairs have room for as many as may touch at once in a close packing
   // (contact_data.cpp); more touching grows it, the one allocation a step may make.
-  constexpr std::size_t kMostRows = 9;
-  if (mode != ContactMode::Apart && static_cast<std::size_t>(count) + kMostRows > d_.row_room()) {
-    d_.reserve_rows(2 * d_.row_room() + kMostRows);
+  if (mode != ContactMode::Apart &&
+      static_cast<std::size_t>(count) + kMostRowsPerContact > d_.row_room()) {
+    d_.reserve_rows(2 * d_.row_room() + kMostRowsPerContact);
   }
   if (contacts_[c].touches_a_body()) return append_pair_unknowns(c, mode, rows, slide_W, count);
   const PlaneContact& contact = contacts_[c];
@@ -637,9 +637,11 @@ void ContactSystem::apply_contact_impulses(Eigen::Index count, const VecX& impul
 void ContactSystem::write_powers(VecX& rates, Eigen::Index offset) const {
   // A far pair does no work (its ledger entry holds), and pooled pairs share an entry: every
   // entry zero, then the watched ones' added.
-  const bool added = watched().size() < contacts_.size() || dynamics_.ledger_pooled();
-  if (added) {
-    rates.segment(offset + dynamics_.work_entry(0), dynamics_.contact_ledger_size()).setZero();
+  const Eigen::Index entries = dynamics_.contact_ledger_size();
+  const bool summed =
+      watched().size() < contacts_.size() || entries < static_cast<Eigen::Index>(contacts_.size());
+  if (summed) {
+    rates.segment(offset + dynamics_.work_entry(0), entries).setZero();
   }
   for (const std::size_t c : watched()) {
     const BodyMotion w = dynamics_.motion(contacts_[c].body);
@@ -647,7 +649,7 @@ void ContactSystem::write_powers(VecX& rates, Eigen::Index offset) const {
     if (contacts_[c].touches_a_body()) {
       power += d_.now[c].other_wrench_B.dot(dynamics_.motion(contacts_[c].other_body).velocity);
     }
-    if (added) {
+    if (summed) {
       rates(offset + dynamics_.work_entry(c)) += power;
     } else {
       rates(offset + dynamics_.work_entry(c)) = power;

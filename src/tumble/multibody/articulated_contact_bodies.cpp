@@ -124,8 +124,4 @@ Eigen::Index ArticulatedFormulation::ContactBodies::contact_ledger_size() const 
   return static_cast<Eigen::Index>(f_.model_.contact_ledger_size());
 }
 
-bool ArticulatedFormulation::ContactBodies::ledger_pooled() const {
-  return f_.model_.contact_ledger_size() < f_.model_.contacts.size();
-}
-
 }  // namespace tumble

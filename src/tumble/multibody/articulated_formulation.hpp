@@ -178,7 +178,6 @@ class ArticulatedFormulation final : public Formulation {
     Eigen::Index ledger_start() const override;
     Eigen::Index work_entry(std::size_t contact) const override;
     Eigen::Index contact_ledger_size() const override;
-    bool ledger_pooled() const override;
 
    private:
     const ArticulatedFormulation& f_;

@@ -278,7 +278,6 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
           pair.part = first.part;
           pair.other_part = second.part;
           pair.screened = group;
-          if (all) pair.pool = "all";  // read_contacts names it
           pairs.push_back(std::move(pair));
         }
       }
@@ -476,13 +475,13 @@ std::vector<ContactSpec> read_contacts(const Reader& reader, const Field& field,
     // plane, one of each part that touches where it has several (floor_head, floor_handle). Any
     // other contact's name is claimed before the rest of it is read.
     const auto listed = map.find("bodies");
-    const bool group = listed && ((listed->node.IsSequence() && listed->node.size() > 2) ||
-                                  (listed->node.IsScalar() && listed->node.Scalar() == "all"));
+    const bool all = listed && listed->node.IsScalar() && listed->node.Scalar() == "all";
+    const bool group = all || (listed && listed->node.IsSequence() && listed->node.size() > 2);
     if (!group) heads.claim(reader, named_at, name, "contact", where);
     for (ContactSpec& contact : read_contact(reader, map, scenario)) {
       const bool one_of_several = !contact.name.empty();  // read_contact's suffix
       contact.name = one_of_several ? name + "_" + contact.name : name;
-      if (!contact.pool.empty()) contact.pool = name;
+      if (all) contact.pool = name;
       contact.where = where;
       if (one_of_several) {
         check_name(reader, named_at, contact.name, "contact");

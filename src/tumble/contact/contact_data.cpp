@@ -4,8 +4,9 @@
 
 namespace tumble {
 
-ContactData::ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension)
-    : screen(contacts) {
+ContactData::ContactData(std::span<const PlaneContact> contacts, std::size_t bodies,
+                         Eigen::Index dimension)
+    : group_parent(bodies), group_island(bodies), screen(contacts) {
   std::size_t most_vertices = 0;
   for (const PlaneContact& contact : contacts) {
     most_vertices = std::max(most_vertices, contact.surface.vertices.size());
@@ -42,6 +43,9 @@ void ContactData::reserve_rows(std::size_t count) {
   row_scales.resize(rows);
   saved_matrix.resize(rows, rows);
   saved_rhs.resize(rows);
+  island_rows.resize(count);
+  island_ends.resize(count + 1);
+  island_x.resize(rows);
 }
 
 }  // namespace tumble

@@ -94,8 +94,8 @@ struct ContactUnknown {
 inline constexpr std::size_t kMostRowsPerContact = 9;
 
 struct ContactData {
-  // Sized for these contacts and a state of `dimension` numbers.
-  ContactData(std::span<const PlaneContact> contacts, Eigen::Index dimension);
+  // Sized for these contacts, bodies and a state of `dimension` numbers.
+  ContactData(std::span<const PlaneContact> contacts, std::size_t bodies, Eigen::Index dimension);
 
   // Room for this many rows, and what goes with them; more allocates (reserve_rows).
   void reserve_rows(std::size_t rows);
@@ -109,9 +109,15 @@ struct ContactData {
   VecX row_scales;                       // per row, for those: normal rows carry the load first
   MatX saved_matrix;                     // the rows before a solve, and its right-hand side, for
   VecX saved_rhs;                        // the second solve of redundant rows
-  std::vector<BodyWrench> wrenches;      // two per row and per contact: forces or impulses
-  std::vector<int> touching;             // find_touching_vertices's, reserved for the most vertices
-  VecX impact_y;                         // impact()'s
+  // The solve's islands (contact_islands.cpp): the rows island by island, where each island
+  // ends in that list, and one island's right-hand side; per motion group, its union-find
+  // parent and its island.
+  std::vector<Eigen::Index> island_rows, island_ends;
+  VecX island_x;
+  std::vector<std::size_t> group_parent, group_island;
+  std::vector<BodyWrench> wrenches;  // two per row and per contact: forces or impulses
+  std::vector<int> touching;         // find_touching_vertices's, reserved for the most vertices
+  VecX impact_y;                     // impact()'s
   // Per contact, a pair's impulse (sphere_pairs.cpp): whether a touching plane is held in it.
   std::vector<char> held_in_impact;
   ContactStatus landing;     // impact()'s: the part it lands on, reserved for the most vertices

@@ -80,6 +80,11 @@ class ContactDynamics {
   bool moves_with(std::size_t body, std::size_t other) const {
     return motion_group_[body] == motion_group_[other];
   }
+  // The group a body moves with (a number below the body count), and whether that group can move
+  // at all: an obstacle welded to ground responds to no wrench, so the bodies that touch it are
+  // not tied together through it (the contact solve's islands).
+  std::size_t motion_group(std::size_t body) const { return motion_group_[body]; }
+  bool can_move(std::size_t body) const { return group_moves_[motion_group_[body]] != 0; }
   // The jumps of the speeds under these impulses (impulsive passes, every body); then added to
   // y's speeds, or taken as a small displacement of y's coordinates (a projection's move).
   virtual void respond_to_impulses(std::span<const BodyWrench> impulses) const = 0;
@@ -117,6 +122,7 @@ class ContactDynamics {
   };
   std::vector<MotionSource> motion_sources_;  // per body; the addresses must not change
   std::vector<std::size_t> motion_group_;     // per body
+  std::vector<char> group_moves_;             // per group: some joint of it has a freedom
 };
 
 }  // namespace tumble

@@ -48,7 +48,7 @@ ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
       fixed_step_(fixed_step),
       gravity_W_(gravity_W),
       dynamics_(dynamics),
-      data_(std::make_unique<ContactData>(contacts, dimension)),
+      data_(std::make_unique<ContactData>(contacts, bodies.size(), dimension)),
       d_(*data_),
       s_(state) {
   // Room for every feature now, so that finding one during a step allocates nothing.
@@ -441,34 +441,37 @@ double ContactSystem::row_velocity(const ContactUnknown& row) const {
 }
 
 void ContactSystem::add_contact_response(Eigen::Index j, std::size_t body, const Vec6& wrench_B,
-                                         Eigen::Index count) const {
+                                         std::span<const Eigen::Index> rows) const {
   // Only the bodies that move with this one (hung through joints from the same ground joint)
   // respond: the others' rows respond with nothing, and their passes are skipped (three bodies
   // racing down a ramp: a third of the work).
   dynamics_.respond_to_unit_wrench({body, wrench_B});
-  for (Eigen::Index i = 0; i < count; ++i) {
-    const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(rows[i])];
     const PlaneContact& contact = contacts_[row.contact];
+    const auto r = static_cast<Eigen::Index>(i);
     // The linear response of the row: its body's point's, less the other body's point's.
     if (dynamics_.moves_with(contact.body, body)) {
-      d_.matrix(i, j) += row_on_response(row, dynamics_.motion(contact.body), row.point_B);
+      d_.matrix(r, j) += row_on_response(row, dynamics_.motion(contact.body), row.point_B);
     }
     if (contact.touches_a_body() && dynamics_.moves_with(contact.other_body, body)) {
-      d_.matrix(i, j) -=
+      d_.matrix(r, j) -=
           row_on_response(row, dynamics_.motion(contact.other_body), row.other_point_B);
     }
   }
 }
 
-void ContactSystem::calc_contact_matrix(Eigen::Index count) const {
+void ContactSystem::calc_contact_matrix(std::span<const Eigen::Index> rows) const {
+  const auto count = static_cast<Eigen::Index>(rows.size());
   for (Eigen::Index j = 0; j < count; ++j) {
-    const ContactUnknown& u = d_.unknowns[static_cast<std::size_t>(j)];
+    const ContactUnknown& u =
+        d_.unknowns[static_cast<std::size_t>(rows[static_cast<std::size_t>(j)])];
     const PlaneContact& contact = contacts_[u.contact];
     d_.matrix.col(j).head(count).setZero();
-    add_contact_response(j, contact.body, u.wrench_B, count);
+    add_contact_response(j, contact.body, u.wrench_B, rows);
     // Between two bodies, the unknown pushes the other body too (the opposite force).
     if (contact.touches_a_body())
-      add_contact_response(j, contact.other_body, u.other_wrench_B, count);
+      add_contact_response(j, contact.other_body, u.other_wrench_B, rows);
   }
 }
 
@@ -496,8 +499,7 @@ void ContactSystem::solve_forces() const {
                    row.angular_W.dot(o.R_WB * o.acceleration.head<3>());
     }
   }
-  calc_contact_matrix(count);
-  solve_contact_system(count, d_.rhs, RowQuantity::Acceleration);
+  solve_contact_rows(count, d_.rhs, RowQuantity::Acceleration);
   set_contact_resultants(count, d_.rhs);
   std::size_t wrench_count = 0;
   for (const std::size_t c : watched()) {
@@ -509,7 +511,12 @@ void ContactSystem::solve_forces() const {
   dynamics_.solve_under_loads_and(std::span<const BodyWrench>(d_.wrenches.data(), wrench_count));
 }
 
-void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantity rows) const {
+void ContactSystem::solve_contact_system(std::span<const Eigen::Index> rows, VecX& x,
+                                         double zero) const {
+  const auto count = static_cast<Eigen::Index>(rows.size());
+  const auto unknown = [&](Eigen::Index i) -> const ContactUnknown& {
+    return d_.unknowns[static_cast<std::size_t>(rows[static_cast<std::size_t>(i)])];
+  };
   if (any_held_) {
     // A row that no force moves (a point on a hinge's axis: the joint holds that motion
     // entirely) carries no force. Its entries are round-off, and where every row is such, A's
@@ -522,17 +529,6 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
       d_.matrix(i, i) = 1.0;
       x(i) = 0.0;
     }
-  }
-  // The zero of what the rows measure: the largest of the contacts' (their scales are state,
-  // fixed at the run's start).
-  double zero = 0.0;
-  for (const std::size_t c : watched()) {
-    const ContactStatus& s = s_.contacts[c];
-    // Not a group's pairs apart: which of them the broad phase watches must not change a solve.
-    if (contacts_[c].screened && s.mode == ContactMode::Apart) continue;
-    zero = std::max(zero, rows == RowQuantity::Position   ? s.touching_height
-                          : rows == RowQuantity::Velocity ? s.slip_zero
-                                                          : s.slip_zero / s.time_scale);
   }
   // Where a joint (or another contact) makes rows redundant, it can carry part of a contact's
   // force, and the forces are not unique: a bob that a ball joint holds on a floor can be held by
@@ -547,7 +543,7 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
   // where the rows are redundant a second solve at eps doubled gives Richardson's extrapolation
   // (4 x(eps) - x(2 eps)) / 3, which leaves the eps^4 term: 1e-12 of the push.
   for (Eigen::Index i = 0; i < count; ++i) {
-    d_.row_scales(i) = d_.unknowns[static_cast<std::size_t>(i)].normal ? kNormalRowScale : 1.0;
+    d_.row_scales(i) = unknown(i).normal ? kNormalRowScale : 1.0;
   }
   d_.saved_matrix.topLeftCorner(count, count) = d_.matrix.topLeftCorner(count, count);
   d_.saved_rhs.head(count) = x.head(count);
@@ -555,7 +551,7 @@ void ContactSystem::solve_contact_system(Eigen::Index count, VecX& x, RowQuantit
     return;
   }
   for (Eigen::Index i = 0; i < count; ++i) {
-    if (d_.unknowns[static_cast<std::size_t>(i)].normal) d_.row_scales(i) = 0.5 * kNormalRowScale;
+    if (unknown(i).normal) d_.row_scales(i) = 0.5 * kNormalRowScale;
   }
   d_.matrix.topLeftCorner(count, count) = d_.saved_matrix.topLeftCorner(count, count);
   solve_constraints_in_place(d_.matrix, d_.saved_rhs, count, d_.solve_scratch, zero,
@@ -684,8 +680,7 @@ void ContactSystem::project_feature_positions(VecX& y) const {
                 row.angular_W.dot(turn.angle() * turn.axis());
     }
   }
-  calc_contact_matrix(count);
-  solve_contact_system(count, d_.x, RowQuantity::Position);
+  solve_contact_rows(count, d_.x, RowQuantity::Position);
   respond_to_contact_impulses(count, d_.x);
   dynamics_.apply_displacement(y);
 }
@@ -729,8 +724,7 @@ void ContactSystem::project(double t, VecX& y) const {
     d_.x(i) = -row_velocity(d_.unknowns[static_cast<std::size_t>(i)]);
   }
   d_.rhs.head(count) = d_.x.head(count);  // minus each row's velocity before
-  calc_contact_matrix(count);
-  solve_contact_system(count, d_.x, RowQuantity::Velocity);
+  solve_contact_rows(count, d_.x, RowQuantity::Velocity);
   apply_contact_impulses(count, d_.x, y);
   // An impulse P on a row whose velocity goes from v to 0 does P v / 2 of work.
   for (Eigen::Index i = 0; i < count; ++i) {

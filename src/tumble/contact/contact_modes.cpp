@@ -596,8 +596,7 @@ void ContactSystem::impact(std::size_t c, double t, VecX& y) {
           const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
           d_.x(i) = -(row.normal ? 1.0 + law.e : 1.0) * row_velocity(row);
         }
-        calc_contact_matrix(count);
-        solve_contact_system(count, d_.x, RowQuantity::Velocity);
+        solve_contact_rows(count, d_.x, RowQuantity::Velocity);
         set_contact_resultants(count, d_.x);  // the impulse, as a force would be
       };
       if (law.friction) {

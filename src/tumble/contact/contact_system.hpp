@@ -140,19 +140,27 @@ class ContactSystem {
   // `slide_W` (Motion); returns the new count.
   Eigen::Index append_contact_unknowns(std::size_t c, ContactMode mode, ContactRows rows,
                                        const Vec3& slide_W, Eigen::Index count) const;
-  // The constraint matrix A (rows: the unknowns' rows, columns: their forces) from the responses
-  // to unit wrenches.
-  void calc_contact_matrix(Eigen::Index count) const;
-  // Adds to A's column j the leading count rows' response to a unit wrench on one body.
-  void add_contact_response(Eigen::Index j, std::size_t body, const Vec6& wrench_B,
-                            Eigen::Index count) const;
   // What the rows measure: their zero is the contacts' own (the largest touching height, slip
   // zero, or slip zero over the time scale): dependent rows whose right-hand sides differ by
   // less agree.
   enum class RowQuantity { Acceleration, Velocity, Position };
-  // Solves A x = b for the leading count rows, in place (b becomes x); throws
-  // InconsistentConstraints if the rows contradict each other.
-  void solve_contact_system(Eigen::Index count, VecX& x, RowQuantity rows) const;
+  // Solves A x = b for the leading count rows, in place (b becomes x), A the rows' response to
+  // the unknowns; throws InconsistentConstraints if the rows contradict each other. The rows
+  // split into islands that no body ties together (contact_islands.cpp), each solved alone.
+  void solve_contact_rows(Eigen::Index count, VecX& x, RowQuantity rows) const;
+  // The islands of the leading count rows, into d_.island_rows and d_.island_ends; returns how
+  // many.
+  Eigen::Index find_islands(Eigen::Index count) const;
+  // The zero of what the rows measure: the largest of the watched contacts'.
+  double rows_zero(RowQuantity rows) const;
+  // The matrix A of one island's rows (`rows`: the unknowns', in order) into d_.matrix's leading
+  // block, from the responses to unit wrenches.
+  void calc_contact_matrix(std::span<const Eigen::Index> rows) const;
+  // Adds to A's column j those rows' response to a unit wrench on one body.
+  void add_contact_response(Eigen::Index j, std::size_t body, const Vec6& wrench_B,
+                            std::span<const Eigen::Index> rows) const;
+  // Solves that A x = b in place (x: the island's right-hand side, in the rows' order).
+  void solve_contact_system(std::span<const Eigen::Index> rows, VecX& x, double zero) const;
   // Each contact's resultant (d_.now's wrench, force, normal force, friction, moment about O)
   // from the unknowns' values x.
   void set_contact_resultants(Eigen::Index count, const VecX& x) const;

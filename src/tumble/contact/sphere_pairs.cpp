@@ -451,8 +451,7 @@ Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool fr
         const ContactUnknown& row = d_.unknowns[static_cast<std::size_t>(i)];
         d_.x(i) = -(row.normal && row.contact == c ? 1.0 + e : 1.0) * row_velocity(row);
       }
-      calc_contact_matrix(count);
-      solve_contact_system(count, d_.x, RowQuantity::Velocity);
+      solve_contact_rows(count, d_.x, RowQuantity::Velocity);
       set_contact_resultants(count, d_.x);
       return count;
     };

@@ -16,11 +16,13 @@ ArticulatedFormulation::ContactBodies::ContactBodies(const ArticulatedFormulatio
   const std::size_t bodies = f_.m_.body_count();
   motion_sources_.resize(bodies);
   motion_group_.resize(bodies);
+  group_moves_.assign(bodies, 0);
   for (std::size_t body = 0; body < bodies; ++body) {
     const std::size_t slot = f_.m_.slot_of_body[body];
     const Workspace& w = f_.d_.work[slot];
     motion_sources_[body] = {&w.R_WC, &w.r_G_W, &w.velocity, &w.acceleration};
     motion_group_[body] = f_.m_.tree_root[slot];
+    if (f_.m_.tree[slot].type != JointType::Fixed) group_moves_[f_.m_.tree_root[slot]] = 1;
   }
 }
 
@@ -59,13 +61,17 @@ void ArticulatedFormulation::ContactBodies::solve_under_loads_and(
 }
 
 void ArticulatedFormulation::ContactBodies::respond_to_unit_wrench(const BodyWrench& unit) const {
-  for (Workspace& w : f_.d_.work) {
+  // Only the pushed body's tree is solved (a bin's ball, not the hundred others), so only its
+  // wrenches are cleared: a solve of every tree sets them all first.
+  const std::size_t slot = f_.m_.slot_of_body[unit.body];
+  const std::size_t root = f_.m_.tree_root[slot];
+  for (const std::size_t k : f_.m_.slots_of_tree(root)) {
+    Workspace& w = f_.d_.work[k];
     w.external.setZero();
     w.qdd.setZero();
   }
-  const std::size_t slot = f_.m_.slot_of_body[unit.body];
   f_.d_.work[slot].external += unit.wrench_B;
-  f_.solve(f_.s_.schedule_time, true, f_.m_.tree_root[slot]);
+  f_.solve(f_.s_.schedule_time, true, root);
 }
 
 void ArticulatedFormulation::ContactBodies::respond_to_impulses(

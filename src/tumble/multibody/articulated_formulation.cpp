@@ -208,17 +208,17 @@ void ArticulatedFormulation::accumulate_element_loads(const VecX& y, double mode
 }
 
 void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t only_tree) const {
-  const auto skipped = [&](std::size_t k) {
-    return only_tree != kEveryTree && m_.tree_root[k] != only_tree;
-  };
+  // Every tree, or one: a contact row's response moves only the tree it pushes.
+  const std::span<const std::size_t> slots = only_tree == kEveryTree
+                                                 ? std::span<const std::size_t>(m_.every_slot)
+                                                 : m_.slots_of_tree(only_tree);
   // The articulated inertias depend only on the configuration and on which joints are
   // prescribed: the passes at one state (the free motion, each contact row's response, the
   // motion under the contact forces) build them once, and the rest take them as they are.
-  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
-    if (!skipped(k) && m_.tree_root[k] == k) d_.reuse_inertia[k] = 1;
+  for (const std::size_t k : slots) {
+    if (m_.tree_root[k] == k) d_.reuse_inertia[k] = 1;
   }
-  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
-    if (skipped(k)) continue;
+  for (const std::size_t k : slots) {
     Workspace& w = d_.work[k];
     const bool known = m_.prescribed(k, mode_time);
     if (!w.inertia_ready || known != w.known) d_.reuse_inertia[m_.tree_root[k]] = 0;
@@ -226,8 +226,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
   }
   const auto reused = [&](std::size_t k) { return d_.reuse_inertia[m_.tree_root[k]] != 0; };
   // Pass 1: each body alone.
-  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
-    if (skipped(k)) continue;
+  for (const std::size_t k : slots) {
     const TreeJoint& joint = m_.tree[k];
     const RigidBody& body = model_.bodies[joint.child];
     Workspace& w = d_.work[k];
@@ -247,8 +246,8 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
     }
   }
   // Pass 2: articulated inertias and bias forces, from the leaves in.
-  for (std::size_t k = m_.tree.size(); k-- > 0;) {
-    if (skipped(k)) continue;
+  for (auto slot = slots.rbegin(); slot != slots.rend(); ++slot) {
+    const std::size_t k = *slot;
     const TreeJoint& joint = m_.tree[k];
     Workspace& w = d_.work[k];
     const Vec6 c = impulsive ? Vec6::Zero() : w.bias;
@@ -309,8 +308,7 @@ void ArticulatedFormulation::solve(double mode_time, bool impulsive, std::size_t
   // force of its own (and the joint forces below include the weight they carry).
   Vec6 a_ground = Vec6::Zero();
   if (!impulsive) a_ground.tail<3>() = -model_.gravity_W;
-  for (std::size_t k = 0; k < m_.tree.size(); ++k) {
-    if (skipped(k)) continue;
+  for (const std::size_t k : slots) {
     const TreeJoint& joint = m_.tree[k];
     Workspace& w = d_.work[k];
     const Vec6& a_P =

@@ -58,6 +58,16 @@ ArticulatedModel::ArticulatedModel(std::shared_ptr<const Model> model_in)
       tree_root[k] = tree_root[parent];
     }
   }
+  every_slot.resize(tree.size());
+  tree_slots.resize(tree.size());
+  tree_slots_begin.assign(tree.size() + 1, 0);
+  for (std::size_t k = 0; k < tree.size(); ++k) {
+    every_slot[k] = k;
+    ++tree_slots_begin[tree_root[k] + 1];
+  }
+  for (std::size_t k = 0; k < tree.size(); ++k) tree_slots_begin[k + 1] += tree_slots_begin[k];
+  std::vector<std::size_t> next(tree_slots_begin.begin(), tree_slots_begin.end() - 1);
+  for (std::size_t k = 0; k < tree.size(); ++k) tree_slots[next[tree_root[k]]++] = k;
 
   // On a body a joint holds, a contact's rows may be redundant with the joint (the solve allows
   // that): every surface touches on every body.

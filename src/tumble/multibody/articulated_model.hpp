@@ -6,6 +6,7 @@
 // changes during a run. A run's scratch is its ArticulatedData, its modes and records its
 // HybridState.
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,11 @@ struct ArticulatedModel {
   // that line, and its joint inertia is singular there (solved by its pseudo-inverse).
   std::vector<bool> holds_point_on_ball;
   std::vector<std::size_t> tree_root;  // per tree joint: its ancestor hung from ground
-  std::vector<int> slot_of_joint;      // tree index of each model joint
+  // Every tree joint in order, and each tree's joints in order (parents first) for a pass over
+  // one tree: those of the tree whose root is k are tree_slots[tree_slots_begin[k] ...
+  // tree_slots_begin[k + 1]).
+  std::vector<std::size_t> every_slot, tree_slots, tree_slots_begin;
+  std::vector<int> slot_of_joint;  // tree index of each model joint
   std::vector<Eigen::Index> quaternion_offsets;
   // Where the speeds and the work ledger start in y, and y's size.
   Eigen::Index speeds = 0, ledger = 0, dimension = 0;
@@ -41,6 +46,11 @@ struct ArticulatedModel {
   std::vector<EventSpec> event_specs;
 
   std::size_t body_count() const { return model.bodies.size(); }
+  // The joints of the tree whose root is `root`, parents first.
+  std::span<const std::size_t> slots_of_tree(std::size_t root) const {
+    return std::span<const std::size_t>(tree_slots)
+        .subspan(tree_slots_begin[root], tree_slots_begin[root + 1] - tree_slots_begin[root]);
+  }
   // The ledger's entries by name, in order.
   std::vector<std::string> element_names() const;
   // Locked hinges, hinges driven at a speed, fixed joints: their acceleration is known.

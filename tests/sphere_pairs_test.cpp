@@ -22,8 +22,12 @@
 //  - A ball bounces off a dome (a sphere welded to ground), frictionless and with friction.
 //  - A rolling cue ball strikes an object ball on a table: both slide, then roll at 2/7 and 5/7
 //    of its speed.
+//  - A small ball rolling into a big one at rest on the table lifts it off, the small one held by
+//    the table in the impulse: the big one's flight against the impulse's closed form.
 //  - A millimetre ball at 100 m/s is not stepped through.
 //  - A group makes every pair of its bodies a contact (but those a joint joins).
+//  - A ball settling onto the first of two touching balls settles the row at once: one plastic
+//    impulse, the three at v0 / 3.
 //  - `tumble find` brackets the restitution at which a striker stops, to 1e-12.
 //  - `tumble modes` takes the cradle hanging with its balls apart (five pendulums), and refuses
 //    it touching.
@@ -292,6 +296,54 @@ TEST(SpherePairs, NewtonsCradleHandsTheStrikeDownTheRowOnePairAtATime) {
 // touch_ball1_ball3, touch_ball2_ball3), and a strike down the row as the cradle's: the third ball
 // leaves with the first's speed, the other two at rest. A pair that a joint joins to each other
 // is left out, unless `joined: true`.
+// A ball meets the first of two balls that touch, slower than a settling touchdown: the
+// settling impulse holds the touching pair it drives together too, so the three settle at once,
+// one plastic impulse on the row, and move on together at the momentum's speed v0 / 3, with a
+// third of the kinetic energy. (One pair at a time, the rounds handed the push back and forth,
+// each a fraction of the last: tens of events at one instant, converging to v0 / 3 only as far
+// as the pairs' round-off.)
+TEST(SpherePairs, ASettlingTouchdownSettlesATouchingRowAtOnce) {
+  const double r = 0.05, v0 = 5e-4;  // the settling speed: sqrt(2 g 1e-6 r) = 9.9e-4 m/s
+  const std::string yaml =
+      "tumble: 1\n"
+      "gravity: [0, 0, -" +
+      std::to_string(test::kG) +
+      "]\n"
+      "bodies:\n"
+      "  a: {shape: sphere, radius: 0.05, mass: 0.1, position: [-0.1001, 0, 0], velocity: [" +
+      std::to_string(v0) +
+      ", 0, 0]}\n"
+      "  b: {shape: sphere, radius: 0.05, mass: 0.1, position: [0, 0, 0]}\n"
+      "  c: {shape: sphere, radius: 0.05, mass: 0.1, position: [0.1, 0, 0]}\n"
+      "contacts:\n"
+      "  - {name: touch, type: bodies, bodies: [a, b, c], friction: 0, restitution: 0.5}\n"
+      "simulate: {duration: 0.3, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: "
+      "0.01}\n";
+  const test::ScenarioRun run = test::run_inline_scenario(yaml, "settling_row");
+  std::vector<std::string> seen;
+  for (const ContactEventRecord& event : run.contact_events) {
+    seen.push_back(run.contacts[event.contact].name + ": " + event.what);
+  }
+  ASSERT_EQ(run.contact_events.size(), 1u) << ::testing::PrintToString(seen);
+  const ContactEventRecord& settles = run.contact_events[0];
+  EXPECT_EQ(run.contacts[settles.contact].name, "touch_a_b");
+  EXPECT_NE(settles.what.find("settles"), std::string::npos) << settles.what;
+  EXPECT_NEAR(settles.t, 1e-4 / v0, 1e-12);
+  // The three fall together, their vertical speeds untouched: the impulse takes two thirds of
+  // the x motion's m v0^2 / 2 (to the round-off of KE, ~0.58 J by then).
+  EXPECT_NEAR(settles.kinetic_energy_before - settles.kinetic_energy_after, 0.1 * v0 * v0 / 3.0,
+              1e-14);
+  const test::Row& last = run.rows.back();
+  for (const BodyState& ball : last.states) {
+    EXPECT_NEAR(ball.v_G.x(), v0 / 3.0, 1e-12 * v0);
+  }
+  // Together from the instant they settled: each gap where it was then.
+  const double t = last.t - settles.t;
+  EXPECT_NEAR(last.states[1].r_G.x() - last.states[0].r_G.x(), 2 * r, 1e-12);
+  EXPECT_NEAR(last.states[2].r_G.x() - last.states[1].r_G.x(), 2 * r, 1e-12);
+  EXPECT_NEAR(last.states[2].r_G.x(), 0.1 + v0 / 3.0 * t, 1e-12);
+}
+
 TEST(SpherePairs, AGroupMakesEveryPairOfItAContact) {
   const std::string yaml =
       "tumble: 1\n"
@@ -593,6 +645,78 @@ TEST(SpherePairs, ARollingCueBallStrikingAnObjectBallFollowsAtTwoSevenths) {
   EXPECT_NEAR(last.states[0].omega_W.y(), 2 * v0 / 7 / R, 1e-10 * v0 / R);
   EXPECT_NEAR(last.states[1].omega_W.y(), 5 * v0 / 7 / R, 1e-10 * v0 / R);
   for (const ContactOutput& contact : last.extras.contacts) EXPECT_NE(contact.mode, 1);
+}
+
+// A small ball rolling on the table into a big ball at rest on it meets it below the big one's
+// centre: the line of centres n rises (n_z = (R_A - R_B) / (R_A + R_B)), and the frictionless
+// impulse P n lifts the big ball off the table, while the small one, driven into the table, is
+// held by it (its normal motion stopped, no friction in the instant). With the small ball's
+// vertical speed held at zero, Newton's law on the pair's normal speed gives
+//     P = (1 + e) v0 n_x / (1 / m_A + n_x^2 / m_B),
+// and the big ball flies: v_A = P n / m_A, its centre at R_A + v_z s - g s^2 / 2, s after the
+// impact. A third ball at rest elsewhere, its table contact listed first, is classified (rolls)
+// first after the jump: its projection must not take away the big ball's bounce, which it did
+// while the big ball's table contact was still marked rolling (the contacts a jump sends away are
+// let go first).
+TEST(SpherePairs, ASmallBallStrikingABigOneBelowItsCentreLiftsItOffTheTable) {
+  const double RA = 0.1, RB = 0.05, mA = 1.0, mB = 0.2, v0 = 3.0, e = 0.5;
+  const std::string yaml =
+      "tumble: 1\n"
+      "parameters: {RA: 0.1, RB: 0.05, v0: 3}\n"
+      "gravity: [0, 0, -" +
+      std::to_string(test::kG) +
+      "]\n"
+      "bodies:\n"
+      "  rest: {shape: sphere, radius: RB, mass: 0.2, position: [1, 1, RB]}\n"
+      "  big: {shape: sphere, radius: RA, mass: 1, position: [0, 0, RA]}\n"
+      "  small: {shape: sphere, radius: RB, mass: 0.2, position: [-0.5, 0, RB], "
+      "velocity: [v0, 0, 0], angular_velocity: [0, v0/RB, 0]}\n"
+      "contacts:\n"
+      "  - {name: rest_on_table, type: plane, body: rest, plane: {point: [0, 0, 0], normal: [0, 0, "
+      "1]}, friction: 0.5}\n"
+      "  - {name: big_on_table, type: plane, body: big, plane: {point: [0, 0, 0], normal: [0, 0, "
+      "1]}, friction: 0.5}\n"
+      "  - {name: small_on_table, type: plane, body: small, plane: {point: [0, 0, 0], normal: [0, "
+      "0, 1]}, friction: 0.5}\n"
+      "  - {name: hit, type: bodies, bodies: [small, big], friction: 0, restitution: 0.5}\n"
+      "simulate: {duration: 0.16, integrator: dop853, rtol: 1e-12, atol: 1e-14, output_every: "
+      "0.002}\n";
+  const test::ScenarioRun run = test::run_inline_scenario(yaml, "lifted");
+  const double reach = std::sqrt((RA + RB) * (RA + RB) - (RA - RB) * (RA - RB));
+  const double t_impact = (0.5 - reach) / v0;
+  const Vec3 n(reach / (RA + RB), 0.0, (RA - RB) / (RA + RB));
+  const double P = (1.0 + e) * v0 * n.x() / (1.0 / mA + n.x() * n.x() / mB);
+  const Vec3 v_A = P * n / mA;
+  std::vector<std::string> seen;
+  for (const ContactEventRecord& event : run.contact_events) {
+    seen.push_back(run.contacts[event.contact].name + ": " + event.what);
+  }
+  int impacts = 0, lifts = 0;
+  for (const ContactEventRecord& event : run.contact_events) {
+    if (event.contact == 3) {
+      ++impacts;
+      EXPECT_NEAR(event.t, t_impact, 1e-12);
+    }
+    if (event.contact == 1 && event.what.rfind("lifts off", 0) == 0) {
+      ++lifts;
+      EXPECT_NEAR(event.t, t_impact, 1e-12);
+    }
+  }
+  EXPECT_EQ(impacts, 1) << ::testing::PrintToString(seen);
+  EXPECT_EQ(lifts, 1) << ::testing::PrintToString(seen);
+  // In flight until it lands again, 2 v_z / g after the impact.
+  int in_flight = 0;
+  for (const test::Row& row : run.rows) {
+    const double s = row.t - t_impact;
+    if (s <= 0.0 || s >= 2.0 * v_A.z() / test::kG) continue;
+    ++in_flight;
+    const BodyState& big = row.states[1];
+    EXPECT_NEAR(big.v_G.x(), v_A.x(), 1e-11 * v0);
+    EXPECT_NEAR(big.v_G.z(), v_A.z() - test::kG * s, 1e-11 * v0);
+    EXPECT_NEAR(big.r_G.z(), RA + v_A.z() * s - 0.5 * test::kG * s * s, 1e-11 * RA);
+    EXPECT_NEAR(big.omega_W.norm(), 0.0, 1e-11 * v0 / RA);  // frictionless: no spin
+  }
+  EXPECT_GT(in_flight, 10);
 }
 
 TEST(SpherePairs, TheReaderAndTheStartRefuseWhatTheyCannotTake) {

@@ -26,6 +26,7 @@ ContactData::ContactData(std::span<const PlaneContact> contacts, std::size_t bod
   reserve_rows(kMostRowsPerContact * (contacts.size() - screened) + kPairRows * pairs);
   impact_y.resize(dimension);
   held_in_impact.assign(contacts.size(), 0);
+  slipping_after_jump.assign(contacts.size(), 0);
   onset_y.resize(dimension);
   onset_dydt.resize(dimension);
   boxes.resize(screen.bodies().size());

@@ -120,6 +120,8 @@ struct ContactData {
   VecX impact_y;                     // impact()'s
   // Per contact, a pair's impulse (sphere_pairs.cpp): whether a touching plane is held in it.
   std::vector<char> held_in_impact;
+  // Per contact, classify_touching's: whether a jump left it slipping while it rolled.
+  std::vector<char> slipping_after_jump;
   ContactStatus landing;     // impact()'s: the part it lands on, reserved for the most vertices
   VecX onset_y, onset_dydt;  // turn_starting_slip()'s
   // The broad phase's: which contacts a step watches, and its bodies' boxes (broad_phase.hpp).

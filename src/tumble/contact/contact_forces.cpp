@@ -139,11 +139,19 @@ Vec3 ContactSystem::slide_direction(std::size_t c, bool* follows_slip) const {
   const ContactStatus& status = s_.contacts[c];
   const Vec3& slip_W = d_.now[c].slip_W;
   const double slip = slip_W.norm();
-  // Below slip_zero a grown slip is still followed while it keeps to the way it went at the start
-  // of the step; past that (it stopped within the step) friction stays as it was, so that the
-  // right-hand side runs on smoothly through the stop that the slip-stop event locates.
-  const bool followed = slip > status.slip_zero || (status.slip_grown && slip > status.slip_floor &&
-                                                    slip_W.dot(status.slide_direction_W) > 0.0);
+  // The slip is followed while it is above slip_zero, or has grown and keeps to the way it went
+  // at the start of the step (down to slip_floor); past that (it stopped within the step)
+  // friction stays as it was, so that the right-hand side runs on smoothly through the stop that
+  // the slip-stop event locates. So it does for a slip above slip_zero that has gone back, more
+  // than 135 degrees round from that way: a stage of a long step that lands past the stop. Were
+  // it followed there, friction would flip within the step, and the step would be rejected, and
+  // again, until it were too short to reach the stop (a ball sliding to rolling took 20 rejected
+  // steps, down to 2e-8 s, before its slip stopped). A slip that turns (a spinning body's) turns
+  // far less within a step.
+  const double along = slip_W.dot(status.slide_direction_W);
+  const bool went_back = along < -std::sqrt(0.5) * slip;
+  const bool followed = (slip > status.slip_zero && !went_back) ||
+                        (status.slip_grown && slip > status.slip_floor && along > 0.0);
   if (follows_slip != nullptr) *follows_slip = followed;
   if (followed) return slip_W / slip;
   if (status.slide_turn_W.isZero(0.0)) return status.slide_direction_W;

@@ -473,10 +473,20 @@ void ContactSystem::on_end_slip_event(std::size_t c, double t, VecX& y) {
   note_contact(t, c, fmt::format("slip stops at {}", pairs_[c]->end_name(v, stopping)));
   // What is left of its slip goes (the least kinetic-energy change that holds that end), so that
   // the end counts as at rest: left at up to kSlipStoppedNear slip_zero, it would count as
-  // sliding, and stop again at once.
+  // sliding, and stop again at once. The other end, sliding with a slip as near zero, has stopped
+  // with it (a cone's side coming to roll, its two ends stopping within round-off of each other):
+  // what is left of its slip goes too, else it would stop again an instant on, or not, as
+  // round-off fell.
+  const auto other = static_cast<std::size_t>(1 - stopping);
+  const bool both = status.pinned_end < 0 &&
+                    d_.now[c].end_slip_W[other].norm() <= kSlipStoppedNear * status.slip_zero;
   const int pinned = status.pinned_end;
   status.pinned_end = stopping;
   project(t, y);
+  if (both) {
+    status.pinned_end = static_cast<int>(other);
+    project(t, y);
+  }
   status.pinned_end = pinned;
   classify_contact(c, t, y);
 }
@@ -935,14 +945,33 @@ void ContactSystem::reclassify(double t, VecX& y, bool speeds_jumped) {
 
 void ContactSystem::classify_touching(double t, VecX& y, bool speeds_jumped,
                                       const char* lifts_off) {
-  for (const std::size_t c : watched()) {
-    if (s_.contacts[c].mode == ContactMode::Apart) continue;
-    if (speeds_jumped && !still_touches_after_jump(c, y)) {
+  // After a jump, the contacts that it sends away are let go, and those it left slipping are
+  // classified (they slide), before the others: one classified to roll projects every touching
+  // contact's velocities onto its mode's constraints, and would take away the bounce or the slip
+  // of a contact whose mode is still the one from before the jump (a ball struck off the floor
+  // would stay on it; a ball that rolled into a wall, stopped there and still spinning, would
+  // roll again, into the wall).
+  std::vector<char>& first = d_.slipping_after_jump;
+  std::fill(first.begin(), first.end(), 0);
+  if (speeds_jumped) {
+    for (const std::size_t c : watched()) {
+      if (s_.contacts[c].mode == ContactMode::Apart || still_touches_after_jump(c, y)) continue;
       set_apart(c);
       note_contact(t, c, lifts_off);
-      continue;
     }
-    classify_contact(c, t, y);
+    dynamics_.calc_motion(y, true);
+    calc_contact_points();
+    for (const std::size_t c : watched()) {
+      const ContactStatus& status = s_.contacts[c];
+      if (status.mode == ContactMode::Rolling && d_.now[c].slip_W.norm() > status.slip_zero) {
+        first[c] = 1;
+      }
+    }
+  }
+  for (const int pass : {1, 0}) {
+    for (const std::size_t c : watched()) {
+      if (s_.contacts[c].mode != ContactMode::Apart && first[c] == pass) classify_contact(c, t, y);
+    }
   }
 }
 

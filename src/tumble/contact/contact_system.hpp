@@ -355,12 +355,16 @@ class ContactSystem {
   void pair_impulse(std::size_t contact, double t, VecX& y);
   // Marks in d_.held_in_impact each touching plane contact, not marked yet, of a body that moves
   // with either of the pair's, that the pair's impulse applied at d_.impact_y drives into its
-  // plane; whether it marked any.
-  bool hold_planes_driven_in(std::size_t contact);
+  // plane; `settling`, each touching pair too (but the pair itself) that comes together, no
+  // faster than a settling touchdown. Returns whether it marked any.
+  bool hold_driven_in(std::size_t contact, bool settling);
+  // Whether pair k has a body that moves with a body of the pair, or of a held contact.
+  bool tied_to_held(std::size_t contact, std::size_t k) const;
   // The pair's impulse (world, on its body) with Newton's e on its normal motion, Coulomb's
-  // friction if `friction`, and the marked planes held (their normal motion stopped); from y into
-  // d_.impact_y.
-  Vec3 pair_impulse_holding_planes(std::size_t contact, double e, bool friction, const VecX& y);
+  // friction if `friction`, and the marked planes and pairs held (their normal motion stopped);
+  // from y into d_.impact_y.
+  Vec3 pair_impulse_holding(std::size_t contact, double e, bool friction, bool settling,
+                            const VecX& y);
 
   std::span<const PlaneContact> contacts_;  // the model's: constant, shared by every run
   std::vector<const ContactPair*> pairs_;   // per contact: its pair, from contact_pair()'s table

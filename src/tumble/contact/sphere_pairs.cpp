@@ -399,9 +399,27 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   }
 }
 
-bool ContactSystem::hold_planes_driven_in(std::size_t c) {
+bool ContactSystem::tied_to_held(std::size_t c, std::size_t k) const {
+  // The impulse moves the pair's bodies, and those that the held contacts tie to them.
+  const auto moves_with_contact = [&](std::size_t body, std::size_t held) {
+    const PlaneContact& contact = contacts_[held];
+    return dynamics_.moves_with(body, contact.body) ||
+           (contact.touches_a_body() && dynamics_.moves_with(body, contact.other_body));
+  };
+  for (const std::size_t body : {contacts_[k].body, contacts_[k].other_body}) {
+    if (!dynamics_.can_move(body)) continue;
+    if (moves_with_contact(body, c)) return true;
+    for (const std::size_t held : watched()) {
+      if (d_.held_in_impact[held] != 0 && moves_with_contact(body, held)) return true;
+    }
+  }
+  return false;
+}
+
+bool ContactSystem::hold_driven_in(std::size_t c, bool settling) {
   // At d_.impact_y: the touching plane contacts of the bodies that move with either of the
-  // pair's whose points go into their planes.
+  // pair's whose points go into their planes; settling, the touching pairs too that come together
+  // no faster than a settling touchdown.
   const PlaneContact& pair = contacts_[c];
   dynamics_.calc_motion(d_.impact_y, true);
   calc_contact_points();
@@ -409,15 +427,22 @@ bool ContactSystem::hold_planes_driven_in(std::size_t c) {
   for (const std::size_t k : watched()) {
     const ContactStatus& status = s_.contacts[k];
     const PlaneContact& contact = contacts_[k];
-    if (d_.held_in_impact[k] != 0 || contact.touches_a_body() ||
-        status.mode == ContactMode::Apart) {
+    if (d_.held_in_impact[k] != 0 || k == c) continue;
+    const ContactNow& now = d_.now[k];
+    if (contact.touches_a_body()) {
+      const double approach = -now.support_normal_speed;
+      if (settling && now.support.height <= status.landing_height && approach > status.slip_zero &&
+          approach <= status.settle_speed && tied_to_held(c, k)) {
+        d_.held_in_impact[k] = 1;
+        more = true;
+      }
       continue;
     }
+    if (status.mode == ContactMode::Apart) continue;
     if (!dynamics_.moves_with(contact.body, pair.body) &&
         !dynamics_.moves_with(contact.body, pair.other_body)) {
       continue;
     }
-    const ContactNow& now = d_.now[k];
     for (int i = 0; i < now.normal_point_count; ++i) {
       if (normal_speed(k, now.normal_points_B[static_cast<std::size_t>(i)]) < -status.slip_zero) {
         d_.held_in_impact[k] = 1;
@@ -428,14 +453,14 @@ bool ContactSystem::hold_planes_driven_in(std::size_t c) {
   return more;
 }
 
-Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool friction,
-                                                const VecX& y) {
+Vec3 ContactSystem::pair_impulse_holding(std::size_t c, double e, bool friction, bool settling,
+                                         const VecX& y) {
   const PlaneContact& contact = contacts_[c];
   // The impulses that give the pair's normal motion -e of what it had (its slip stopped, if that
   // fits in the cone; else mu of the normal impulse against the slip) and stop the held planes'
   // normal motion, frictionless (their friction is theirs to take after, as they are classified
-  // again). A plane that would pull is let go, one driven in by the result is held, until
-  // neither changes.
+  // again). A plane (or pair) that would pull is let go, one driven in by the result is held,
+  // until neither changes.
   Vec3 impulse_W = Vec3::Zero();
   for (int round = 0; round < kHoldingRounds; ++round) {
     dynamics_.calc_motion(y, true);
@@ -482,8 +507,8 @@ Vec3 ContactSystem::pair_impulse_holding_planes(std::size_t c, double e, bool fr
     }
     d_.impact_y = y;
     apply_contact_impulses(count, d_.x, d_.impact_y);
-    // A plane not held that the result drives in is held too.
-    if (!changed && !hold_planes_driven_in(c)) break;
+    // A plane (or pair) not held that the result drives in is held too.
+    if (!changed && !hold_driven_in(c, settling)) break;
   }
   return impulse_W;
 }
@@ -561,10 +586,13 @@ void ContactSystem::pair_impulse(std::size_t c, double t, VecX& y) {
     d_.impact_y = y;
     dynamics_.apply_speed_jumps(d_.impact_y);
     // A body resting on a plane that this impulse would drive into it (a ball struck from above,
-    // on the floor): the plane takes its part of the blow in the same instant.
+    // on the floor): the plane takes its part of the blow in the same instant. A settling
+    // impulse holds the touching pairs it drives together too: a cluster of touching balls
+    // settles at once, where one pair at a time would hand the push back and forth, each round
+    // a fraction of the last, down to round-off.
     std::fill(d_.held_in_impact.begin(), d_.held_in_impact.end(), 0);
-    if (hold_planes_driven_in(c)) {
-      impulse_W = pair_impulse_holding_planes(c, law.e, law.friction, y);
+    if (hold_driven_in(c, settles)) {
+      impulse_W = pair_impulse_holding(c, law.e, law.friction, settles, y);
     }
     dynamics_.calc_motion(d_.impact_y, true);
     work = dynamics_.kinetic_energy() - energy_before;

@@ -712,6 +712,28 @@ void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed)
       contacts_[c].friction));
 }
 
+void ContactSystem::check_slip_stop_cascade(std::size_t c, double t) {
+  ContactStatus& status = s_.contacts[c];
+  // A slip stop that slides on at once, with its friction out of the cone, and that follows the
+  // last one within kCascadeGap of the time scale continues a cascade (the counters a landing
+  // cascade keeps: either kind of event undone at once); anything else ends it.
+  const bool undone = status.mode == ContactMode::Sliding;
+  const bool follows = t - status.cascade_last_t <= kCascadeGap * status.time_scale;
+  if (undone && !follows) status.cascade_first_t = t;
+  status.cascade_landings = undone ? (follows ? status.cascade_landings + 1 : 1) : 0;
+  status.cascade_last_t = t;
+  if (status.cascade_landings < kCascadeLandings) return;
+  // A body wedged as it slides (a ball between a wall, the floor and another ball): each slip
+  // that stops starts again at once, no mode holding it; as Painleve's case, a jam (an impulse)
+  // would resolve it, not built.
+  throw std::runtime_error(fmt::format(
+      "contact '{}': {} slip stops from t = {:.9g} to {:.9g} s, each sliding on at once: no "
+      "contact mode holds its friction here (the body is wedged as it slides, its contacts' "
+      "friction {} pressing it on); lower the friction",
+      contacts_[c].name, status.cascade_landings, status.cascade_first_t, t,
+      contacts_[c].friction));
+}
+
 void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
   const std::size_t first_new = s_.events.size();
   d_.time_now = t;
@@ -771,6 +793,7 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
           status.mode = ContactMode::Sliding;
         }
         classify_contact(c, t, y);
+        check_slip_stop_cascade(c, t);
       } else {
         calc_accelerations(y);
         if (start_sliding(c, t, y)) {

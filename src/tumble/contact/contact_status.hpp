@@ -52,7 +52,8 @@ struct ContactStatus {
   // A grown slip left below slip_zero by the last step stops at slip_stop_by (s).
   bool slip_stop_armed = false;
   double slip_stop_by = 0.0;
-  // Settled landings in a row that nothing held, from cascade_first_t; the last landing's t.
+  // Events in a row that the same instant undoes, from cascade_first_t (settled landings that
+  // nothing held; slip stops that slid on at once); the last one's t.
   int cascade_landings = 0;
   double cascade_first_t = 0.0, cascade_last_t = 0.0;
   double slip_zero = 0.0;        // m/s: slower slip counts as none

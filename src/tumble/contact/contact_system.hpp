@@ -300,6 +300,9 @@ class ContactSystem {
   // After a settled landing at `speed`: throws std::runtime_error where such landings have
   // come kCascadeLandings in a row, each going apart at once (no consistent mode).
   void check_landing_cascade(std::size_t contact, double t, double speed);
+  // After a slip stop: throws std::runtime_error where such stops have come kCascadeLandings in a
+  // row, each sliding on at once.
+  void check_slip_stop_cascade(std::size_t contact, double t);
   void note_contact(double t, std::size_t contact, std::string what,
                     std::optional<ContactImpactNumbers> impact = std::nullopt);
   // The numbers of the events from `first` on, in the state y they leave: the kinetic energy

@@ -692,16 +692,21 @@ void ContactSystem::release_contacts_sent_away(std::size_t landed, double t, Vec
   }
 }
 
-void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed) {
+bool ContactSystem::cascade_goes_on(std::size_t c, double t, bool undone) {
   ContactStatus& status = s_.contacts[c];
-  // A settled landing that nothing holds (it goes apart at once) and that follows the last one
-  // within kCascadeGap of the time scale continues a cascade; anything else ends it.
-  const bool unheld = status.mode == ContactMode::Apart;
+  // An event that the same instant undoes (a settled landing that nothing holds; a slip stop
+  // that slides on at once) and that follows the last one within kCascadeGap of the time scale
+  // continues a cascade; anything else ends it. Past kCascadeLandings in a row it would not end.
   const bool follows = t - status.cascade_last_t <= kCascadeGap * status.time_scale;
-  if (unheld && !follows) status.cascade_first_t = t;
-  status.cascade_landings = unheld ? (follows ? status.cascade_landings + 1 : 1) : 0;
+  if (undone && !follows) status.cascade_first_t = t;
+  status.cascade_landings = undone ? (follows ? status.cascade_landings + 1 : 1) : 0;
   status.cascade_last_t = t;
-  if (status.cascade_landings < kCascadeLandings) return;
+  return status.cascade_landings >= kCascadeLandings;
+}
+
+void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed) {
+  const ContactStatus& status = s_.contacts[c];
+  if (!cascade_goes_on(c, t, status.mode == ContactMode::Apart)) return;
   // Painleve's inconsistent case: friction presses it on while it slides, yet with no force it
   // goes into the plane; the literature resolves it by an impulse (a jam), not built.
   throw std::runtime_error(fmt::format(
@@ -713,16 +718,8 @@ void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed)
 }
 
 void ContactSystem::check_slip_stop_cascade(std::size_t c, double t) {
-  ContactStatus& status = s_.contacts[c];
-  // A slip stop that slides on at once, with its friction out of the cone, and that follows the
-  // last one within kCascadeGap of the time scale continues a cascade (the counters a landing
-  // cascade keeps: either kind of event undone at once); anything else ends it.
-  const bool undone = status.mode == ContactMode::Sliding;
-  const bool follows = t - status.cascade_last_t <= kCascadeGap * status.time_scale;
-  if (undone && !follows) status.cascade_first_t = t;
-  status.cascade_landings = undone ? (follows ? status.cascade_landings + 1 : 1) : 0;
-  status.cascade_last_t = t;
-  if (status.cascade_landings < kCascadeLandings) return;
+  const ContactStatus& status = s_.contacts[c];
+  if (!cascade_goes_on(c, t, status.mode == ContactMode::Sliding)) return;
   // A body wedged as it slides (a ball between a wall, the floor and another ball): each slip
   // that stops starts again at once, no mode holding it; as Painleve's case, a jam (an impulse)
   // would resolve it, not built.

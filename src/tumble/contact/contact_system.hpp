@@ -303,6 +303,9 @@ class ContactSystem {
   // After a slip stop: throws std::runtime_error where such stops have come kCascadeLandings in a
   // row, each sliding on at once.
   void check_slip_stop_cascade(std::size_t contact, double t);
+  // Counts an event in the contact's cascade (`undone`: the same instant undid it); whether the
+  // cascade has come kCascadeLandings in a row.
+  bool cascade_goes_on(std::size_t contact, double t, bool undone);
   void note_contact(double t, std::size_t contact, std::string what,
                     std::optional<ContactImpactNumbers> impact = std::nullopt);
   // The numbers of the events from `first` on, in the state y they leave: the kinetic energy

@@ -6,7 +6,7 @@ namespace tumble {
 
 ContactData::ContactData(std::span<const PlaneContact> contacts, std::size_t bodies,
                          Eigen::Index dimension)
-    : group_parent(bodies), group_island(bodies), screen(contacts) {
+    : group_parent(bodies), group_island(bodies), tied_group(bodies, 0), screen(contacts) {
   std::size_t most_vertices = 0;
   for (const PlaneContact& contact : contacts) {
     most_vertices = std::max(most_vertices, contact.surface.vertices.size());

@@ -115,6 +115,8 @@ struct ContactData {
   std::vector<Eigen::Index> island_rows, island_ends;
   VecX island_x;
   std::vector<std::size_t> group_parent, group_island;
+  // Per motion group, a pair's settling impulse's: whether it moves in that impulse.
+  std::vector<char> tied_group;
   std::vector<BodyWrench> wrenches;  // two per row and per contact: forces or impulses
   std::vector<int> touching;         // find_touching_vertices's, reserved for the most vertices
   VecX impact_y;                     // impact()'s

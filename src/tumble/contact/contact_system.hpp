@@ -364,8 +364,10 @@ class ContactSystem {
   // plane; `settling`, each touching pair too (but the pair itself) that comes together, no
   // faster than a settling touchdown. Returns whether it marked any.
   bool hold_driven_in(std::size_t contact, bool settling);
-  // Whether pair k has a body that moves with a body of the pair, or of a held contact.
-  bool tied_to_held(std::size_t contact, std::size_t k) const;
+  // Marks in d_.tied_group the motion groups of the pair's bodies and the held contacts'; then
+  // whether contact k has a body in a marked group.
+  void mark_tied_groups(std::size_t contact);
+  bool tied(std::size_t k) const;
   // The pair's impulse (world, on its body) with Newton's e on its normal motion, Coulomb's
   // friction if `friction`, and the marked planes and pairs held (their normal motion stopped);
   // from y into d_.impact_y.

@@ -399,21 +399,30 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   }
 }
 
-bool ContactSystem::tied_to_held(std::size_t c, std::size_t k) const {
-  // The impulse moves the pair's bodies, and those that the held contacts tie to them.
-  const auto moves_with_contact = [&](std::size_t body, std::size_t held) {
-    const PlaneContact& contact = contacts_[held];
-    return dynamics_.moves_with(body, contact.body) ||
-           (contact.touches_a_body() && dynamics_.moves_with(body, contact.other_body));
-  };
-  for (const std::size_t body : {contacts_[k].body, contacts_[k].other_body}) {
-    if (!dynamics_.can_move(body)) continue;
-    if (moves_with_contact(body, c)) return true;
-    for (const std::size_t held : watched()) {
-      if (d_.held_in_impact[held] != 0 && moves_with_contact(body, held)) return true;
+void ContactSystem::mark_tied_groups(std::size_t c) {
+  // The impulse moves the pair's bodies, and those that the held contacts tie to them: their
+  // motion groups are marked (once a pass, not once a candidate: a bin's settling pass looks at
+  // hundreds of pairs).
+  std::fill(d_.tied_group.begin(), d_.tied_group.end(), 0);
+  const auto mark = [&](std::size_t k) {
+    const PlaneContact& contact = contacts_[k];
+    if (dynamics_.can_move(contact.body)) d_.tied_group[dynamics_.motion_group(contact.body)] = 1;
+    if (contact.touches_a_body() && dynamics_.can_move(contact.other_body)) {
+      d_.tied_group[dynamics_.motion_group(contact.other_body)] = 1;
     }
+  };
+  mark(c);
+  for (const std::size_t k : watched()) {
+    if (d_.held_in_impact[k] != 0) mark(k);
   }
-  return false;
+}
+
+bool ContactSystem::tied(std::size_t k) const {
+  const PlaneContact& contact = contacts_[k];
+  const auto marked = [&](std::size_t body) {
+    return dynamics_.can_move(body) && d_.tied_group[dynamics_.motion_group(body)] != 0;
+  };
+  return marked(contact.body) || (contact.touches_a_body() && marked(contact.other_body));
 }
 
 bool ContactSystem::hold_driven_in(std::size_t c, bool settling) {
@@ -423,6 +432,7 @@ bool ContactSystem::hold_driven_in(std::size_t c, bool settling) {
   const PlaneContact& pair = contacts_[c];
   dynamics_.calc_motion(d_.impact_y, true);
   calc_contact_points();
+  if (settling) mark_tied_groups(c);
   bool more = false;
   for (const std::size_t k : watched()) {
     const ContactStatus& status = s_.contacts[k];
@@ -432,7 +442,7 @@ bool ContactSystem::hold_driven_in(std::size_t c, bool settling) {
     if (contact.touches_a_body()) {
       const double approach = -now.support_normal_speed;
       if (settling && now.support.height <= status.landing_height && approach > status.slip_zero &&
-          approach <= status.settle_speed && tied_to_held(c, k)) {
+          approach <= status.settle_speed && tied(k)) {
         d_.held_in_impact[k] = 1;
         more = true;
       }

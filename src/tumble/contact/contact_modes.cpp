@@ -971,8 +971,8 @@ void ContactSystem::classify_touching(double t, VecX& y, bool speeds_jumped,
   // of a contact whose mode is still the one from before the jump (a ball struck off the floor
   // would stay on it; a ball that rolled into a wall, stopped there and still spinning, would
   // roll again, into the wall).
-  std::vector<char>& first = d_.slipping_after_jump;
-  std::fill(first.begin(), first.end(), 0);
+  std::vector<char>& slipping = d_.slipping_after_jump;
+  std::fill(slipping.begin(), slipping.end(), 0);
   if (speeds_jumped) {
     for (const std::size_t c : watched()) {
       if (s_.contacts[c].mode == ContactMode::Apart || still_touches_after_jump(c, y)) continue;
@@ -984,13 +984,15 @@ void ContactSystem::classify_touching(double t, VecX& y, bool speeds_jumped,
     for (const std::size_t c : watched()) {
       const ContactStatus& status = s_.contacts[c];
       if (status.mode == ContactMode::Rolling && d_.now[c].slip_W.norm() > status.slip_zero) {
-        first[c] = 1;
+        slipping[c] = 1;
       }
     }
   }
   for (const int pass : {1, 0}) {
     for (const std::size_t c : watched()) {
-      if (s_.contacts[c].mode != ContactMode::Apart && first[c] == pass) classify_contact(c, t, y);
+      if (s_.contacts[c].mode != ContactMode::Apart && slipping[c] == pass) {
+        classify_contact(c, t, y);
+      }
     }
   }
 }

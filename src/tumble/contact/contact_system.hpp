@@ -367,7 +367,7 @@ class ContactSystem {
   // Marks in d_.tied_group the motion groups of the pair's bodies and the held contacts'; then
   // whether contact k has a body in a marked group.
   void mark_tied_groups(std::size_t contact);
-  bool tied(std::size_t k) const;
+  bool moved_by_impulse(std::size_t k) const;
   // The pair's impulse (world, on its body) with Newton's e on its normal motion, Coulomb's
   // friction if `friction`, and the marked planes and pairs held (their normal motion stopped);
   // from y into d_.impact_y.

@@ -417,7 +417,7 @@ void ContactSystem::mark_tied_groups(std::size_t c) {
   }
 }
 
-bool ContactSystem::tied(std::size_t k) const {
+bool ContactSystem::moved_by_impulse(std::size_t k) const {
   const PlaneContact& contact = contacts_[k];
   const auto marked = [&](std::size_t body) {
     return dynamics_.can_move(body) && d_.tied_group[dynamics_.motion_group(body)] != 0;
@@ -442,7 +442,7 @@ bool ContactSystem::hold_driven_in(std::size_t c, bool settling) {
     if (contact.touches_a_body()) {
       const double approach = -now.support_normal_speed;
       if (settling && now.support.height <= status.landing_height && approach > status.slip_zero &&
-          approach <= status.settle_speed && tied(k)) {
+          approach <= status.settle_speed && moved_by_impulse(k)) {
         d_.held_in_impact[k] = 1;
         more = true;
       }

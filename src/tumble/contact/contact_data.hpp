@@ -60,6 +60,10 @@ struct ContactNow {
   Vec3 pair_normal_W = Vec3::UnitZ();
   Vec3 other_reference_B = Vec3::Zero();
   Vec3 other_reference_rate_B = Vec3::Zero();
+  // The body's core's point (its axes, from its COM: the sphere's centre; a capsule's axis's point
+  // nearest the other capsule's) and how fast it slides over the body.
+  Vec3 core_B = Vec3::Zero();
+  Vec3 core_rate_B = Vec3::Zero();
   // The other body's core's point nearest the sphere's centre (its axes, from its COM: a
   // sphere's centre, a box's nearest point) and how fast it slides over that body; and what n's
   // turning adds to the gap's second derivative, n' . (the centre's velocity less that point's).

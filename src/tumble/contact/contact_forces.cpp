@@ -57,8 +57,10 @@ ContactSystem::ContactSystem(std::span<const PlaneContact> contacts,
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     const PlaneContact& contact = contacts_[c];
     reserve_feature(s_.contacts[c].feature, contact.surface.vertices.size());
-    pairs_.push_back(&contact_pair(contact.surface.kind));
     const bool pair = contact.touches_a_body();
+    // Two bodies touch at one point, whatever their shapes, as a sphere touches a plane: a
+    // capsule against a capsule takes the sphere's part (none to settle, tip or stick on).
+    pairs_.push_back(&contact_pair(pair ? ContactSurface::Kind::Sphere : contact.surface.kind));
     const bool held = !dynamics_.moves_freely(contact.body);
     // A polyhedron's points are held one by one on a held body; two bodies' spheres touch at one
     // point (sphere_pairs.cpp), which either may hold.

@@ -50,8 +50,9 @@ struct ContactSurface {
 
 // A contact between two bodies' surfaces (`type: bodies`) is one of these too, so that every
 // contact has its place in the model's list, its columns, events and ledger entry: `body`'s
-// surface (a sphere) touches `other_body`'s other_surface (a sphere, a box or a capsule:
-// pair_core.hpp), and point_W and normal_W are unused (sphere_pairs.cpp).
+// surface (a sphere) touches `other_body`'s other_surface (a sphere, a box, a capsule, ...:
+// pair_core.hpp), or a capsule touches a capsule (axes_closest.hpp), and point_W and normal_W
+// are unused (sphere_pairs.cpp).
 struct PlaneContact {
   static constexpr std::size_t kNoOtherBody = static_cast<std::size_t>(-1);
 

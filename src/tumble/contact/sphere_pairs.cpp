@@ -1,14 +1,16 @@
-// A body's sphere touching another body's sphere, capsule or box (docs/scenario.md, "Bodies that
-// touch each other"): a contact between two bodies, free or held by joints, in one tree or not. The
-// pair is apart, its gap watched by the touchdown event, meets in an impact, or presses, slides
-// and rolls on itself in the modes a plane's contact has (contact_modes.cpp), with the same
-// events.
+// A body's sphere touching another body's sphere, capsule or box, or a body's capsule touching
+// another's capsule (docs/scenario.md, "Bodies that touch each other"): a contact between two
+// bodies, free or held by joints, in one tree or not. The pair is apart, its gap watched by the
+// touchdown event, meets in an impact, or presses, slides and rolls on itself in the modes a
+// plane's contact has (contact_modes.cpp), with the same events.
 //
 // The other surface is a core swept by a radius (pair_core.hpp): the gap is the sphere's
 // centre's distance from the core less the radii, and the normal n runs from the core's nearest
 // point p towards the centre. The gap's rate is n . (the centre's velocity less the other body's
 // point at p); the reference point O is the midpoint of the two surfaces' nearest points, which
-// is the contact point when they touch.
+// is the contact point when they touch. Two capsules are the same with the body's core its axis's
+// segment: its point nearest the other's axis slides over the body too (axes_closest.hpp), and
+// stands where the sphere's centre stood.
 //
 // Touching, the rows are a plane's, relative: the normal row holds the gap's rate, measured at
 // the centre and at p (p sliding over the other body), and its rate gains n's turning, n' . v
@@ -34,6 +36,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "tumble/contact/axes_closest.hpp"
 #include "tumble/contact/contact_scales.hpp"
 #include "tumble/contact/contact_system.hpp"
 #include "tumble/contact/landing_bound.hpp"
@@ -79,6 +82,10 @@ Vec3 point_response_W(const BodyMotion& w, const Vec3& p_B) {
 // other body's point at p. n turns with the centre's motion relative to the other body that p
 // does not follow, over the distance, and with that body's turning.
 struct PairLine {
+  // The body's core's point (body axes, from its COM: a sphere's centre; a capsule's axis's point
+  // nearest the other's) and how fast it slides over the body.
+  Vec3 core_B = Vec3::Zero();
+  Vec3 core_rate_B = Vec3::Zero();
   Vec3 n_W = Vec3::UnitZ();
   Vec3 n_rate_W = Vec3::Zero();
   double distance = 0.0;
@@ -88,8 +95,53 @@ struct PairLine {
   // n_rate_W . relative_velocity_W: what n's turning adds to the gap's second derivative.
   double turning = 0.0;
 };
-PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
+// Two capsules (axes_closest.hpp): the line between their axes' nearest points, each sliding along
+// its axis while inside its segment. The gap's rate is n . w, w the material points' relative
+// velocity (a point slides square to n); n turns with the rate of the points' difference, w plus
+// the slides, across n.
+PairLine capsules_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
+  const AxisSegment axis_a = capsule_axis_W(contact.surface, a.r_G_W, a.R_WB);
+  const AxisSegment axis_b = capsule_axis_W(contact.other_surface, b.r_G_W, b.R_WB);
+  const SegmentsClosest closest = segments_closest(axis_a, axis_b);
+  const Vec3 u_a_B = contact.surface.axes_B.col(2), u_b_B = contact.other_surface.axes_B.col(2);
   PairLine line;
+  line.core_B = contact.surface.centre_B + closest.s * u_a_B;
+  line.p_B = contact.other_surface.centre_B + closest.t * u_b_B;
+  const Vec3 apart_W = segments_apart_W(axis_a, axis_b, closest);
+  line.relative_velocity_W = point_velocity_W(a, line.core_B) - point_velocity_W(b, line.p_B);
+  const Vec3 omega_a_W = a.R_WB * a.velocity.head<3>(), omega_b_W = b.R_WB * b.velocity.head<3>();
+  const SlideRates rates =
+      segments_slide_rates(axis_a, axis_b, closest, apart_W, line.relative_velocity_W,
+                           omega_a_W.cross(axis_a.axis_W), omega_b_W.cross(axis_b.axis_W));
+  line.core_rate_B = rates.s * u_a_B;
+  line.p_rate_B = rates.t * u_b_B;
+  line.distance = apart_W.norm();
+  if (line.distance > 0.0) {
+    line.n_W = apart_W / line.distance;
+  } else {
+    // Axes that cross: square to both (any, where they are parallel as well).
+    const Vec3 across = axis_a.axis_W.cross(axis_b.axis_W);
+    Vec3 square = across, other;
+    if (across.norm() > 0.0) {
+      square.normalize();
+    } else {
+      plane_basis(axis_a.axis_W, square, other);
+    }
+    line.n_W = square;
+  }
+  const Vec3 apart_rate_W =
+      line.relative_velocity_W + rates.s * axis_a.axis_W - rates.t * axis_b.axis_W;
+  if (line.distance > 0.0) {
+    line.n_rate_W = (apart_rate_W - line.n_W * line.n_W.dot(apart_rate_W)) / line.distance;
+  }
+  line.turning = line.n_rate_W.dot(line.relative_velocity_W);
+  return line;
+}
+
+PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
+  if (contact.surface.kind == ContactSurface::Kind::Capsule) return capsules_line(contact, a, b);
+  PairLine line;
+  line.core_B = contact.surface.centre_B;
   const Vec3 centre_W = sphere_centre_W(a, contact.surface);
   if (contact.other_surface.kind == ContactSurface::Kind::Sphere) {
     // Two spheres: the line of their centres, in world axes (inside a shell, n and the distance
@@ -167,10 +219,13 @@ void ContactSystem::calc_pair_point(std::size_t c) const {
   // How fast O moves over each body: n turns at n_rate_W, and over a body turning at omega at
   // that less omega x n; on the other body O moves with p as well.
   const Vec3 omega_a_W = a.R_WB * a.velocity.head<3>(), omega_b_W = b.R_WB * b.velocity.head<3>();
-  now.reference_rate_B = -(contact.surface.radius + 0.5 * gap) * a.R_WB.transpose() *
-                         (line.n_rate_W - omega_a_W.cross(n));
+  now.reference_rate_B = line.core_rate_B - (contact.surface.radius + 0.5 * gap) *
+                                                a.R_WB.transpose() *
+                                                (line.n_rate_W - omega_a_W.cross(n));
   now.other_reference_rate_B = line.p_rate_B + (other_radius + 0.5 * gap) * b.R_WB.transpose() *
                                                    (line.n_rate_W - omega_b_W.cross(n));
+  now.core_B = line.core_B;
+  now.core_rate_B = line.core_rate_B;
   now.other_core_B = line.p_B;
   now.other_core_rate_B = line.p_rate_B;
   now.pair_turning = line.turning;
@@ -207,7 +262,9 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
   if (gap < -scales.touching_height) {
     const double radii = contact.surface.radius + core_radius(contact.other_surface);
     std::string how;
-    switch (contact.other_surface.kind) {
+    // (Two capsules: the body's surface is the first's, not a sphere.)
+    const bool capsules = contact.surface.kind == ContactSurface::Kind::Capsule;
+    switch (capsules ? ContactSurface::Kind::Capsule : contact.other_surface.kind) {
       case ContactSurface::Kind::Sphere:
         if (contact.other_surface.touched_inside) {
           how = fmt::format(
@@ -220,6 +277,13 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
                           radii + gap, radii);
         break;
       case ContactSurface::Kind::Capsule:
+        if (capsules) {
+          how = fmt::format(
+              "their axes between their caps' centres are {:.6g} m apart, their radii add to "
+              "{:.6g} m",
+              radii + gap, radii);
+          break;
+        }
         how = fmt::format(
             "the sphere's centre is {:.6g} m from the capsule's axis between its caps' centres, "
             "their radii add to {:.6g} m",
@@ -256,8 +320,7 @@ std::optional<ContactSystem::StartProblem> ContactSystem::pair_start_problem(std
 Vec3 ContactSystem::core_relative_acceleration_W(std::size_t c) const {
   const PlaneContact& contact = contacts_[c];
   const ContactNow& now = d_.now[c];
-  return moving_point_acceleration_W(dynamics_.motion(contact.body), contact.surface.centre_B,
-                                     Vec3::Zero()) -
+  return moving_point_acceleration_W(dynamics_.motion(contact.body), now.core_B, now.core_rate_B) -
          moving_point_acceleration_W(dynamics_.motion(contact.other_body), now.other_core_B,
                                      now.other_core_rate_B);
 }
@@ -315,7 +378,7 @@ Eigen::Index ContactSystem::append_pair_unknowns(std::size_t c, ContactMode mode
   const double mu = slides ? contact.friction : 0.0;
   const Vec3 along_W = slide_W - n * n.dot(slide_W);
   const double turning = rows == ContactRows::Motion ? now.pair_turning : 0.0;
-  add(contact.surface.centre_B, zero, now.other_core_B, now.other_core_rate_B, n, true,
+  add(now.core_B, now.core_rate_B, now.other_core_B, now.other_core_rate_B, n, true,
       n - mu * along_W, turning);
   if (mode == ContactMode::Sliding || rows == ContactRows::Position) return count;
   // Rolling or sticking: O's tangential velocity on the body less that on the other, as O moves

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "tumble/contact/axes_closest.hpp"
 #include "tumble/contact/contact_pair.hpp"
 #include "tumble/contact/pair_core.hpp"
 #include "tumble/modes/modal_pair.hpp"
@@ -55,13 +56,20 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
     const PlaneContact& contact = model.contacts[c];
     if (contact.touches_a_body()) {
       // Two bodies: apart, no force; touching, their points at the contact held together. The
-      // sphere's centre from the other body's core (pair_core.hpp), less the radii.
-      const std::size_t b = contact.other_body;
-      const Vec3 centre_W = r_G_W[contact.body] + R_WB[contact.body] * contact.surface.centre_B;
-      const CoreClosest closest =
-          core_closest(contact.other_surface, R_WB[b].transpose() * (centre_W - r_G_W[b]));
-      const double gap =
-          closest.distance - contact.surface.radius - core_radius(contact.other_surface);
+      // sphere's centre from the other body's core (pair_core.hpp), or two capsules' axes from
+      // each other (axes_closest.hpp), less the radii.
+      const std::size_t a = contact.body, b = contact.other_body;
+      double distance = 0.0;
+      if (contact.surface.kind == ContactSurface::Kind::Capsule) {
+        const AxisSegment axis_a = capsule_axis_W(contact.surface, r_G_W[a], R_WB[a]);
+        const AxisSegment axis_b = capsule_axis_W(contact.other_surface, r_G_W[b], R_WB[b]);
+        distance = segments_apart_W(axis_a, axis_b, segments_closest(axis_a, axis_b)).norm();
+      } else {
+        const Vec3 centre_W = r_G_W[a] + R_WB[a] * contact.surface.centre_B;
+        distance = core_closest(contact.other_surface, R_WB[b].transpose() * (centre_W - r_G_W[b]))
+                       .distance;
+      }
+      const double gap = distance - contact.surface.radius - core_radius(contact.other_surface);
       if (gap > kTouchingHeightPerSize * pair_size(contact)) continue;
       if (contact.other_surface.kind != ContactSurface::Kind::Sphere) {
         throw NotSteady(fmt::format(

@@ -3,8 +3,9 @@
 // shape whose contact with a plane tumble resolves: a sphere or shell, a round body (disk, ring,
 // torus, cylinder, tube, cone, capsule) or a polyhedron (docs/scenario.md, Contacts), or a
 // composite whose touching parts are (each a contact of its own). Two bodies touch at a sphere (or
-// shell) and a sphere, a capsule, a box, a cylinder, a tube, a disk, a ring, a torus or a cone
-// (each a body's shape or a composite's part: each pair of parts a contact of its own).
+// shell) and a sphere, a capsule, a box, a cylinder, a tube, a disk, a ring, a torus or a cone,
+// or at two capsules (each a body's shape or a composite's part: each pair of parts a contact of
+// its own).
 #include <fmt/format.h>
 #include <algorithm>
 #include <deque>
@@ -120,6 +121,10 @@ struct TouchingShape {
   std::string suffix;
   bool sphere() const { return is_sphere_or_shell(kind); }
 };
+// Whether two shapes touch each other: where one is a sphere (or shell), or both are capsules.
+bool touch_each_other(const TouchingShape& a, const TouchingShape& b) {
+  return a.sphere() || b.sphere() || (a.kind == ShapeKind::Capsule && b.kind == ShapeKind::Capsule);
+}
 // The body's shape, or a composite's parts that touch another body: its sphere, shell, capsule and
 // box parts, or where it has none of those its cylinder, tube, disk, ring, torus and cone parts
 // (so that a wheel or an axle beside a sphere part leaves that sphere the part that touches).
@@ -127,9 +132,9 @@ std::vector<TouchingShape> read_touching_shapes(const Reader& reader, const Fiel
                                                 const BodySpec& body) {
   const char* what =
       "two bodies touch at a sphere (or shell) and a sphere, a capsule, a box, a cylinder, a "
-      "tube, a disk, a ring, a torus or a cone, each a body's shape (or a composite's sphere, "
-      "shell, capsule or box parts, or where it has none of those its cylinder, tube, disk, "
-      "ring, torus or cone parts)";
+      "tube, a disk, a ring, a torus or a cone, or at two capsules, each a body's shape (or a "
+      "composite's sphere, shell, capsule or box parts, or where it has none of those its "
+      "cylinder, tube, disk, ring, torus or cone parts)";
   if (body.parts.empty()) {
     if (touches_a_body(body.shape.kind)) return {{-1, body.shape.kind, ""}};
     reader.fail_at_value(body_field, "body '" + body.name + "' is a " +
@@ -250,15 +255,16 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
       if (all && welded_to_ground(scenario, bodies[a]) && welded_to_ground(scenario, bodies[b])) {
         continue;
       }
-      // Each of a's touching parts against each of b's, but two of which neither is a sphere.
+      // Each of a's touching parts against each of b's, but two that do not touch each other
+      // (neither a sphere, nor both capsules).
       bool any = false;
       for (const TouchingShape& shape_a : shapes[a]) {
         for (const TouchingShape& shape_b : shapes[b]) {
-          if (!shape_a.sphere() && !shape_b.sphere()) continue;
+          if (!touch_each_other(shape_a, shape_b)) continue;
           any = true;
           // The sphere is the contact's body (its columns are the sphere's): another shape named
-          // first goes second.
-          const bool swap = !shape_a.sphere();
+          // first goes second. Two capsules keep the list's order.
+          const bool swap = !shape_a.sphere() && shape_b.sphere();
           const TouchingShape& first = swap ? shape_b : shape_a;
           const TouchingShape& second = swap ? shape_a : shape_b;
           ContactSpec pair;
@@ -287,22 +293,23 @@ void read_touching_bodies(const Reader& reader, const MapReader& map, const Scen
             list,
             kind_a == kind_b
                 ? fmt::format("two {} do not touch each other yet: one of the two "
-                              "bodies must be a sphere (or shell)",
+                              "bodies must be a sphere (or shell), or both capsules",
                               kind_a == ShapeKind::Box ? std::string("boxes")
                                                        : std::string(shape_name(kind_a)) + "s")
                 : fmt::format("a {} and a {} do not touch each other yet: one of the two "
-                              "bodies must be a sphere (or shell)",
+                              "bodies must be a sphere (or shell), or both capsules",
                               shape_name(kind_a), shape_name(kind_b)));
       }
-      // A group's other shapes touch its spheres only.
+      // A group's other shapes touch its spheres only (and its capsules each other).
     }
   }
   if (pairs.empty()) {
     reader.fail_at_value(
         list, with_joined ? std::string("no pair of this group can touch: two bodies touch "
-                                        "where one of them is a sphere (or shell)")
+                                        "where one of them is a sphere (or shell), or both are "
+                                        "capsules")
                           : std::string("no pair of this group can touch: a joint joins every "
-                                        "pair that has a sphere (or shell); add "
+                                        "pair that has a sphere (or shell) or two capsules; add "
                                         "`joined: true` to let them touch"));
   }
 }

@@ -11,16 +11,22 @@
 //  - the same capsule dropped plastically onto the rail at its middle: it comes to rest there and
 //    stays, its centre still to 1e-12 m; lying off-centre, it tips off the rail, its energy less
 //    friction's work conserved (the normal turning, the point sliding along both axes);
+//  - rolling off the rail with friction: inf, no mode holds where the push falls to zero: the run
+//    ends and says so;
 //  - a group makes two capsules' pairs but none of a capsule and a box, and refusals name where.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
 #include "tumble/contact/axes_closest.hpp"
 #include "tumble/math/rotation.hpp"
+#include "tumble/simulation/simulation.hpp"
 
 namespace tumble {
 namespace {
@@ -310,6 +316,44 @@ TEST(CapsulePairs, ACapsuleTippingOffARailKeepsItsEnergyLessFrictionsWork) {
       EXPECT_LT(run.rows.back().extras.elements[0].work, -1e-3);
     }
   }
+}
+
+// With friction: inf it rolls on the rail from the start, doing no work, until the push falls
+// to zero with the friction that rolling takes still there: rolling on would pull the two
+// together, and without that friction the capsule is pressed on. No mode is consistent; the run
+// says so (exit 4 from the command) after a thousand settling touchdowns that nothing holds,
+// rather than going on by millions of them.
+TEST(CapsulePairs, ACapsuleRollingOffARailWithoutALimitToFrictionEndsTheRunWhereNoModeHolds) {
+  const std::string yaml = test::replaced(capsule_on_a_rail("position: [0.1, 0, 0.09]"),
+                                          "friction: mu", "friction: inf");
+  Scenario scenario = test::load_inline_scenario(yaml, "rolls_off");
+  PreparedSimulation simulation = prepare_simulation(scenario);
+  std::vector<test::Row> rows;
+  const SimulationResult result =
+      run_simulation(simulation, [&](double t, std::span<const BodyState> states,
+                                     const SystemQuantities& q, const RowExtras& e) {
+        rows.push_back({t, std::vector<BodyState>(states.begin(), states.end()), q, e});
+      });
+  EXPECT_FALSE(result.report.completed);
+  EXPECT_NE(result.report.failure.find("1000 landings"), std::string::npos)
+      << result.report.failure;
+  EXPECT_NE(result.report.failure.find("friction: inf never lets them slip"), std::string::npos)
+      << result.report.failure;
+  ASSERT_GE(result.contact_events.size(), 2u);
+  EXPECT_EQ(result.contact_events[0].what, "rolls");
+  const ContactEventRecord& off = result.contact_events[1];
+  EXPECT_EQ(off.what, "lifts off");
+  ASSERT_FALSE(rows.empty());
+  const double E0 = rows.front().quantities.total_energy;
+  int rolling = 0;
+  for (const test::Row& row : rows) {
+    if (row.t >= off.t) break;
+    ++rolling;
+    EXPECT_EQ(row.extras.contacts[0].mode, 2) << row.t;
+    EXPECT_LT(row.extras.contacts[0].slip_speed, 1e-10) << row.t;
+    EXPECT_NEAR(row.quantities.total_energy, E0, 1e-10 * 1 * test::kG * 0.09) << row.t;
+  }
+  EXPECT_GT(rolling, 10);
 }
 
 TEST(CapsulePairs, AGroupPairsItsCapsulesButNotACapsuleWithABox) {

@@ -709,6 +709,17 @@ void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed)
   if (!cascade_goes_on(c, t, status.mode == ContactMode::Apart)) return;
   // Painleve's inconsistent case: friction presses it on while it slides, yet with no force it
   // goes into the plane; the literature resolves it by an impulse (a jam), not built.
+  if (std::isinf(contacts_[c].friction)) {
+    // Friction without a limit: rolling on would pull the two together (N < 0), and free the
+    // friction that rolling took is gone, which presses them on. With a finite mu they would
+    // slide before they part.
+    throw std::runtime_error(fmt::format(
+        "contact '{}': {} landings from t = {:.9g} to {:.9g} s (the last at {:.3g} m/s) that no "
+        "contact mode holds: rolling on would pull the bodies together, and without its "
+        "friction they are pressed on (friction: inf never lets them slip); give the contact a "
+        "finite friction",
+        contacts_[c].name, status.cascade_landings, status.cascade_first_t, t, speed));
+  }
   throw std::runtime_error(fmt::format(
       "contact '{}': {} landings from t = {:.9g} to {:.9g} s (the last at {:.3g} m/s) that no "
       "contact mode holds: no mode is consistent here (Painleve's paradox: friction {} presses "
@@ -740,7 +751,7 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
   switch (event_index % 3) {
     case 0:  // touchdown
       if (contacts_[c].touches_a_body()) {
-        pair_impacts(c, t, y);
+        const double approach = pair_impacts(c, t, y);
         // The bodies' contacts with planes, in the speeds the impulses left (a ball rolling on a
         // table, struck, slides; a ball rolling into a step leaves the floor).
         classify_touching(t, y, true, "lifts off: an impact between bodies sends it away");
@@ -749,6 +760,10 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
         // struck into a pendulum's bob, which then swings away from its straight path), the
         // contact holds them from here, rather than a chatter of ever smaller impacts.
         enter_pressed_pairs(t, y);
+        // A touchdown that settles and that nothing then holds, again and again at once, is a
+        // plane's cascade of landings: no mode is consistent (a log rolling off a rail with
+        // `friction: inf`, which would pull to keep rolling, is pressed on once free).
+        if (approach <= status.settle_speed) check_landing_cascade(c, t, approach);
         break;
       }
       impact(c, t, y);

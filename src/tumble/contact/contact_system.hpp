@@ -354,7 +354,8 @@ class ContactSystem {
   void enter_pressed_pairs(double t, VecX& y);
   // The impacts at a pair's touchdown: one pair at a time, the touching pair that approaches
   // fastest first, until no touching pair approaches (docs/scenario.md, "Bodies that touch").
-  void pair_impacts(std::size_t contact, double t, VecX& y);
+  // Returns the speed at which the pair that touched down approached.
+  double pair_impacts(std::size_t contact, double t, VecX& y);
   // One pair's impulse: Newton's restitution on the normal motion (none where the pair comes
   // together slower than a settling touchdown), Coulomb on the tangential impulse; noted as an
   // event.

@@ -427,11 +427,12 @@ void ContactSystem::enter_pressed_pairs(double t, VecX& y) {
   }
 }
 
-void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
+double ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
   dynamics_.calc_motion(y, true);
   calc_contact_points();
   // A gap that closed as they turned away (or that something slowly pushes shut) needs no impact.
-  const bool strikes = -d_.now[first].support_normal_speed > s_.contacts[first].slip_zero;
+  const double approach = -d_.now[first].support_normal_speed;
+  const bool strikes = approach > s_.contacts[first].slip_zero;
   for (int round = 0; strikes; ++round) {
     // The touching pair that approaches fastest (the first in the file among equals).
     std::size_t fastest = contacts_.size();
@@ -460,6 +461,7 @@ void ContactSystem::pair_impacts(std::size_t first, double t, VecX& y) {
     dynamics_.calc_motion(y, true);
     calc_contact_points();
   }
+  return approach;
 }
 
 void ContactSystem::mark_tied_groups(std::size_t c) {

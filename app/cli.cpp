@@ -323,7 +323,7 @@ int run_cli(int argc, const char* const* argv) {
       "is neither an equilibrium nor a steady motion (the message says which rate is off and by "
       "how much), or a contact it cannot linearise (resting on an edge, a face or a line; "
       "sliding with friction; lifting off; touching without pressing; two bodies touching where "
-      "the other is not a sphere or a shell).");
+      "the other is not a sphere or a shell, but two capsules that cross).");
   modes->set_version_flag("--version", version);
   modes->add_option("scenario", modes_args.scenario, "Scenario file (YAML)")->required();
   modes->add_option("--out", modes_args.out_dir, "Directory for the output files")

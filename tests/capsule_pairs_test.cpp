@@ -114,8 +114,8 @@ TEST(CapsulePairs, TheNearestPointsSlideAtTheRatesTheirMotionGives) {
     const SegmentsClosest closest = segments_closest(a, b);
     const Vec3 p_a = a.centre_W + closest.s * a.axis_W, p_b = b.centre_W + closest.t * b.axis_W;
     const Vec3 w = v_a + omega_a.cross(p_a - a.centre_W) - (v_b + omega_b.cross(p_b - b.centre_W));
-    const SlideRates rates = segments_slide_rates(a, b, closest, p_a - p_b, w,
-                                                  omega_a.cross(a.axis_W), omega_b.cross(b.axis_W));
+    const SlideRates rates = segments_slide_rates<double>(
+        a, b, closest, p_a - p_b, w, omega_a.cross(a.axis_W), omega_b.cross(b.axis_W));
     const double h = 1e-6;
     const SegmentsClosest ahead =
         segments_closest(moved(a, v_a, omega_a, h), moved(b, v_b, omega_b, h));

@@ -22,6 +22,7 @@
 #include "modes_checks.hpp"
 #include "scenario_run.hpp"
 #include "test_constants.hpp"
+#include "tumble/inertia/shapes.hpp"
 #include "tumble/modes/not_steady.hpp"
 #include "tumble/modes/scenario_modes.hpp"
 
@@ -183,6 +184,60 @@ TEST(ModesOfTouchingBodies, InABowlOnARailTheBallSwingsFasterAcrossTheRailAsTheB
   std::sort(found.begin(), found.end());
   expect_relative(found[0], std::sqrt(5 * kG / (7 * rho)));
   expect_relative(found[1], std::sqrt(kG / (rho * (7.0 / 5.0 - km / (kM + km)))));
+}
+
+// A capsule (radius r_a, length L, mass m) lying across a fixed capsule rail of radius R, rolling
+// on it: in the plane of its axis and the vertical it is a plank whose flat underside is r_a below
+// its centre, rocking on a circle of radius R. Its potential m g ((R + r_a) cos(theta) + R theta
+// sin(theta)) has m g (R - r_a) for its second derivative, and its kinetic energy is
+// (I_t + m r_a^2) theta'^2 / 2 to leading order: it rocks at omega^2 = m g (R - r_a) / (I_t + m
+// r_a^2), I_t its inertia about a diameter. Rolling along the rail and turning about the
+// vertical through the contact are free (no restoring force). Lying along the rail instead is a
+// line contact, refused.
+std::string capsule_across_a_rail(const std::string& along) {
+  return "tumble: 1\n"
+         "gravity: [0, 0, -" +
+         std::to_string(kG) +
+         "]\n"
+         "bodies:\n"
+         "  rail: {shape: capsule, radius: 0.05, length: 3, mass: 10, orientation: {axis: [1, "
+         "0, 0], angle: 90 deg}}\n"
+         "  log: {shape: capsule, radius: 0.04, length: 0.4, mass: 1, position: [0, 0, 0.09], "
+         "orientation: {axis: [" +
+         along +
+         "], angle: 90 deg}}\n"
+         "joints:\n"
+         "  footing: {type: fixed, bodies: [ground, rail], at: [0, 0, 0]}\n"
+         "contacts:\n"
+         "  - {name: on_rail, type: bodies, bodies: [log, rail], friction: 0.5}\n"
+         "simulate: {duration: 1}\n";
+}
+
+TEST(ModesOfTouchingBodies, ACapsuleAcrossACapsuleRailRocksAsAPlankOnACylinder) {
+  const ScenarioModes modes =
+      modes_of_scenario(load_scenario_text(capsule_across_a_rail("0, 1, 0"), "across.yaml", {}));
+  const double m = 1, r_a = 0.04, R = 0.05;
+  Shape log;
+  log.kind = ShapeKind::Capsule;
+  log.radius = r_a;
+  log.length = 0.4;
+  const double I_t = shape_mass_properties(log, m).inertia_about_com(0, 0);
+  const std::vector<double> found = oscillating_frequencies(modes.analysis);
+  ASSERT_EQ(found.size(), 1U);
+  expect_relative(found[0], std::sqrt(m * kG * (R - r_a) / (I_t + m * r_a * r_a)));
+  // The rail carries the log's weight, straight up.
+  const std::vector<Vec3> forces = modes.equations->contact_forces();
+  ASSERT_EQ(forces.size(), 1U);
+  EXPECT_NEAR((forces[0] - Vec3(0, 0, m * kG)).norm(), 0.0, 1e-12 * m * kG);
+  // Along the rail: a line, refused.
+  try {
+    modes_of_scenario(load_scenario_text(capsule_across_a_rail("1, 0, 0"), "along.yaml", {}));
+    ADD_FAILURE() << "no NotSteady";
+  } catch (const NotSteady& e) {
+    EXPECT_NE(std::string(e.what()).find("contact on_rail: its two capsules lie along each other"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ModesOfTouchingBodies, ABallOnABoxIsRefusedNamingWhatIsLinearised) {

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "tumble/contact/axes_closest.hpp"
 #include "tumble/contact/contact_pair.hpp"
@@ -60,10 +61,14 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       // each other (axes_closest.hpp), less the radii.
       const std::size_t a = contact.body, b = contact.other_body;
       double distance = 0.0;
+      bool parallel_touch = false;
       if (contact.surface.kind == ContactSurface::Kind::Capsule) {
         const AxisSegment axis_a = capsule_axis_W(contact.surface, r_G_W[a], R_WB[a]);
         const AxisSegment axis_b = capsule_axis_W(contact.other_surface, r_G_W[b], R_WB[b]);
-        distance = segments_apart_W(axis_a, axis_b, segments_closest(axis_a, axis_b)).norm();
+        const SegmentsClosest closest = segments_closest(axis_a, axis_b);
+        distance = segments_apart_W(axis_a, axis_b, closest).norm();
+        // Parallel: the first's point does not slide, though it is inside its segment.
+        parallel_touch = !closest.s_slides && std::abs(closest.s) < axis_a.half_length;
       } else {
         const Vec3 centre_W = r_G_W[a] + R_WB[a] * contact.surface.centre_B;
         distance = core_closest(contact.other_surface, R_WB[b].transpose() * (centre_W - r_G_W[b]))
@@ -71,11 +76,19 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       }
       const double gap = distance - contact.surface.radius - core_radius(contact.other_surface);
       if (gap > kTouchingHeightPerSize * pair_size(contact)) continue;
-      if (contact.other_surface.kind != ContactSurface::Kind::Sphere) {
+      const bool capsules = contact.surface.kind == ContactSurface::Kind::Capsule;
+      if (capsules && parallel_touch) {
+        throw NotSteady(fmt::format(
+            "contact {}: its two capsules lie along each other (their axes within {:g} rad of "
+            "parallel), touching along a line, where a small tilt moves the push to one end: no "
+            "linearisation; cross them, or remove the contact",
+            contact.name, kParallelSine));
+      }
+      if (contact.other_surface.kind != ContactSurface::Kind::Sphere && !capsules) {
         throw NotSteady(fmt::format(
             "contact {}: its two bodies touch; tumble modes linearises two bodies touching where "
-            "the other is a sphere or a shell, not yet a capsule, a box, a cylinder, a tube, a "
-            "disk, a ring, a torus or a cone",
+            "the other is a sphere or a shell, and two capsules; not yet a sphere on a capsule, a "
+            "box, a cylinder, a tube, a disk, a ring, a torus or a cone",
             contact.name));
       }
       ModalContact held = pair_contact(model, c, r_G_W, R_WB);

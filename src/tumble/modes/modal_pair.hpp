@@ -8,8 +8,12 @@
 //     O = p + (r_p + gap / 2) n,    O' = v_p + (r_p + gap / 2) n' + (gap' / 2) n,
 // p the other's centre and r_p its radius (minus a shell's). The rows hold the two bodies' points
 // at O together (rolling or sticking: three) or only their motion along n (frictionless: one),
-// as a plane's hold its body's point.
+// as a plane's hold its body's point. Two capsules are the same with p the other's axis's point
+// nearest the first's and the normal along the line between the axes' nearest points
+// (contact/axes_closest.hpp), p sliding along its axis at t':
+//     O' = v_p + t' u_b + (r_p + gap / 2) n' + (gap' / 2) n.
 #include "tumble/body/rigid_body.hpp"
+#include "tumble/contact/axes_closest.hpp"
 #include "tumble/contact/pair_core.hpp"
 #include "tumble/contact/plane_contact.hpp"
 #include "tumble/contact/sphere_pair_line.hpp"
@@ -23,11 +27,45 @@ struct ModalPairPointOf {
   S gap = S(0.0);           // m: the centres' distance less the radii
 };
 
-// Contact `contact` (a pair whose other surface is a sphere or a shell), its body in state a and
-// the other in state b.
+// Two capsules (contact/axes_closest.hpp), as the run's pair takes them (sphere_pairs.cpp).
+template <typename S>
+ModalPairPointOf<S> modal_capsules_point(const PlaneContact& contact, const BodyStateOf<S>& a,
+                                         const BodyStateOf<S>& b) {
+  using V3 = Vec3Of<S>;
+  const AxisSegmentOf<S> axis_a = capsule_axis_W<S>(contact.surface, a.r_G, a.R_WB);
+  const AxisSegmentOf<S> axis_b = capsule_axis_W<S>(contact.other_surface, b.r_G, b.R_WB);
+  const SegmentsClosestOf<S> closest = segments_closest<S>(axis_a, axis_b);
+  const V3 p_a = axis_a.centre_W + closest.s * axis_a.axis_W;
+  const V3 p_b = axis_b.centre_W + closest.t * axis_b.axis_W;
+  const V3 apart_W = p_a - p_b;
+  const V3 v_p_b = b.v_G + b.omega_W.cross(V3(p_b - b.r_G));
+  const V3 relative_velocity_W = a.v_G + a.omega_W.cross(V3(p_a - a.r_G)) - v_p_b;
+  const SlideRatesOf<S> rates =
+      segments_slide_rates<S>(axis_a, axis_b, closest, apart_W, relative_velocity_W,
+                              a.omega_W.cross(axis_a.axis_W), b.omega_W.cross(axis_b.axis_W));
+  using std::sqrt;
+  const S distance = sqrt(apart_W.squaredNorm());
+  ModalPairPointOf<S> at;
+  at.n_W = apart_W / distance;
+  const V3 apart_rate_W = relative_velocity_W + rates.s * axis_a.axis_W - rates.t * axis_b.axis_W;
+  at.n_rate_W = (apart_rate_W - at.n_W * at.n_W.dot(apart_rate_W)) / distance;
+  const double other_radius = contact.other_surface.radius;
+  at.gap = distance - contact.surface.radius - other_radius;
+  const S gap_rate = at.n_W.dot(relative_velocity_W);
+  const S reach = other_radius + 0.5 * at.gap;
+  at.O_W = p_b + reach * at.n_W;
+  at.O_rate_W = v_p_b + rates.t * axis_b.axis_W + reach * at.n_rate_W + (0.5 * gap_rate) * at.n_W;
+  return at;
+}
+
+// Contact `contact` (a pair whose other surface is a sphere or a shell, or two capsules), its
+// body in state a and the other in state b.
 template <typename S>
 ModalPairPointOf<S> modal_pair_point(const PlaneContact& contact, const BodyStateOf<S>& a,
                                      const BodyStateOf<S>& b) {
+  if (contact.surface.kind == ContactSurface::Kind::Capsule) {
+    return modal_capsules_point<S>(contact, a, b);
+  }
   using V3 = Vec3Of<S>;
   const V3 centre_offset_W = a.R_WB * contact.surface.centre_B.cast<S>();
   const V3 other_offset_W = b.R_WB * contact.other_surface.centre_B.cast<S>();

@@ -12,9 +12,9 @@
 //
 // Written over the scalar: a run's pairs take it in double (sphere_pairs.cpp), `tumble modes` in
 // Dual, which differentiates it (modes/modal_pair.hpp), so that both hold the same geometry.
-#include <algorithm>
 #include <cmath>
 
+#include "tumble/body/rigid_body.hpp"
 #include "tumble/contact/plane_contact.hpp"
 #include "tumble/math/types.hpp"
 
@@ -129,6 +129,57 @@ SlideRatesOf<S> segments_slide_rates(const AxisSegmentOf<S>& a, const AxisSegmen
     rates.t = -r2;
   }
   return rates;
+}
+
+// Two capsules' line, as a run's pair and `tumble modes` take it: the axes' nearest points (world)
+// and how fast they slide, the normal from the second's point towards the first's and how fast it
+// turns, their distance, and the velocity of the first body's material point at its point less
+// the second body's at its. The gap's rate is n . w (a point slides square to n); n turns with
+// the rate of the points' difference, w plus the slides, across n.
+template <typename S>
+struct CapsulesLineOf {
+  SegmentsClosestOf<S> closest;
+  SlideRatesOf<S> rates;
+  Vec3Of<S> p_a_W = Vec3Of<S>::Zero(), p_b_W = Vec3Of<S>::Zero();
+  Vec3Of<S> n_W = Vec3Of<S>::UnitZ(), n_rate_W = Vec3Of<S>::Zero();
+  S distance = S(0.0);  // m
+  Vec3Of<S> relative_velocity_W = Vec3Of<S>::Zero();
+};
+
+template <typename S>
+CapsulesLineOf<S> capsules_line(const ContactSurface& capsule_a, const BodyStateOf<S>& a,
+                                const ContactSurface& capsule_b, const BodyStateOf<S>& b) {
+  using V3 = Vec3Of<S>;
+  const AxisSegmentOf<S> axis_a = capsule_axis_W<S>(capsule_a, a.r_G, a.R_WB);
+  const AxisSegmentOf<S> axis_b = capsule_axis_W<S>(capsule_b, b.r_G, b.R_WB);
+  CapsulesLineOf<S> line;
+  line.closest = segments_closest<S>(axis_a, axis_b);
+  line.p_a_W = axis_a.centre_W + line.closest.s * axis_a.axis_W;
+  line.p_b_W = axis_b.centre_W + line.closest.t * axis_b.axis_W;
+  const V3 apart_W = line.p_a_W - line.p_b_W;
+  line.relative_velocity_W = a.v_G + a.omega_W.cross(V3(line.p_a_W - a.r_G)) -
+                             (b.v_G + b.omega_W.cross(V3(line.p_b_W - b.r_G)));
+  line.rates =
+      segments_slide_rates<S>(axis_a, axis_b, line.closest, apart_W, line.relative_velocity_W,
+                              a.omega_W.cross(axis_a.axis_W), b.omega_W.cross(axis_b.axis_W));
+  using std::sqrt;
+  line.distance = sqrt(apart_W.squaredNorm());
+  if (line.distance > 0.0) {
+    line.n_W = apart_W / line.distance;
+    const V3 apart_rate_W =
+        line.relative_velocity_W + line.rates.s * axis_a.axis_W - line.rates.t * axis_b.axis_W;
+    line.n_rate_W = (apart_rate_W - line.n_W * line.n_W.dot(apart_rate_W)) / line.distance;
+    return line;
+  }
+  // Axes that cross: square to both (any square to the first, where they are parallel too).
+  V3 across = axis_a.axis_W.cross(axis_b.axis_W);
+  if (!(across.squaredNorm() > 0.0)) {
+    using std::abs;
+    const V3 other = abs(axis_a.axis_W.x()) < 0.9 ? V3(V3::UnitX()) : V3(V3::UnitY());
+    across = other.cross(axis_a.axis_W);
+  }
+  line.n_W = across / sqrt(across.squaredNorm());
+  return line;
 }
 
 }  // namespace tumble

@@ -38,10 +38,11 @@ constexpr double kSlipStoppedNear = 1e3;
 // A slip that has been above that, and comes back within it to hover there (no smaller at the
 // end of a step than at its start), stops this fraction of the time scale later.
 constexpr double kHoverStopWait = 1e-9;
-// Settled landings that go apart at once, each within this fraction of the time scale of the
-// last, this many in a row: a cascade that would not end (docs/design.md, "Painleve").
+// Settled landings that go apart at once (or slip stops that slide on at once), each within this
+// fraction of the time scale of the last, this many in a row: a cascade that would not end
+// (docs/design.md, "Painleve").
 constexpr double kCascadeGap = 1e-6;
-constexpr int kCascadeLandings = 1000;
+constexpr int kCascadeEvents = 1000;
 // Impacts at one instant on one contact, at most: each takes energy out (or none, elastic), and
 // an impulse on one vertex drives another into the plane less each time.
 constexpr int kImpactRounds = 100;
@@ -696,36 +697,36 @@ bool ContactSystem::cascade_goes_on(std::size_t c, double t, bool undone) {
   ContactStatus& status = s_.contacts[c];
   // An event that the same instant undoes (a settled landing that nothing holds; a slip stop
   // that slides on at once) and that follows the last one within kCascadeGap of the time scale
-  // continues a cascade; anything else ends it. Past kCascadeLandings in a row it would not end.
+  // continues a cascade; anything else ends it. Past kCascadeEvents in a row it would not end.
   const bool follows = t - status.cascade_last_t <= kCascadeGap * status.time_scale;
   if (undone && !follows) status.cascade_first_t = t;
-  status.cascade_landings = undone ? (follows ? status.cascade_landings + 1 : 1) : 0;
+  status.cascade_events = undone ? (follows ? status.cascade_events + 1 : 1) : 0;
   status.cascade_last_t = t;
-  return status.cascade_landings >= kCascadeLandings;
+  return status.cascade_events >= kCascadeEvents;
 }
 
 void ContactSystem::check_landing_cascade(std::size_t c, double t, double speed) {
   const ContactStatus& status = s_.contacts[c];
   if (!cascade_goes_on(c, t, status.mode == ContactMode::Apart)) return;
   // Painleve's inconsistent case: friction presses it on while it slides, yet with no force it
-  // goes into the plane; the literature resolves it by an impulse (a jam), not built.
-  if (std::isinf(contacts_[c].friction)) {
-    // Friction without a limit: rolling on would pull the two together (N < 0), and free the
-    // friction that rolling took is gone, which presses them on. With a finite mu they would
-    // slide before they part.
-    throw std::runtime_error(fmt::format(
-        "contact '{}': {} landings from t = {:.9g} to {:.9g} s (the last at {:.3g} m/s) that no "
-        "contact mode holds: rolling on would pull the bodies together, and without its "
-        "friction they are pressed on (friction: inf never lets them slip); give the contact a "
-        "finite friction",
-        contacts_[c].name, status.cascade_landings, status.cascade_first_t, t, speed));
-  }
+  // goes into the plane; the literature resolves it by an impulse (a jam), not built. Friction
+  // without a limit: rolling on would pull the two together (N < 0), and free, the friction that
+  // rolling took is gone, which presses them on; with a finite mu they would slide before they
+  // part.
+  const double mu = contacts_[c].friction;
+  const std::string why = std::isinf(mu)
+                              ? std::string(
+                                    "rolling on would pull the bodies together, and without its "
+                                    "friction they are pressed on (friction: inf never lets them "
+                                    "slip); give the contact a finite friction")
+                              : fmt::format(
+                                    "no mode is consistent here (Painleve's paradox: friction {} "
+                                    "presses the body on as it slides); lower the friction",
+                                    mu);
   throw std::runtime_error(fmt::format(
       "contact '{}': {} landings from t = {:.9g} to {:.9g} s (the last at {:.3g} m/s) that no "
-      "contact mode holds: no mode is consistent here (Painleve's paradox: friction {} presses "
-      "the body on as it slides); lower the friction",
-      contacts_[c].name, status.cascade_landings, status.cascade_first_t, t, speed,
-      contacts_[c].friction));
+      "contact mode holds: {}",
+      contacts_[c].name, status.cascade_events, status.cascade_first_t, t, speed, why));
 }
 
 void ContactSystem::check_slip_stop_cascade(std::size_t c, double t) {
@@ -738,8 +739,7 @@ void ContactSystem::check_slip_stop_cascade(std::size_t c, double t) {
       "contact '{}': {} slip stops from t = {:.9g} to {:.9g} s, each sliding on at once: no "
       "contact mode holds its friction here (the body is wedged as it slides, its contacts' "
       "friction {} pressing it on); lower the friction",
-      contacts_[c].name, status.cascade_landings, status.cascade_first_t, t,
-      contacts_[c].friction));
+      contacts_[c].name, status.cascade_events, status.cascade_first_t, t, contacts_[c].friction));
 }
 
 void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
@@ -944,7 +944,7 @@ void ContactSystem::begin(double t0, const VecX& y) {
     status.slide_direction_W = Vec3::UnitX();
     status.slip_grown = false;
     status.slip_left_near = false;
-    status.cascade_landings = 0;
+    status.cascade_events = 0;
     status.cascade_last_t = -std::numeric_limits<double>::infinity();
     status.slip_zero = scales.slip_zero;
     status.slip_floor = kSlipFloor * scales.slip_zero;

@@ -54,7 +54,7 @@ struct ContactStatus {
   double slip_stop_by = 0.0;
   // Events in a row that the same instant undoes, from cascade_first_t (settled landings that
   // nothing held; slip stops that slid on at once); the last one's t.
-  int cascade_landings = 0;
+  int cascade_events = 0;
   double cascade_first_t = 0.0, cascade_last_t = 0.0;
   double slip_zero = 0.0;        // m/s: slower slip counts as none
   double slip_floor = 0.0;       // m/s: a grown slip is followed down to this

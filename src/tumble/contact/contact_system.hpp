@@ -298,13 +298,13 @@ class ContactSystem {
   // the next foot lands), before the landing contact's mode is chosen with the others' rows.
   void release_contacts_sent_away(std::size_t landed, double t, VecX& y);
   // After a settled landing at `speed`: throws std::runtime_error where such landings have
-  // come kCascadeLandings in a row, each going apart at once (no consistent mode).
+  // come kCascadeEvents in a row, each going apart at once (no consistent mode).
   void check_landing_cascade(std::size_t contact, double t, double speed);
-  // After a slip stop: throws std::runtime_error where such stops have come kCascadeLandings in a
+  // After a slip stop: throws std::runtime_error where such stops have come kCascadeEvents in a
   // row, each sliding on at once.
   void check_slip_stop_cascade(std::size_t contact, double t);
   // Counts an event in the contact's cascade (`undone`: the same instant undid it); whether the
-  // cascade has come kCascadeLandings in a row.
+  // cascade has come kCascadeEvents in a row.
   bool cascade_goes_on(std::size_t contact, double t, bool undone);
   void note_contact(double t, std::size_t contact, std::string what,
                     std::optional<ContactImpactNumbers> impact = std::nullopt);

@@ -95,51 +95,32 @@ struct PairLine {
   // n_rate_W . relative_velocity_W: what n's turning adds to the gap's second derivative.
   double turning = 0.0;
 };
-// Two capsules (axes_closest.hpp): the line between their axes' nearest points, each sliding along
-// its axis while inside its segment. The gap's rate is n . w, w the material points' relative
-// velocity (a point slides square to n); n turns with the rate of the points' difference, w plus
-// the slides, across n.
-PairLine capsules_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
-  const AxisSegment axis_a = capsule_axis_W(contact.surface, a.r_G_W, a.R_WB);
-  const AxisSegment axis_b = capsule_axis_W(contact.other_surface, b.r_G_W, b.R_WB);
-  const SegmentsClosest closest = segments_closest(axis_a, axis_b);
+// Two capsules (axes_closest.hpp, as `tumble modes` takes them): each one's point nearest the
+// other's axis, sliding along its axis while inside its segment.
+PairLine capsules_pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
+  const auto state = [](const BodyMotion& w) {
+    return BodyState{w.r_G_W, w.R_WB, w.R_WB * w.velocity.tail<3>(), w.R_WB * w.velocity.head<3>()};
+  };
+  const CapsulesLineOf<double> capsules =
+      capsules_line<double>(contact.surface, state(a), contact.other_surface, state(b));
   const Vec3 u_a_B = contact.surface.axes_B.col(2), u_b_B = contact.other_surface.axes_B.col(2);
   PairLine line;
-  line.core_B = contact.surface.centre_B + closest.s * u_a_B;
-  line.p_B = contact.other_surface.centre_B + closest.t * u_b_B;
-  const Vec3 apart_W = segments_apart_W(axis_a, axis_b, closest);
-  line.relative_velocity_W = point_velocity_W(a, line.core_B) - point_velocity_W(b, line.p_B);
-  const Vec3 omega_a_W = a.R_WB * a.velocity.head<3>(), omega_b_W = b.R_WB * b.velocity.head<3>();
-  const SlideRates rates =
-      segments_slide_rates(axis_a, axis_b, closest, apart_W, line.relative_velocity_W,
-                           omega_a_W.cross(axis_a.axis_W), omega_b_W.cross(axis_b.axis_W));
-  line.core_rate_B = rates.s * u_a_B;
-  line.p_rate_B = rates.t * u_b_B;
-  line.distance = apart_W.norm();
-  if (line.distance > 0.0) {
-    line.n_W = apart_W / line.distance;
-  } else {
-    // Axes that cross: square to both (any, where they are parallel as well).
-    const Vec3 across = axis_a.axis_W.cross(axis_b.axis_W);
-    Vec3 square = across, other;
-    if (across.norm() > 0.0) {
-      square.normalize();
-    } else {
-      plane_basis(axis_a.axis_W, square, other);
-    }
-    line.n_W = square;
-  }
-  const Vec3 apart_rate_W =
-      line.relative_velocity_W + rates.s * axis_a.axis_W - rates.t * axis_b.axis_W;
-  if (line.distance > 0.0) {
-    line.n_rate_W = (apart_rate_W - line.n_W * line.n_W.dot(apart_rate_W)) / line.distance;
-  }
+  line.core_B = contact.surface.centre_B + capsules.closest.s * u_a_B;
+  line.core_rate_B = capsules.rates.s * u_a_B;
+  line.p_B = contact.other_surface.centre_B + capsules.closest.t * u_b_B;
+  line.p_rate_B = capsules.rates.t * u_b_B;
+  line.n_W = capsules.n_W;
+  line.n_rate_W = capsules.n_rate_W;
+  line.distance = capsules.distance;
+  line.relative_velocity_W = capsules.relative_velocity_W;
   line.turning = line.n_rate_W.dot(line.relative_velocity_W);
   return line;
 }
 
 PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyMotion& b) {
-  if (contact.surface.kind == ContactSurface::Kind::Capsule) return capsules_line(contact, a, b);
+  if (contact.surface.kind == ContactSurface::Kind::Capsule) {
+    return capsules_pair_line(contact, a, b);
+  }
   PairLine line;
   line.core_B = contact.surface.centre_B;
   const Vec3 centre_W = sphere_centre_W(a, contact.surface);

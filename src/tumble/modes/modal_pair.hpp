@@ -31,30 +31,19 @@ struct ModalPairPointOf {
 template <typename S>
 ModalPairPointOf<S> modal_capsules_point(const PlaneContact& contact, const BodyStateOf<S>& a,
                                          const BodyStateOf<S>& b) {
-  using V3 = Vec3Of<S>;
-  const AxisSegmentOf<S> axis_a = capsule_axis_W<S>(contact.surface, a.r_G, a.R_WB);
-  const AxisSegmentOf<S> axis_b = capsule_axis_W<S>(contact.other_surface, b.r_G, b.R_WB);
-  const SegmentsClosestOf<S> closest = segments_closest<S>(axis_a, axis_b);
-  const V3 p_a = axis_a.centre_W + closest.s * axis_a.axis_W;
-  const V3 p_b = axis_b.centre_W + closest.t * axis_b.axis_W;
-  const V3 apart_W = p_a - p_b;
-  const V3 v_p_b = b.v_G + b.omega_W.cross(V3(p_b - b.r_G));
-  const V3 relative_velocity_W = a.v_G + a.omega_W.cross(V3(p_a - a.r_G)) - v_p_b;
-  const SlideRatesOf<S> rates =
-      segments_slide_rates<S>(axis_a, axis_b, closest, apart_W, relative_velocity_W,
-                              a.omega_W.cross(axis_a.axis_W), b.omega_W.cross(axis_b.axis_W));
-  using std::sqrt;
-  const S distance = sqrt(apart_W.squaredNorm());
+  const CapsulesLineOf<S> line = capsules_line<S>(contact.surface, a, contact.other_surface, b);
   ModalPairPointOf<S> at;
-  at.n_W = apart_W / distance;
-  const V3 apart_rate_W = relative_velocity_W + rates.s * axis_a.axis_W - rates.t * axis_b.axis_W;
-  at.n_rate_W = (apart_rate_W - at.n_W * at.n_W.dot(apart_rate_W)) / distance;
+  at.n_W = line.n_W;
+  at.n_rate_W = line.n_rate_W;
   const double other_radius = contact.other_surface.radius;
-  at.gap = distance - contact.surface.radius - other_radius;
-  const S gap_rate = at.n_W.dot(relative_velocity_W);
+  at.gap = line.distance - contact.surface.radius - other_radius;
+  const S gap_rate = line.n_W.dot(line.relative_velocity_W);
   const S reach = other_radius + 0.5 * at.gap;
-  at.O_W = p_b + reach * at.n_W;
-  at.O_rate_W = v_p_b + rates.t * axis_b.axis_W + reach * at.n_rate_W + (0.5 * gap_rate) * at.n_W;
+  const Vec3Of<S> v_p_b = b.v_G + b.omega_W.cross(Vec3Of<S>(line.p_b_W - b.r_G));
+  at.O_W = line.p_b_W + reach * line.n_W;
+  // p slides along the second's axis at t'.
+  at.O_rate_W = v_p_b + line.rates.t * (b.R_WB * contact.other_surface.axes_B.col(2).cast<S>()) +
+                reach * line.n_rate_W + (0.5 * gap_rate) * line.n_W;
   return at;
 }
 

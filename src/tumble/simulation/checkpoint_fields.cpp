@@ -84,7 +84,8 @@ void archive_status(StateArchive& a, ContactStatus& s) {
   a.require("pinned_end", s.pinned_end >= -1 && s.pinned_end <= 1, "-1, 0 or 1");
   a.flag("slip_stop_armed", s.slip_stop_armed);
   a.number("slip_stop_by", s.slip_stop_by);
-  a.integer("cascade_landings", s.cascade_landings);
+  // (The key predates slip-stop cascades, which the count includes: kept, for the format.)
+  a.integer("cascade_landings", s.cascade_events);
   a.number("cascade_first_t", s.cascade_first_t);
   a.number("cascade_last_t", s.cascade_last_t);
   a.number("slip_zero", s.slip_zero);

@@ -322,8 +322,8 @@ int run_cli(int argc, const char* const* argv) {
       "done, 2 bad command line, 3 invalid scenario, 5 output not writable, 6 the initial state "
       "is neither an equilibrium nor a steady motion (the message says which rate is off and by "
       "how much), or a contact it cannot linearise (resting on an edge, a face or a line; "
-      "sliding with friction; lifting off; touching without pressing; two bodies touching where "
-      "the other is not a sphere or a shell, but two capsules that cross).");
+      "sliding with friction; lifting off; touching without pressing; two bodies touching along a "
+      "line or a circle, or a sphere over a seam of the other's surface: a box's edge, a rim).");
   modes->set_version_flag("--version", version);
   modes->add_option("scenario", modes_args.scenario, "Scenario file (YAML)")->required();
   modes->add_option("--out", modes_args.out_dir, "Directory for the output files")

@@ -12,11 +12,16 @@
 //    along the rail, (M + m) X' + m rho theta', stays zero: with X' = -m rho theta' / (M + m) the
 //    kinetic energy is (1/2) m rho^2 (7/5 - m / (M + m)) theta'^2, so across the rail the ball
 //    swings at omega^2 = g / (rho (7/5 - m / (M + m))), along it (the bowl held) at 5 g / (7 rho).
+// The same laws hold against the other surfaces in one direction, with rho the centre's distance
+// from the axis it swings about (in a pipe's bore, on a log, over a torus's tube), and against a
+// point (a cone's apex) in both; a flat face is neutral. Two capsules that cross rock as a plank
+// on a cylinder.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "modes_checks.hpp"
@@ -79,6 +84,24 @@ std::vector<double> growth_rates(const ModalAnalysis& analysis) {
     if (mode.kind == Mode::Kind::Growing) found.push_back(mode.growth_rate);
   }
   return found;
+}
+
+// The ball (the second body, the other fixed) rolling steadily at speed v, its centre on a
+// circle of radius rho about a horizontal axis, at the top (`up` -1: the circle's centre below)
+// or the bottom (+1): its centre accelerates at v^2 / rho towards that axis, its spin is steady
+// and the push on it is m (g + up v^2 / rho), straight up (`on_ball` -1 where the contact's force
+// is the other's).
+void expect_steady_roll(const ModalEquations& equations, double v, double rho, double up,
+                        double on_ball = 1.0) {
+  const VecX rates = equations.rates<double>(VecX::Zero(equations.layout().size()));
+  // The ball's speeds' rates: vx vy vz after its six positions, then its angular acceleration.
+  EXPECT_NEAR((Vec3(rates.segment<3>(6)) - Vec3(0, 0, up * v * v / rho)).norm(), 0.0,
+              1e-12 * v * v / rho);
+  EXPECT_NEAR(Vec3(rates.segment<3>(9)).norm(), 0.0, 1e-12 * v / kr);
+  const std::vector<Vec3> forces = equations.contact_forces();
+  ASSERT_EQ(forces.size(), 1U);
+  EXPECT_NEAR((on_ball * forces[0] - Vec3(0, 0, km * (kG + up * v * v / rho))).norm(), 0.0,
+              1e-12 * km * kG);
 }
 
 TEST(ModesOfTouchingBodies, ABallInABowlSwingsAtTheClosedFormsFrequencyRollingOrFrictionless) {
@@ -149,15 +172,7 @@ TEST(ModesOfTouchingBodies, RollingOverTheTopOfADomeItsCentreTurnsDownAtVSquared
         "mass: m, velocity: [1.5, 0, 0], angular_velocity: [0, 1.5 / r, 0], position: [");
     const std::shared_ptr<const ModalEquations> equations =
         modal_equations_of(load_scenario_text(yaml, "dome.yaml", {}));
-    const VecX rates = equations->rates<double>(VecX::Zero(equations->layout().size()));
-    EXPECT_NEAR((Vec3(rates.segment<3>(6)) - Vec3(0, 0, -v * v / rho)).norm(), 0.0,
-                1e-12 * v * v / rho);
-    EXPECT_NEAR(Vec3(rates.segment<3>(9)).norm(), 0.0, 1e-12 * v / kr);
-    const std::vector<Vec3> forces = equations->contact_forces();
-    ASSERT_EQ(forces.size(), 1U);
-    const double on_ball = ball_first ? 1.0 : -1.0;
-    EXPECT_NEAR((on_ball * forces[0] - Vec3(0, 0, km * (kG - v * v / rho))).norm(), 0.0,
-                1e-12 * km * kG);
+    expect_steady_roll(*equations, v, rho, -1.0, ball_first ? 1.0 : -1.0);
   }
 }
 
@@ -240,28 +255,182 @@ TEST(ModesOfTouchingBodies, ACapsuleAcrossACapsuleRailRocksAsAPlankOnACylinder) 
   }
 }
 
-TEST(ModesOfTouchingBodies, ABallOnABoxIsRefusedNamingWhatIsLinearised) {
-  const std::string yaml =
-      "tumble: 1\n"
-      "bodies:\n"
-      "  block: {shape: box, size: [1, 1, 0.2], mass: 5, position: [0, 0, 0]}\n"
-      "  ball: {shape: sphere, radius: 0.05, mass: 0.2, position: [0, 0, "
-      "0.15]}\n"
-      "joints:\n"
-      "  stand: {type: fixed, bodies: [ground, block], at: [0, 0, 0]}\n"
-      "contacts:\n"
-      "  - {name: on_block, type: bodies, bodies: [ball, block], friction: "
-      "0.5}\n"
-      "simulate: {duration: 1}\n";
-  try {
-    modes_of_scenario(load_scenario_text(yaml, "box.yaml", {}));
-    ADD_FAILURE() << "no NotSteady";
-  } catch (const NotSteady& e) {
-    EXPECT_NE(std::string(e.what()).find("contact on_block: its two bodies touch; tumble modes "
-                                         "linearises two bodies touching where the other is a "
-                                         "sphere or a shell"),
-              std::string::npos)
-        << e.what();
+// A ball (radius r = 0.05, mass m = 0.2) with friction `mu` (inf: rolling; 0: frictionless)
+// against a fixed body `other` (a line of its yaml after its name), its centre at `ball_at`,
+// moving at `velocity` and turning at `spin` (world axes).
+std::string ball_against(const std::string& other, const std::string& ball_at, double mu,
+                         const std::string& velocity = "0, 0, 0",
+                         const std::string& spin = "0, 0, 0") {
+  return "tumble: 1\n"
+         "gravity: [0, 0, -" +
+         std::to_string(kG) +
+         "]\n"
+         "bodies:\n"
+         "  other: {" +
+         other +
+         ", mass: 5}\n"
+         "  ball: {shape: sphere, radius: 0.05, mass: 0.2, position: [" +
+         ball_at + "], velocity: [" + velocity + "], angular_velocity: [" + spin +
+         "]}\n"
+         "joints:\n"
+         "  stand: {type: fixed, bodies: [ground, other], at: [0, 0, 0]}\n"
+         "contacts:\n"
+         "  - {name: touch, type: bodies, bodies: [ball, other], friction: " +
+         (mu > 1e300 ? std::string("inf") : std::to_string(mu)) +
+         ", restitution: 0}\n"
+         "simulate: {duration: 1}\n";
+}
+
+// A pipe (a tube of bore a = 0.3) lying along x, the ball inside it.
+const std::string kPipe =
+    "shape: tube, inner_radius: 0.3, outer_radius: 0.35, length: 2, orientation: {axis: [0, 1, "
+    "0], angle: 90 deg}";
+
+// At the bottom of the pipe's bore the ball's centre is on a circle of radius rho = a - r about
+// the pipe's axis: it swings across the pipe as in a bowl, at omega^2 = 5 g / (7 rho) rolling
+// (g / rho frictionless), and along the pipe nothing holds it back. The bore is the tube's inner
+// cylinder (pair_core.hpp), its point sliding round at a / rho of the centre's motion.
+TEST(ModesOfTouchingBodies, ABallInAPipeSwingsAcrossItAtTheClosedFormsFrequency) {
+  const double rho = 0.3 - kr;
+  for (const double mu : {1e301, 0.0}) {
+    SCOPED_TRACE(mu);
+    const ScenarioModes modes = modes_of_scenario(
+        load_scenario_text(ball_against(kPipe, "0, 0, -0.25", mu), "pipe.yaml", {}));
+    const std::vector<double> found = oscillating_frequencies(modes.analysis);
+    ASSERT_EQ(found.size(), 1U);
+    expect_relative(found[0], mu > 0.0 ? std::sqrt(5 * kG / (7 * rho)) : std::sqrt(kG / rho));
+    for (const Mode& mode : modes.analysis.modes) EXPECT_NE(mode.kind, Mode::Kind::Growing);
+    const std::vector<Vec3> forces = modes.equations->contact_forces();
+    ASSERT_EQ(forces.size(), 1U);
+    EXPECT_NEAR((forces[0] - Vec3(0, 0, km * kG)).norm(), 0.0, 1e-12 * km * kG);
+  }
+}
+
+// Rolling round the bore at v through its bottom (across the pipe, along y), the ball turning at
+// v / r about x: its centre goes round the pipe's axis on the circle of radius rho = a - r, its
+// spin is steady (the push passes through its centre, no friction), and the bore pushes
+// m (g + v^2 / rho). The contact point runs round the bore at a / rho of the centre's speed: the
+// rolling rows' rates take that motion, and without it the centre would seem to be dragged.
+TEST(ModesOfTouchingBodies, RollingRoundAPipesBoreItsCentreTurnsUpAtVSquaredOverRho) {
+  const double v = 1.2, rho = 0.3 - kr;
+  const std::shared_ptr<const ModalEquations> equations = modal_equations_of(load_scenario_text(
+      ball_against(kPipe, "0, 0, -0.25", 1e301, "0, 1.2, 0", "-1.2 / 0.05, 0, 0"), "pipe.yaml",
+      {}));
+  expect_steady_roll(*equations, v, rho, 1.0);
+}
+
+// Balanced on top of a round surface of radius R in one direction (a log lying along x: a
+// capsule's or a cylinder's side; a torus's tube, across it), the ball's centre moves on a
+// circle of radius rho = R + r: it falls away at lambda^2 = 5 g / (7 rho) rolling, g / rho
+// frictionless, and along the log (round the torus) nothing holds it. On a cone's apex (R = 0)
+// it falls away so in both directions.
+TEST(ModesOfTouchingBodies, ABallBalancedOnARoundTopFallsAwayAtTheClosedFormsRate) {
+  struct Top {
+    const char* name;
+    std::string other, ball_at;
+    double rho;
+    std::size_t falls;  // how many ways it falls away
+  };
+  const std::vector<Top> tops = {
+      {"a capsule log",
+       "shape: capsule, radius: 0.1, length: 1, orientation: {axis: [0, 1, 0], angle: 90 deg}",
+       "0.1, 0, 0.15", 0.1 + kr, 1},
+      {"a cylinder log",
+       "shape: cylinder, radius: 0.1, length: 1, orientation: {axis: [0, 1, 0], angle: 90 deg}",
+       "-0.2, 0, 0.15", 0.1 + kr, 1},
+      {"a torus's tube", "shape: torus, radius: 0.5, tube_radius: 0.1", "0, 0.5, 0.15", 0.1 + kr,
+       1},
+      // The apex 3h/4 = 0.3 above the cone's COM.
+      {"a cone's apex", "shape: cone, radius: 0.2, height: 0.4", "0, 0, 0.35", kr, 2},
+  };
+  for (const Top& top : tops) {
+    for (const double mu : {1e301, 0.0}) {
+      SCOPED_TRACE(testing::Message() << top.name << ", mu " << mu);
+      const ScenarioModes modes = modes_of_scenario(
+          load_scenario_text(ball_against(top.other, top.ball_at, mu), "top.yaml", {}));
+      const std::vector<double> found = growth_rates(modes.analysis);
+      ASSERT_EQ(found.size(), top.falls);
+      for (const double lambda : found) {
+        expect_relative(lambda,
+                        mu > 0.0 ? std::sqrt(5 * kG / (7 * top.rho)) : std::sqrt(kG / top.rho));
+      }
+      test::expect_undamped_twins(modes.analysis);
+      const std::vector<Vec3> forces = modes.equations->contact_forces();
+      ASSERT_EQ(forces.size(), 1U);
+      EXPECT_NEAR((forces[0] - Vec3(0, 0, km * kG)).norm(), 0.0, 1e-12 * km * kG);
+    }
+  }
+}
+
+// Rolling over the top of a log (a capsule's or a cylinder's side, a torus's tube) at v across
+// it (along y), turning at v / r about x: as over a dome, its centre turns down at v^2 / rho
+// (rho = R + r), its spin is steady and the push is m (g - v^2 / rho). The contact point runs
+// over the log at R / rho of the centre's speed (round the cylinder's side: its point slides
+// round; over a capsule or a torus: its core's point is still and the normal turns), which the
+// rows' rates take.
+TEST(ModesOfTouchingBodies, RollingOverALogItsCentreTurnsDownAtVSquaredOverRho) {
+  const double v = 0.4, rho = 0.1 + kr;
+  const std::vector<std::pair<std::string, std::string>> logs = {
+      {"shape: capsule, radius: 0.1, length: 1, orientation: {axis: [0, 1, 0], angle: 90 deg}",
+       "0.1, 0, 0.15"},
+      {"shape: cylinder, radius: 0.1, length: 1, orientation: {axis: [0, 1, 0], angle: 90 deg}",
+       "-0.2, 0, 0.15"},
+      {"shape: torus, radius: 0.5, tube_radius: 0.1", "0, 0.5, 0.15"},
+  };
+  for (const auto& [log, ball_at] : logs) {
+    SCOPED_TRACE(log);
+    const std::shared_ptr<const ModalEquations> equations = modal_equations_of(load_scenario_text(
+        ball_against(log, ball_at, 1e301, "0, 0.4, 0", "-0.4 / 0.05, 0, 0"), "log.yaml", {}));
+    expect_steady_roll(*equations, v, rho, -1.0);
+  }
+}
+
+// On a flat face the ball rests with nothing to bring it back or send it away: no mode grows or
+// oscillates, and the face carries its weight. On a box's face, and on the middle of a standing
+// cylinder's end, over its axis (where the distance from the axis has no derivative, and the face
+// needs none).
+TEST(ModesOfTouchingBodies, ABallOnAFlatFaceRestsWithNoRestoringForce) {
+  const std::vector<std::pair<std::string, std::string>> faces = {
+      {"shape: box, size: [1, 1, 0.2]", "0.1, 0.2, 0.15"},
+      {"shape: cylinder, radius: 0.3, length: 0.2", "0, 0, 0.15"},
+  };
+  for (const auto& [face, ball_at] : faces) {
+    SCOPED_TRACE(face);
+    const ScenarioModes modes =
+        modes_of_scenario(load_scenario_text(ball_against(face, ball_at, 0.5), "face.yaml", {}));
+    for (const Mode& mode : modes.analysis.modes) EXPECT_EQ(mode.kind, Mode::Kind::Neutral);
+    const std::vector<Vec3> forces = modes.equations->contact_forces();
+    ASSERT_EQ(forces.size(), 1U);
+    EXPECT_NEAR((forces[0] - Vec3(0, 0, km * kG)).norm(), 0.0, 1e-12 * km * kG);
+  }
+}
+
+// Over a box's edge the push turns as the ball rolls off the edge's side and not as it rolls
+// onto the face, and on a ring's axis it touches all round the ring: neither has a
+// linearisation, and each is refused by name.
+TEST(ModesOfTouchingBodies, OverASeamOrAllRoundACircleTheContactIsRefusedByName) {
+  struct Refused {
+    std::string other, ball_at, why;
+  };
+  const std::vector<Refused> refused = {
+      {"shape: box, size: [1, 1, 0.2]", "0, 0.5, 0.15",
+       "contact touch: the sphere's centre is over a seam of the surface it touches"},
+      {"shape: cylinder, radius: 0.1, length: 0.2", "0.1, 0, 0.15",
+       "contact touch: the sphere's centre is over a seam of the surface it touches"},
+      // A ring of radius 0.03 lying flat, the ball resting in it: its centre sqrt(r^2 - 0.03^2)
+      // = 0.04 above the ring's plane.
+      {"shape: ring, radius: 0.03", "0, 0, 0.04",
+       "contact touch: the sphere's centre is on the axis of the circle it touches"},
+  };
+  for (const Refused& r : refused) {
+    SCOPED_TRACE(r.other);
+    try {
+      modes_of_scenario(
+          load_scenario_text(ball_against(r.other, r.ball_at, 0.5), "refused.yaml", {}));
+      ADD_FAILURE() << "no NotSteady";
+    } catch (const NotSteady& e) {
+      EXPECT_NE(std::string(e.what()).find(r.why), std::string::npos) << e.what();
+    }
   }
 }
 

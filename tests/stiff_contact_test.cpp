@@ -222,6 +222,58 @@ simulate: {duration: 0.1, integrator: auto}
   EXPECT_LT(test::largest_jacobian_departure(sliding, "ball_sliding_in_bowl"), 1e-7);
 }
 
+// Every pair is held so, whatever the other surface: a ball rolling in a pipe from 40 degrees up
+// its bore (the bore's point sliding round at a / rho of the centre's motion), a ball sliding
+// along a capsule log and down its side (Coulomb's friction against the slip, the log's point
+// sliding along its axis), and a log lying across a capsule rail 0.1 m off its middle, rolling
+// as it tips (both axes' points sliding).
+TEST(StiffContact, ABallOnALogOrInAPipeAndCrossedLogsHaveTheRunsOwnJacobian) {
+  const char* const in_pipe = R"yaml(tumble: 1
+parameters: {a: 0.3, r: 0.05, theta: 40 deg}
+gravity: [0, 0, -9.81]
+bodies:
+  pipe: {shape: tube, inner_radius: a, outer_radius: 0.35, length: 2, mass: 5,
+         orientation: {axis: [0, 1, 0], angle: 90 deg}}
+  ball: {shape: sphere, radius: r, mass: 0.2,
+         position: [0, "(a - r)*sin(theta)", "-(a - r)*cos(theta)"]}
+joints:
+  stand: {type: fixed, bodies: [ground, pipe], at: [0, 0, 0]}
+contacts:
+  - {name: inside, type: bodies, bodies: [ball, pipe], friction: inf}
+simulate: {duration: 0.1, integrator: auto}
+)yaml";
+  EXPECT_LT(test::largest_jacobian_departure(in_pipe, "ball_rolling_in_pipe"), 1e-7);
+  const char* const on_log = R"yaml(tumble: 1
+parameters: {R: 0.1, r: 0.05, theta: 20 deg}
+gravity: [0, 0, -9.81]
+bodies:
+  log: {shape: capsule, radius: R, length: 1, mass: 5,
+        orientation: {axis: [0, 1, 0], angle: 90 deg}}
+  ball: {shape: sphere, radius: r, mass: 0.2, velocity: [0.5, 0, 0],
+         position: [0.1, "(R + r)*sin(theta)", "(R + r)*cos(theta)"]}
+joints:
+  stand: {type: fixed, bodies: [ground, log], at: [0, 0, 0]}
+contacts:
+  - {name: on_log, type: bodies, bodies: [ball, log], friction: 0.2}
+simulate: {duration: 0.1, integrator: auto}
+)yaml";
+  EXPECT_LT(test::largest_jacobian_departure(on_log, "ball_sliding_on_log"), 1e-7);
+  const char* const crossed = R"yaml(tumble: 1
+gravity: [0, 0, -9.81]
+bodies:
+  rail: {shape: capsule, radius: 0.05, length: 3, mass: 10,
+         orientation: {axis: [1, 0, 0], angle: 90 deg}}
+  log: {shape: capsule, radius: 0.04, length: 0.4, mass: 1, position: [0.1, 0, 0.09],
+        orientation: {axis: [0, 1, 0], angle: 90 deg}}
+joints:
+  footing: {type: fixed, bodies: [ground, rail], at: [0, 0, 0]}
+contacts:
+  - {name: on_rail, type: bodies, bodies: [log, rail], friction: 0.5}
+simulate: {duration: 0.1, integrator: auto}
+)yaml";
+  EXPECT_LT(test::largest_jacobian_departure(crossed, "log_across_rail"), 1e-7);
+}
+
 // radau5 and trbdf2 take contacts held on more than one point, in every mode, against the
 // chapter's closed forms (equations.md, 2): a box sliding down a ramp on a face (its friction
 // held at its corners), v = g (sin(theta) - mu cos(theta)) t; a cylinder rolling down it on its

@@ -209,15 +209,9 @@ void ContactSystem::calc_holds(double t, const VecX& y, std::span<ContactHold> h
     ContactHold& hold = holds[c];
     hold = ContactHold{};
     if (d_.screen.far(c)) continue;  // apart, its points not found
-    // Two bodies touching: a sphere's or a shell's pair is held at its one point as a plane's
-    // is (modes/modal_pair.hpp); the Jacobian leaves a capsule's, a box's, a cylinder's or a
-    // disk's out, which costs Newton a little (more iterations), not the answer (the run's own
-    // forces hold it).
+    // Two bodies touching are held at their one point as a plane's is (modes/modal_pair.hpp).
     const bool pair = contacts_[c].touches_a_body();
-    if (status.mode == ContactMode::Apart ||
-        (pair && contacts_[c].other_surface.kind != ContactSurface::Kind::Sphere)) {
-      continue;
-    }
+    if (status.mode == ContactMode::Apart) continue;
     if (!pair && (now.normal_point_count != 1 || now.spin_radius != 0.0)) {
       calc_points_hold(c, hold);
       continue;

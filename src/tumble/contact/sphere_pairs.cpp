@@ -144,21 +144,15 @@ PairLine pair_line(const PlaneContact& contact, const BodyMotion& a, const BodyM
   // rho of the centre's motion), and the normal turns with what is left of the centre's relative
   // motion.
   const Vec3 x_B = b.R_WB.transpose() * (centre_W - b.r_G_W);
-  const CoreClosest closest = core_closest(contact.other_surface, x_B);
-  line.distance = closest.distance;
-  line.n_W = b.R_WB * closest.n_B;
-  line.p_B = closest.p_B;
   const Vec3 centre_velocity_W = point_velocity_W(a, contact.surface.centre_B);
   const Vec3 u_B = b.R_WB.transpose() * (centre_velocity_W - point_velocity_W(b, x_B));
-  for (std::size_t k = 0; k < static_cast<std::size_t>(closest.slide_count); ++k) {
-    const Vec3& e = closest.slide_B[k];
-    line.p_rate_B += e * (closest.slide_scale[k] * e.dot(u_B));
-  }
-  Vec3 n_rate_B = Vec3::Zero();  // over the other body
-  if (line.distance > 0.0) {
-    n_rate_B = (u_B - line.p_rate_B - closest.n_B * closest.n_B.dot(u_B)) / line.distance;
-  }
-  line.n_rate_W = (b.R_WB * b.velocity.head<3>()).cross(line.n_W) + b.R_WB * n_rate_B;
+  const CoreLineOf<double> core = core_line<double>(contact.other_surface, x_B, u_B);
+  line.distance = core.closest.distance;
+  line.n_W = b.R_WB * core.closest.n_B;
+  line.p_B = core.closest.p_B;
+  line.p_rate_B = core.p_rate_B;
+  // n turns over the other body at n_rate_B, and with it.
+  line.n_rate_W = (b.R_WB * b.velocity.head<3>()).cross(line.n_W) + b.R_WB * core.n_rate_B;
   line.relative_velocity_W = centre_velocity_W - point_velocity_W(b, line.p_B);
   line.turning = line.n_rate_W.dot(line.relative_velocity_W);
   return line;

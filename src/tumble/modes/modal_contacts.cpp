@@ -31,8 +31,8 @@ std::string point_contact(const Model& model, std::size_t c, const std::vector<M
                      touching_height(contact.surface), height_of, held.point);
 }
 
-// Contact c between two bodies' spheres (or a sphere in a shell) held at the point where they
-// touch, with the bodies at r_G_W, R_WB (per body): its normal there.
+// Contact c between two bodies held at the point where they touch, with the bodies at r_G_W,
+// R_WB (per body): its normal there.
 ModalContact pair_contact(const Model& model, std::size_t c, const std::vector<Vec3>& r_G_W,
                           const std::vector<Mat3>& R_WB) {
   const PlaneContact& contact = model.contacts[c];
@@ -62,6 +62,7 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       const std::size_t a = contact.body, b = contact.other_body;
       double distance = 0.0;
       bool parallel_touch = false;
+      bool circle_touch = false, on_seam = false;
       if (contact.surface.kind == ContactSurface::Kind::Capsule) {
         const AxisSegment axis_a = capsule_axis_W(contact.surface, r_G_W[a], R_WB[a]);
         const AxisSegment axis_b = capsule_axis_W(contact.other_surface, r_G_W[b], R_WB[b]);
@@ -71,8 +72,11 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
         parallel_touch = !closest.s_slides && std::abs(closest.s) < axis_a.half_length;
       } else {
         const Vec3 centre_W = r_G_W[a] + R_WB[a] * contact.surface.centre_B;
-        distance = core_closest(contact.other_surface, R_WB[b].transpose() * (centre_W - r_G_W[b]))
-                       .distance;
+        const CoreClosest closest = core_closest<double>(
+            contact.other_surface, Vec3(R_WB[b].transpose() * (centre_W - r_G_W[b])));
+        distance = closest.distance;
+        circle_touch = closest.on_circle_axis;
+        on_seam = closest.on_feature_seam;
       }
       const double gap = distance - contact.surface.radius - core_radius(contact.other_surface);
       if (gap > kTouchingHeightPerSize * pair_size(contact)) continue;
@@ -84,11 +88,20 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
             "linearisation; cross them, or remove the contact",
             contact.name, kParallelSine));
       }
-      if (contact.other_surface.kind != ContactSurface::Kind::Sphere && !capsules) {
+      if (circle_touch) {
         throw NotSteady(fmt::format(
-            "contact {}: its two bodies touch; tumble modes linearises two bodies touching where "
-            "the other is a sphere or a shell, and two capsules; not yet a sphere on a capsule, a "
-            "box, a cylinder, a tube, a disk, a ring, a torus or a cone",
+            "contact {}: the sphere's centre is on the axis of the circle it touches (a ring's, a "
+            "torus's, a rim or a bore), touching all round it, where a small shift moves the push "
+            "to one side: no linearisation; move it off the axis, or remove the contact",
+            contact.name));
+      }
+      if (on_seam) {
+        throw NotSteady(fmt::format(
+            "contact {}: the sphere's centre is over a seam of the surface it touches, where its "
+            "nearest point passes from one feature to the next (a face to an edge, a side to a "
+            "rim, a side to a cap or an apex): the push turns as it moves to one side and not to "
+            "the other, so the motion has no linearisation; move it off the seam, or remove the "
+            "contact",
             contact.name));
       }
       ModalContact held = pair_contact(model, c, r_G_W, R_WB);
@@ -136,7 +149,7 @@ std::vector<ModalContact> held_contacts(const Model& model, std::span<const Cont
       }
       continue;
     }
-    if (contact.touches_a_body()) {  // a sphere's or a shell's pair (ContactSystem::calc_holds)
+    if (contact.touches_a_body()) {  // any pair (ContactSystem::calc_holds)
       ModalContact point = pair_contact(model, c, r_G_W, R_WB);
       point.rolls = hold.kind == ContactHold::Kind::Point;
       if (!point.rolls) point.sliding = hold;

@@ -36,8 +36,8 @@ struct ModalContact {
 
 // The contacts touching their planes with the bodies at r_G_W, R_WB (per body), and the pairs of
 // bodies touching. Throws NotSteady for one resting on an edge, a face or a line, and for a pair
-// whose other surface is not a sphere or a shell, but two capsules that cross (two lying along
-// each other touch along a line).
+// that touches along a line (two capsules lying along each other) or a circle (a sphere on a
+// ring's axis), or whose sphere is over a seam of the other's surface (pair_core.hpp).
 std::vector<ModalContact> touching_contacts(const Model& model, const std::vector<Vec3>& r_G_W,
                                             const std::vector<Mat3>& R_WB);
 // The contacts as a run's modes hold them (`holds`, one per contact: contact_hold.hpp), with the

@@ -12,6 +12,11 @@
 // nearest the first's and the normal along the line between the axes' nearest points
 // (contact/axes_closest.hpp), p sliding along its axis at t':
 //     O' = v_p + t' u_b + (r_p + gap / 2) n' + (gap' / 2) n.
+// A sphere against any other core (a capsule, a box, a cylinder, a tube, a disk, a ring, a torus,
+// a cone: contact/pair_core.hpp) is the same with p the core's point nearest the sphere's centre,
+// sliding over the other body at p_rate along the feature's free directions, and n turning over
+// that body at n_rate_B as the run's pair has it (core_line):
+//     O' = v_p + R_b p_rate + (r_p + gap / 2) n' + (gap' / 2) n,   n' = w_b x n + R_b n_rate_B.
 #include "tumble/body/rigid_body.hpp"
 #include "tumble/contact/axes_closest.hpp"
 #include "tumble/contact/pair_core.hpp"
@@ -47,13 +52,43 @@ ModalPairPointOf<S> modal_capsules_point(const PlaneContact& contact, const Body
   return at;
 }
 
-// Contact `contact` (a pair whose other surface is a sphere or a shell, or two capsules), its
-// body in state a and the other in state b.
+// A sphere against the other body's core, as the run's pair takes it (sphere_pairs.cpp).
+template <typename S>
+ModalPairPointOf<S> modal_sphere_core_point(const PlaneContact& contact, const BodyStateOf<S>& a,
+                                            const BodyStateOf<S>& b) {
+  using V3 = Vec3Of<S>;
+  const V3 centre_offset_W = a.R_WB * contact.surface.centre_B.cast<S>();
+  const V3 centre_W = a.r_G + centre_offset_W;
+  const V3 v_centre_W = a.v_G + a.omega_W.cross(centre_offset_W);
+  // The centre and its velocity less the other body's material point's there, in its axes.
+  const V3 x_B = b.R_WB.transpose() * V3(centre_W - b.r_G);
+  const V3 u_B =
+      b.R_WB.transpose() * V3(v_centre_W - (b.v_G + b.omega_W.cross(V3(centre_W - b.r_G))));
+  const CoreLineOf<S> core = core_line<S>(contact.other_surface, x_B, u_B);
+  const double other_radius = core_radius(contact.other_surface);
+  ModalPairPointOf<S> at;
+  at.n_W = b.R_WB * core.closest.n_B;
+  at.n_rate_W = b.omega_W.cross(at.n_W) + b.R_WB * core.n_rate_B;
+  at.gap = core.closest.distance - contact.surface.radius - other_radius;
+  const V3 p_offset_W = b.R_WB * core.closest.p_B;
+  const V3 v_p_W = b.v_G + b.omega_W.cross(p_offset_W);  // the other body's material point at p
+  const S gap_rate = at.n_W.dot(V3(v_centre_W - v_p_W));
+  const S reach = other_radius + 0.5 * at.gap;
+  at.O_W = b.r_G + p_offset_W + reach * at.n_W;
+  at.O_rate_W = v_p_W + b.R_WB * core.p_rate_B + reach * at.n_rate_W + (0.5 * gap_rate) * at.n_W;
+  return at;
+}
+
+// Contact `contact` (a pair: a sphere against the other's sphere, shell or other core, or two
+// capsules), its body in state a and the other in state b.
 template <typename S>
 ModalPairPointOf<S> modal_pair_point(const PlaneContact& contact, const BodyStateOf<S>& a,
                                      const BodyStateOf<S>& b) {
   if (contact.surface.kind == ContactSurface::Kind::Capsule) {
     return modal_capsules_point<S>(contact, a, b);
+  }
+  if (contact.other_surface.kind != ContactSurface::Kind::Sphere) {
+    return modal_sphere_core_point<S>(contact, a, b);
   }
   using V3 = Vec3Of<S>;
   const V3 centre_offset_W = a.R_WB * contact.surface.centre_B.cast<S>();

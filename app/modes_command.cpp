@@ -43,8 +43,9 @@ void print_summary(const Scenario& scenario, const ScenarioModes& modes) {
   for (const ModalContact& held : modes.equations->contacts()) {
     const PlaneContact& contact = modes.equations->model().model.contacts[held.contact];
     fmt::print("contact {}: {}\n", contact.name,
-               held.rolls ? "rolling or sticking (its point held, friction within the cone)"
-                          : "frictionless (its point kept on the plane)");
+               held.rolls  ? "rolling or sticking (its point held, friction within the cone)"
+               : held.pair ? "frictionless (its point kept on the other's surface)"
+                           : "frictionless (its point kept on the plane)");
   }
   std::string names;
   for (const ModalCoordinate& c : lin.coordinates) {

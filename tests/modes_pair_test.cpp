@@ -306,6 +306,20 @@ TEST(ModesOfTouchingBodies, ABallInAPipeSwingsAcrossItAtTheClosedFormsFrequency)
   }
 }
 
+// examples/modes/ball_in_a_pipe.yaml: a marble (r = 0.01) in a pipe of bore a = 0.15, as above.
+TEST(ModesOfTouchingBodies, TheMarbleInAPipeExampleSwingsAtTheClosedFormsFrequency) {
+  const double rho = 0.15 - 0.01, g = 9.81;
+  for (const char* mu : {"0.3", "0"}) {
+    SCOPED_TRACE(mu);
+    const ScenarioModes modes =
+        test::modes_of(test::example("modes/ball_in_a_pipe.yaml"), {{"mu", mu}});
+    const std::vector<double> found = oscillating_frequencies(modes.analysis);
+    ASSERT_EQ(found.size(), 1U);
+    expect_relative(found[0],
+                    std::string(mu) == "0" ? std::sqrt(g / rho) : std::sqrt(5 * g / (7 * rho)));
+  }
+}
+
 // Rolling round the bore at v through its bottom (across the pipe, along y), the ball turning at
 // v / r about x: its centre goes round the pipe's axis on the circle of radius rho = a - r, its
 // spin is steady (the push passes through its centre, no friction), and the bore pushes

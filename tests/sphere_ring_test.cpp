@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "scenario_run.hpp"
 
@@ -99,6 +100,76 @@ TEST(SphereRing, AFreeRingOrTorusStruckOnItsCircleTakesTheClosedFormsImpulse) {
       if (e == 1.0) {
         EXPECT_NEAR(hit.impact->kinetic_energy_after, hit.impact->kinetic_energy_before,
                     1e-12 * hit.impact->kinetic_energy_before);
+      }
+    }
+  }
+}
+
+// Dropped from rest with its centre on the axis of the circle it lands on (a ring's, a torus's
+// centre circle, a standing pipe's mouth: its bore's rim, radius a), a ball (radius r = 0.05)
+// touches the whole circle at once: the pushes round it add up along the axis, so it lands at
+// t = sqrt(2 (z0 - z) / g), z = sqrt((r + b)^2 - a^2) above the circle's plane, and bounces
+// straight back up at e of its speed (the normal speed at each point of the circle, v cos(alpha),
+// reverses times e, which a vertical velocity meets only at -e v; friction round the circle adds
+// up to a push along the axis too). It never moves off the axis (x = y = 0 at every row, exactly)
+// nor turns. Plastic (e = 0) it sits on the circle, N = m g.
+TEST(SphereRing, ABallDroppedCentredOntoACircleBouncesStraightUpOrSitsOnIt) {
+  struct Seat {
+    const char* name;
+    std::string shape;
+    double touch_z;  // the centre's height at touchdown
+  };
+  const double r = 0.05, z0 = 0.3, g = 9.81, m = 0.2;
+  const std::vector<Seat> seats = {
+      {"a ring", "shape: ring, radius: 0.03", std::sqrt(r * r - 0.03 * 0.03)},
+      {"a torus's hole", "shape: torus, radius: 0.06, tube_radius: 0.02",
+       std::sqrt((r + 0.02) * (r + 0.02) - 0.06 * 0.06)},
+      {"a pipe's mouth", "shape: tube, inner_radius: 0.03, outer_radius: 0.04, length: 0.2",
+       0.1 + std::sqrt(r * r - 0.03 * 0.03)},
+  };
+  for (const Seat& seat : seats) {
+    for (const double e : {0.5, 0.0}) {
+      SCOPED_TRACE(testing::Message() << seat.name << ", e " << e);
+      const std::string yaml =
+          "tumble: 1\n"
+          "gravity: [0, 0, -9.81]\n"
+          "bodies:\n"
+          "  seat: {" +
+          seat.shape +
+          ", mass: 1}\n"
+          "  ball: {shape: sphere, radius: 0.05, mass: 0.2, position: [0, 0, 0.3]}\n"
+          "joints:\n"
+          "  stand: {type: fixed, bodies: [ground, seat], at: [0, 0, 0]}\n"
+          "contacts:\n"
+          "  - {name: on_seat, type: bodies, bodies: [ball, seat], friction: 0.5, restitution: " +
+          std::to_string(e) +
+          "}\n"
+          "simulate: {duration: 0.5, integrator: dop853, rtol: 1e-12, atol: 1e-14, "
+          "output_every: 0.01}\n";
+      const test::ScenarioRun run = test::run_inline_scenario(yaml, "centred");
+      ASSERT_GE(run.contact_events.size(), 1u);
+      const ContactEventRecord& touchdown = run.contact_events[0];
+      const double t_touch = std::sqrt(2 * (z0 - seat.touch_z) / g);
+      EXPECT_NEAR(touchdown.t, t_touch, 1e-12);
+      ASSERT_TRUE(touchdown.impact.has_value());
+      // The kinetic energy after is e^2 of the fall's.
+      EXPECT_NEAR(touchdown.kinetic_energy_before, m * g * (z0 - seat.touch_z), 1e-12);
+      EXPECT_NEAR(touchdown.kinetic_energy_after, e * e * m * g * (z0 - seat.touch_z), 1e-12);
+      for (const test::Row& row : run.rows) {
+        const BodyState& ball = row.states[1];
+        EXPECT_EQ(ball.r_G.x(), 0.0) << row.t;
+        EXPECT_EQ(ball.r_G.y(), 0.0) << row.t;
+        EXPECT_EQ(ball.omega_W.norm(), 0.0) << row.t;
+        if (e == 0.0 && row.t > t_touch) {
+          EXPECT_NEAR(ball.r_G.z(), seat.touch_z, 1e-12) << row.t;
+          EXPECT_NEAR(ball.v_G.norm(), 0.0, 1e-12) << row.t;
+          EXPECT_NEAR(row.extras.contacts[0].normal_force, m * g, 1e-9 * m * g) << row.t;
+        }
+      }
+      if (e > 0.0) {
+        // Straight back up at e of the landing speed: the next landing 2 e g t_touch / g later.
+        ASSERT_GE(run.contact_events.size(), 2u);
+        EXPECT_NEAR(run.contact_events[1].t - touchdown.t, 2 * e * t_touch, 1e-11);
       }
     }
   }

@@ -37,6 +37,23 @@ bool near_circle_axis(const S& rho, double R) {
   return value_of(rho) <= kTouchingHeightPerSize * R;
 }
 
+// A sphere whose centre is on the axis of the circle it touches (a ball dropped centred onto a
+// ring, into a torus's hole, onto a pipe's mouth) touches the whole circle at once: the pushes
+// round it add up to one along the axis, through the centre. So it is held as that resultant:
+// the distance stays the circle's (the gap is true), but the point is the circle's centre
+// (`circle_centre_B`, body axes) and the normal the axis, towards the sphere's side of the
+// circle's plane (`q_z`: the centre's height over it), neither sliding nor turning as the
+// centre moves along the axis. Off the axis by more than a billionth of the radius it touches
+// at one point, as anywhere else.
+template <typename S>
+CoreClosestOf<S>& touching_all_round(CoreClosestOf<S>& closest, const Vec3Of<S>& circle_centre_B,
+                                     const Vec3Of<S>& axis_B, const S& q_z) {
+  closest.p_B = circle_centre_B;
+  closest.n_B = with_sign_of(1.0, q_z) * axis_B;
+  closest.slide_count = 0;
+  return closest;
+}
+
 // Whether x is within a billionth of `size` of the seam at `at` (CoreClosestOf::on_feature_seam).
 template <typename S>
 bool near_seam(const S& x, double at, double size) {
@@ -125,7 +142,12 @@ CoreClosestOf<S> cylinder_closest(const ContactSurface& surface, const Vec3Of<S>
     slide_round(in_bore ? a : R);
   }
   closest.p_B = surface.centre_B.cast<S>() + A * p;
-  return measured_from_nearest(closest, x_B);
+  measured_from_nearest(closest, x_B);
+  if (beyond_end && in_bore && closest.on_circle_axis) {  // centred on the bore's rim
+    touching_all_round(closest, V3(surface.centre_B.cast<S>() + A.col(2) * S(p.z())), V3(A.col(2)),
+                       q.z());
+  }
+  return closest;
 }
 
 // A cone, in the half-plane of its axis and the point: its profile is the triangle of its apex
@@ -211,7 +233,8 @@ CoreClosestOf<S> cone_closest(const ContactSurface& surface, const Vec3Of<S>& x_
 
 // A ring's or a torus's centre circle (its rim, radius R, about the third axis): the point of it
 // nearest, out from the axis towards x_B, sliding round it at R / rho of the centre's motion
-// round the axis (any, with the centre on the axis: every point of the circle is as near).
+// round the axis (with the centre on the axis, every point of the circle is as near: the whole
+// circle, touching_all_round).
 template <typename S>
 CoreClosestOf<S> circle_closest(const ContactSurface& surface, const Vec3Of<S>& x_B) {
   using V3 = Vec3Of<S>;
@@ -228,7 +251,11 @@ CoreClosestOf<S> circle_closest(const ContactSurface& surface, const Vec3Of<S>& 
     closest.slide_B[0] = A * V3(-out.y(), out.x(), S(0.0));
     closest.slide_scale[0] = R / rho;
   }
-  return measured_from_nearest(closest, x_B);
+  measured_from_nearest(closest, x_B);
+  if (closest.on_circle_axis) {
+    touching_all_round(closest, V3(surface.centre_B.cast<S>()), V3(A.col(2)), q.z());
+  }
+  return closest;
 }
 
 // A ring (or a torus) touches only along its rim: its face is hollow all the way out.

@@ -44,9 +44,11 @@ struct CoreClosestOf {
   // flat feature; round a circle of radius R (a cylinder's side or rim) whose axis the centre is
   // rho from, R / rho.
   std::array<S, 2> slide_scale = {S(1.0), S(1.0)};
-  // Whether p_B is on a circle (a ring's, a torus's, a rim, a bore) whose axis the centre is
-  // within a billionth of its radius of: every point of that circle is then as near, or nearly
-  // (p_B slides round it at R / rho), and the two touch along the circle.
+  // Whether the nearest point is on a circle (a ring's, a torus's, a rim, a bore) whose axis the
+  // centre is within a billionth of its radius of: every point of that circle is then as near,
+  // or nearly, and the two touch along the circle. On a ring's or a torus's circle, or a bore's
+  // rim, the contact is then held as the circle's resultant: p_B the circle's centre, n_B its
+  // axis (pair_core.cpp, touching_all_round).
   bool on_circle_axis = false;
   // Whether the centre is within a billionth of the core's size of a seam, where the nearest
   // point passes from one feature to the next (a box's face to its edge, a cylinder's side or

@@ -11,6 +11,7 @@
 // (It stays on the edge as it turns if omega'^2 R <= g (R - h) / R: at v*, for h <= 7 R / 17.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -99,6 +100,67 @@ TEST(SphereBox, FindTheLeastSpeedThatClimbsTheStep) {
   EXPECT_TRUE(found.at_hi);
   const double v_star = std::sqrt(10 * g * h / 7) / (1 - 5 * h / (7 * R));
   EXPECT_NEAR(found.lo + 0.5 * (found.hi - found.lo), v_star, 1e-7);
+}
+
+// A ball (radius r = 0.05) rolling without slip from rest down a fixed box's top face, which
+// slopes down at beta, reaches the face's lower edge after s = 0.5 + x0 along it, at
+// t_e = sqrt(2 s / a), a = (5/7) g sin(beta), moving at v = a t_e. Beyond the face the nearest
+// point is the edge, and the normal turns about it with the centre's motion at once: held on,
+// its centre would accelerate at v^2 / r towards the edge, more than gravity's g cos(beta) pulls
+// it there (v^2 > g r cos(beta) for every case here). So it leaves the box at the edge, at t_e,
+// rolling, and flies off as a projectile: r(t) = r_e + v (t - t_e) + g (t - t_e)^2 / 2, its spin
+// v / r held. The push and the friction rolling needs jump at the edge together; the push's
+// jump is the event it takes (before, the friction's was taken where it came first, and the
+// ball slid on the edge pulling on it, gaining energy without bound).
+TEST(SphereBox, ABallRollingDownAFaceLeavesItAtTheEdge) {
+  const double r = 0.05, g = test::kG;
+  for (const double beta_deg : {10.0, 20.0, 30.0}) {
+    for (const double x0 : {0.0, -0.3}) {
+      SCOPED_TRACE(::testing::Message() << "beta " << beta_deg << ", x0 " << x0);
+      const double beta = beta_deg * M_PI / 180.0;
+      const double s = 0.5 - x0, a = 5.0 / 7.0 * g * std::sin(beta);
+      const double t_e = std::sqrt(2 * s / a), v = a * t_e;
+      ASSERT_GT(v * v, g * r * std::cos(beta));
+      const std::string yaml =
+          "tumble: 1\n"
+          "parameters: {beta: " +
+          std::to_string(beta_deg) + " deg, x0: " + std::to_string(x0) +
+          ", g: " + std::to_string(g) +
+          "}\n"
+          "gravity: [0, 0, -g]\n"
+          "bodies:\n"
+          "  block: {shape: box, size: [1, 0.4, 0.1], mass: 5, orientation: {axis: [0, 1, 0], "
+          "angle: beta}}\n"
+          "  ball: {shape: sphere, radius: 0.05, mass: 0.2, position: [x0*cos(beta) + "
+          "0.1*sin(beta), 0, -x0*sin(beta) + 0.1*cos(beta)]}\n"
+          "joints:\n"
+          "  stand: {type: fixed, bodies: [ground, block], at: [0, 0, 0]}\n"
+          "contacts:\n"
+          "  - {name: face, type: bodies, bodies: [ball, block], friction: 0.5}\n"
+          "simulate: {duration: 1.2, integrator: dop853, rtol: 1e-12, atol: 1e-14, "
+          "output_every: 0.01}\n";
+      const test::ScenarioRun run = test::run_inline_scenario(yaml, "down_a_face");
+      // It rolls from the start, and leaves at the edge; nothing else happens.
+      ASSERT_EQ(run.contact_events.size(), 2u);
+      EXPECT_EQ(run.contact_events[0].what, "rolls");
+      EXPECT_EQ(run.contact_events[1].what, "lifts off");
+      EXPECT_NEAR(run.contact_events[1].t, t_e, 1e-10);
+      const Vec3 down(std::cos(beta), 0, -std::sin(beta));  // along the face, downhill
+      const Vec3 start(x0 * std::cos(beta) + 0.1 * std::sin(beta), 0,
+                       -x0 * std::sin(beta) + 0.1 * std::cos(beta));
+      const Vec3 r_e = start + s * down, gravity(0, 0, -g);
+      for (const test::Row& row : run.rows) {
+        const BodyState& ball = row.states[1];
+        const double t = row.t;
+        const Vec3 expected =
+            t <= t_e ? Vec3(start + 0.5 * a * t * t * down)
+                     : Vec3(r_e + v * (t - t_e) * down + 0.5 * (t - t_e) * (t - t_e) * gravity);
+        EXPECT_NEAR((ball.r_G - expected).norm(), 0.0, 1e-9) << t;
+        // Rolling about y (down the slope along +x), at its speed over r, before and after.
+        EXPECT_NEAR((ball.omega_W - Vec3(0, std::min(t, t_e) * a / r, 0)).norm(), 0.0, 1e-8) << t;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -808,6 +808,14 @@ void ContactSystem::on_event(std::size_t event_index, double t, VecX& y) {
         check_slip_stop_cascade(c, t);
       } else {
         calc_accelerations(y);
+        if (pulling(c)) {
+          // Its push jumped below zero with the friction it needs (a sphere rolling over a box's
+          // face onto its edge, where the normal starts to turn with the centre's motion at
+          // once: v^2 / r of it): the support event has happened at this instant too, and is
+          // the one it takes.
+          on_support_event(c, t, y);
+          break;
+        }
         if (start_sliding(c, t, y)) {
           const std::string what = "slides: the friction sticking needs leaves the cone";
           const int pinned = status.pinned_end;
@@ -866,8 +874,7 @@ void ContactSystem::release_pulling_contacts(std::size_t handled, double t, VecX
     std::size_t pulling = contacts_.size();
     for (const std::size_t c : watched()) {
       if (c == handled || s_.contacts[c].mode == ContactMode::Apart) continue;
-      const double N = held_polyhedron_[c] ? d_.now[c].least_point_force : d_.now[c].normal_force;
-      if (-N > kSlipZero * bodies_[contacts_[c].body].mass * std::max(gravity_W_.norm(), 1.0)) {
+      if (this->pulling(c)) {
         pulling = c;
         break;
       }
@@ -875,6 +882,11 @@ void ContactSystem::release_pulling_contacts(std::size_t handled, double t, VecX
     if (pulling == contacts_.size()) return;
     on_support_event(pulling, t, y);
   }
+}
+
+bool ContactSystem::pulling(std::size_t c) const {
+  const double N = held_polyhedron_[c] ? d_.now[c].least_point_force : d_.now[c].normal_force;
+  return -N > kSlipZero * bodies_[contacts_[c].body].mass * std::max(gravity_W_.norm(), 1.0);
 }
 
 ContactScales contact_scales(const PlaneContact& contact, const Vec3& gravity_W,

@@ -244,6 +244,10 @@ class ContactSystem {
   // to) has had its support event at this instant (its function jumped across zero rather than
   // crossing it within a step, where the event would have been located), and takes it.
   void release_pulling_contacts(std::size_t handled, double t, VecX& y);
+  // Whether touching contact c pulls on its body after a solve: its push (a held polyhedron's
+  // least point's) below zero by more than the tolerance it is solved to (kSlipZero of the
+  // body's weight). Its support event has then happened at this instant.
+  bool pulling(std::size_t c) const;
   // At the cone's edge: the rate the starting slip's direction turns at (into slide_turn_W);
   // false if no turn lets the slip grow.
   bool turn_starting_slip(std::size_t contact, double t, const VecX& y);

@@ -10,7 +10,9 @@ namespace tumble {
 namespace {
 
 // The length of (x, y): the run's std::hypot, as it always was; sqrt of the squares over Dual
-// (which has no hypot), where it is never taken at 0 but on a circle's axis, which modes refuse.
+// (which has no hypot). At 0 (the centre on the axis) its derivatives are not numbers, and
+// nothing takes them there: the nearest point is then on a face, or the circle's resultant
+// (touching_all_round), neither of which depends on rho.
 double planar_length(double x, double y) {
   return std::hypot(x, y);
 }

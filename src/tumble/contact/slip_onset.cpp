@@ -48,6 +48,12 @@ bool ContactSystem::start_sliding(std::size_t c, double t, const VecX& y) {
   status.slip_stop_armed = false;
   status.clear_end_slips();  // a two-point part's ends slide as the part's direction maps onto them
   const Vec3 a = slip_acceleration_at(c, y, d0);
+  // Sliding that would pull the surfaces together is no mode (its friction would drive the slip
+  // on, not resist it): lift_off_or_hold_slide decides.
+  if (pulling(c)) {
+    calc_accelerations(y);
+    return false;
+  }
   if (contacts_[c].friction == 0.0) return true;  // nothing can drive it back
   // Accelerations below this are round-off of zero (slip_zero over the time scale).
   const double zero = status.slip_zero / status.time_scale;

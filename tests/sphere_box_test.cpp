@@ -163,5 +163,51 @@ TEST(SphereBox, ABallRollingDownAFaceLeavesItAtTheEdge) {
   }
 }
 
+// A ball rolling without slip (`friction: inf`) at v0 along a table's top (a box welded to
+// ground, or a round table: a standing cylinder, which it leaves over its rim, rolling out along
+// a radius) off its edge: it turns about the edge as about a dome of radius 0, its centre on a
+// circle of radius r, and with rolling's kinetic energy (7/10) m r^2 theta'^2 the push falls to
+// zero where cos(theta) = (10 + 7 v0^2 / (g r)) / 17 (v0^2 < g r: it does not leave at once),
+// theta from the vertical. The lift-off is located there, its normal (from the edge to the
+// centre) at that angle, with the kinetic energy the fall of r (1 - cos(theta)) gave it.
+TEST(SphereBox, ABallRollingOffATablesEdgeLeavesWhereTheClosedFormSays) {
+  const double r = 0.05, g = test::kG, m = 0.2;
+  for (const char* table :
+       {"shape: box, size: [1, 1, 0.1]", "shape: cylinder, radius: 0.5, length: 0.1"}) {
+    for (const double v0 : {0.1, 0.3, 0.6}) {
+      SCOPED_TRACE(::testing::Message() << table << ", v0 " << v0);
+      const std::string yaml =
+          "tumble: 1\n"
+          "parameters: {v0: " +
+          std::to_string(v0) + ", g: " + std::to_string(g) +
+          "}\n"
+          "gravity: [0, 0, -g]\n"
+          "bodies:\n"
+          "  table: {" +
+          table +
+          ", mass: 5}\n"
+          "  ball: {shape: sphere, radius: 0.05, mass: 0.2, position: [0.45, 0, 0.1], "
+          "velocity: [v0, 0, 0], angular_velocity: [0, v0 / 0.05, 0]}\n"
+          "joints:\n"
+          "  stand: {type: fixed, bodies: [ground, table], at: [0, 0, 0]}\n"
+          "contacts:\n"
+          "  - {name: top, type: bodies, bodies: [ball, table], friction: inf}\n"
+          "simulate: {duration: 1, integrator: dop853, rtol: 1e-12, atol: 1e-14, "
+          "output_every: 0.01}\n";
+      const test::ScenarioRun run = test::run_inline_scenario(yaml, "off_the_edge");
+      ASSERT_EQ(run.contact_events.size(), 2u);
+      EXPECT_EQ(run.contact_events[0].what, "rolls");
+      const ContactEventRecord& leaves = run.contact_events[1];
+      EXPECT_EQ(leaves.what, "lifts off");
+      const double cos_theta = (10 + 7 * v0 * v0 / (g * r)) / 17;
+      EXPECT_NEAR(leaves.normal_W.z(), cos_theta, 1e-9);
+      EXPECT_NEAR(leaves.normal_W.y(), 0.0, 1e-12);
+      EXPECT_NEAR((leaves.point_W - Vec3(0.5, 0, 0.05)).norm(), 0.0, 1e-9);
+      const double ke0 = 0.7 * m * v0 * v0;
+      EXPECT_NEAR(leaves.kinetic_energy_after, ke0 + m * g * r * (1 - cos_theta), 1e-10);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tumble

@@ -222,6 +222,24 @@ simulate: {duration: 0.1, integrator: auto}
   EXPECT_LT(test::largest_jacobian_departure(sliding, "ball_sliding_in_bowl"), 1e-7);
 }
 
+// A log (a capsule, radius 0.04, length 0.4) lying across a fixed capsule rail 0.1 m off its
+// middle, with friction 0.5, run as `simulate` says.
+std::string log_across_rail(const std::string& simulate) {
+  return R"yaml(tumble: 1
+gravity: [0, 0, -9.81]
+bodies:
+  rail: {shape: capsule, radius: 0.05, length: 3, mass: 10,
+         orientation: {axis: [1, 0, 0], angle: 90 deg}}
+  log: {shape: capsule, radius: 0.04, length: 0.4, mass: 1, position: [0.1, 0, 0.09],
+        orientation: {axis: [0, 1, 0], angle: 90 deg}}
+joints:
+  footing: {type: fixed, bodies: [ground, rail], at: [0, 0, 0]}
+contacts:
+  - {name: on_rail, type: bodies, bodies: [log, rail], friction: 0.5}
+simulate: )yaml" +
+         simulate + "\n";
+}
+
 // Every pair is held so, whatever the other surface: a ball rolling in a pipe from 40 degrees up
 // its bore (the bore's point sliding round at a / rho of the centre's motion), a ball sliding
 // along a capsule log and down its side (Coulomb's friction against the slip, the log's point
@@ -258,20 +276,9 @@ contacts:
 simulate: {duration: 0.1, integrator: auto}
 )yaml";
   EXPECT_LT(test::largest_jacobian_departure(on_log, "ball_sliding_on_log"), 1e-7);
-  const char* const crossed = R"yaml(tumble: 1
-gravity: [0, 0, -9.81]
-bodies:
-  rail: {shape: capsule, radius: 0.05, length: 3, mass: 10,
-         orientation: {axis: [1, 0, 0], angle: 90 deg}}
-  log: {shape: capsule, radius: 0.04, length: 0.4, mass: 1, position: [0.1, 0, 0.09],
-        orientation: {axis: [0, 1, 0], angle: 90 deg}}
-joints:
-  footing: {type: fixed, bodies: [ground, rail], at: [0, 0, 0]}
-contacts:
-  - {name: on_rail, type: bodies, bodies: [log, rail], friction: 0.5}
-simulate: {duration: 0.1, integrator: auto}
-)yaml";
-  EXPECT_LT(test::largest_jacobian_departure(crossed, "log_across_rail"), 1e-7);
+  EXPECT_LT(test::largest_jacobian_departure(log_across_rail("{duration: 0.1, integrator: auto}"),
+                                             "log_across_rail"),
+            1e-7);
 }
 
 // A log (a capsule) lying across a capsule rail 0.1 m off its middle rolls as it tips, then
@@ -282,23 +289,12 @@ simulate: {duration: 0.1, integrator: auto}
 // same as dop853's: the slip's start and the lift-off to 1e-9 s, friction's work to 1e-9 of
 // m g h.
 TEST(StiffContact, ALogTippingOffARailIsHandedToRadau5AtItsSlipsStartAndBack) {
-  std::string yaml = R"yaml(tumble: 1
-gravity: [0, 0, -9.81]
-bodies:
-  rail: {shape: capsule, radius: 0.05, length: 3, mass: 10,
-         orientation: {axis: [1, 0, 0], angle: 90 deg}}
-  log: {shape: capsule, radius: 0.04, length: 0.4, mass: 1, position: [0.1, 0, 0.09],
-        orientation: {axis: [0, 1, 0], angle: 90 deg}}
-joints:
-  footing: {type: fixed, bodies: [ground, rail], at: [0, 0, 0]}
-contacts:
-  - {name: on_rail, type: bodies, bodies: [log, rail], friction: 0.5}
-simulate: {duration: 0.5, integrator: INTEGRATOR, rtol: 1e-10, atol: 1e-12, output_every: 0.005}
-)yaml";
-  const test::ScenarioRun reference =
-      test::run_inline_scenario(test::replaced(yaml, "INTEGRATOR", "dop853"), "dop853");
-  const test::ScenarioRun run =
-      test::run_inline_scenario(test::replaced(yaml, "INTEGRATOR", "auto"), "auto");
+  const std::string simulate =
+      "{duration: 0.5, integrator: INTEGRATOR, rtol: 1e-10, atol: 1e-12, output_every: 0.005}";
+  const test::ScenarioRun reference = test::run_inline_scenario(
+      log_across_rail(test::replaced(simulate, "INTEGRATOR", "dop853")), "dop853");
+  const test::ScenarioRun run = test::run_inline_scenario(
+      log_across_rail(test::replaced(simulate, "INTEGRATOR", "auto")), "auto");
   ASSERT_EQ(run.contact_events.size(), 3u);
   ASSERT_EQ(reference.contact_events.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {

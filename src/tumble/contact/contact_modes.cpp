@@ -871,16 +871,16 @@ void ContactSystem::release_pulling_contacts(std::size_t handled, double t, VecX
   // Each round releases one contact (or tips it onto a part that may need the next round).
   for (std::size_t round = 0; round < contacts_.size(); ++round) {
     calc_accelerations(y);
-    std::size_t pulling = contacts_.size();
+    std::size_t pulls = contacts_.size();
     for (const std::size_t c : watched()) {
       if (c == handled || s_.contacts[c].mode == ContactMode::Apart) continue;
-      if (this->pulling(c)) {
-        pulling = c;
+      if (pulling(c)) {
+        pulls = c;
         break;
       }
     }
-    if (pulling == contacts_.size()) return;
-    on_support_event(pulling, t, y);
+    if (pulls == contacts_.size()) return;
+    on_support_event(pulls, t, y);
   }
 }
 

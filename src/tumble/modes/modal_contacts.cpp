@@ -64,12 +64,14 @@ std::vector<ModalContact> touching_contacts(const Model& model, const std::vecto
       bool parallel_touch = false;
       bool circle_touch = false, on_seam = false;
       if (contact.surface.kind == ContactSurface::Kind::Capsule) {
-        const AxisSegment axis_a = capsule_axis_W(contact.surface, r_G_W[a], R_WB[a]);
-        const AxisSegment axis_b = capsule_axis_W(contact.other_surface, r_G_W[b], R_WB[b]);
-        const SegmentsClosest closest = segments_closest(axis_a, axis_b);
-        distance = segments_apart_W(axis_a, axis_b, closest).norm();
+        // Their poses (the line's distance does not depend on the speeds).
+        const CapsulesLineOf<double> line =
+            capsules_line<double>(contact.surface, BodyState{r_G_W[a], R_WB[a]},
+                                  contact.other_surface, BodyState{r_G_W[b], R_WB[b]});
+        distance = line.distance;
         // Parallel: the first's point does not slide, though it is inside its segment.
-        parallel_touch = !closest.s_slides && std::abs(closest.s) < axis_a.half_length;
+        parallel_touch =
+            !line.closest.s_slides && std::abs(line.closest.s) < contact.surface.half_length;
       } else {
         const Vec3 centre_W = r_G_W[a] + R_WB[a] * contact.surface.centre_B;
         const CoreClosest closest = core_closest<double>(

@@ -32,7 +32,24 @@ struct ModalPairPointOf {
   S gap = S(0.0);           // m: the centres' distance less the radii
 };
 
-// Two capsules (contact/axes_closest.hpp), as the run's pair takes them (sphere_pairs.cpp).
+// The gap along n between the first's surface (radius `radius` about its core's point) and the
+// other's (other_radius about p_W), and O midway between them along n, with its rate: n and n'
+// set in `at` already; v_p_W the other body's material point's velocity at p, p_slide_W how fast
+// p slides over that body (world), w the first's core point's velocity less that material
+// point's (p slides square to n, so the gap's rate is n . w).
+template <typename S>
+void place_contact_point(ModalPairPointOf<S>& at, const S& distance, double radius,
+                         double other_radius, const Vec3Of<S>& p_W, const Vec3Of<S>& v_p_W,
+                         const Vec3Of<S>& p_slide_W, const Vec3Of<S>& w) {
+  at.gap = distance - radius - other_radius;
+  const S gap_rate = at.n_W.dot(w);
+  const S reach = other_radius + 0.5 * at.gap;
+  at.O_W = p_W + reach * at.n_W;
+  at.O_rate_W = v_p_W + p_slide_W + reach * at.n_rate_W + (0.5 * gap_rate) * at.n_W;
+}
+
+// Two capsules (contact/axes_closest.hpp), as the run's pair takes them (sphere_pairs.cpp): p
+// slides along the second's axis at t'.
 template <typename S>
 ModalPairPointOf<S> modal_capsules_point(const PlaneContact& contact, const BodyStateOf<S>& a,
                                          const BodyStateOf<S>& b) {
@@ -40,15 +57,11 @@ ModalPairPointOf<S> modal_capsules_point(const PlaneContact& contact, const Body
   ModalPairPointOf<S> at;
   at.n_W = line.n_W;
   at.n_rate_W = line.n_rate_W;
-  const double other_radius = contact.other_surface.radius;
-  at.gap = line.distance - contact.surface.radius - other_radius;
-  const S gap_rate = line.n_W.dot(line.relative_velocity_W);
-  const S reach = other_radius + 0.5 * at.gap;
   const Vec3Of<S> v_p_b = b.v_G + b.omega_W.cross(Vec3Of<S>(line.p_b_W - b.r_G));
-  at.O_W = line.p_b_W + reach * line.n_W;
-  // p slides along the second's axis at t'.
-  at.O_rate_W = v_p_b + line.rates.t * (b.R_WB * contact.other_surface.axes_B.col(2).cast<S>()) +
-                reach * line.n_rate_W + (0.5 * gap_rate) * line.n_W;
+  place_contact_point<S>(at, line.distance, contact.surface.radius, contact.other_surface.radius,
+                         line.p_b_W, v_p_b,
+                         line.rates.t * (b.R_WB * contact.other_surface.axes_B.col(2).cast<S>()),
+                         line.relative_velocity_W);
   return at;
 }
 
@@ -65,17 +78,14 @@ ModalPairPointOf<S> modal_sphere_core_point(const PlaneContact& contact, const B
   const V3 u_B =
       b.R_WB.transpose() * V3(v_centre_W - (b.v_G + b.omega_W.cross(V3(centre_W - b.r_G))));
   const CoreLineOf<S> core = core_line<S>(contact.other_surface, x_B, u_B);
-  const double other_radius = core_radius(contact.other_surface);
   ModalPairPointOf<S> at;
   at.n_W = b.R_WB * core.closest.n_B;
   at.n_rate_W = b.omega_W.cross(at.n_W) + b.R_WB * core.n_rate_B;
-  at.gap = core.closest.distance - contact.surface.radius - other_radius;
   const V3 p_offset_W = b.R_WB * core.closest.p_B;
   const V3 v_p_W = b.v_G + b.omega_W.cross(p_offset_W);  // the other body's material point at p
-  const S gap_rate = at.n_W.dot(V3(v_centre_W - v_p_W));
-  const S reach = other_radius + 0.5 * at.gap;
-  at.O_W = b.r_G + p_offset_W + reach * at.n_W;
-  at.O_rate_W = v_p_W + b.R_WB * core.p_rate_B + reach * at.n_rate_W + (0.5 * gap_rate) * at.n_W;
+  place_contact_point<S>(at, core.closest.distance, contact.surface.radius,
+                         core_radius(contact.other_surface), V3(b.r_G + p_offset_W), v_p_W,
+                         V3(b.R_WB * core.p_rate_B), V3(v_centre_W - v_p_W));
   return at;
 }
 
@@ -100,15 +110,13 @@ ModalPairPointOf<S> modal_pair_point(const PlaneContact& contact, const BodyStat
   const SpherePairLineOf<S> line =
       sphere_pair_line<S>(V3(a.r_G + centre_offset_W - other_W), relative_velocity_W,
                           contact.other_surface.touched_inside);
-  const double other_radius = core_radius(contact.other_surface);
   ModalPairPointOf<S> at;
   at.n_W = line.n_W;
   at.n_rate_W = line.n_rate_W;
-  at.gap = line.distance - contact.surface.radius - other_radius;
-  const S gap_rate = line.n_W.dot(relative_velocity_W);
-  const S reach = other_radius + 0.5 * at.gap;
-  at.O_W = other_W + reach * line.n_W;
-  at.O_rate_W = v_other_W + reach * line.n_rate_W + (0.5 * gap_rate) * line.n_W;
+  // The other's centre does not slide over its body.
+  place_contact_point<S>(at, line.distance, contact.surface.radius,
+                         core_radius(contact.other_surface), other_W, v_other_W, V3(V3::Zero()),
+                         relative_velocity_W);
   return at;
 }
 
